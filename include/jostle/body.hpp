@@ -1,0 +1,89 @@
+// jostle/body.hpp: bodies, as the user describes them.
+//
+// A body is an axis-aligned box: a centre (x, y) and half extents (hw, hh). It never
+// rotates. You describe one with a BodyDef, hand it to World::createBody, and get a
+// BodyId back: a small handle that the world checks on every use.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+
+namespace jostle {
+
+/// How a body moves.
+enum class BodyType : std::uint8_t {
+    /// Never moves: floors, walls, platforms. Infinitely heavy.
+    Static,
+    /// Moves by its own velocity only: ignores gravity and collisions, pushes what is in
+    /// its way, infinitely heavy. Lifts and moving platforms. The user may move it.
+    Kinematic,
+    /// Moved by gravity, its velocity and collisions. Crates, players, bullets.
+    Dynamic,
+};
+
+/// The names used in scene files and traces: "static", "kinematic", "dynamic".
+const char* toString(BodyType type);
+std::optional<BodyType> bodyTypeFromString(const std::string& name);
+
+/// A handle to a body of one world. A default-constructed BodyId is the null handle.
+///
+/// The index names a storage slot and the generation counts how often that slot was
+/// reused, so a handle to a destroyed body is detected (World::isValid returns false and
+/// every other World function throws jostle::Error), never mistaken for a newer body.
+struct BodyId {
+    std::uint32_t index = 0;
+    std::uint32_t generation = 0; ///< 0 only in the null handle
+
+    constexpr bool isNull() const { return generation == 0; }
+    friend constexpr bool operator==(BodyId a, BodyId b) = default;
+};
+
+/// Everything that describes a body. Start from the defaults and set what you need:
+///
+///     jostle::BodyDef def;
+///     def.type = jostle::BodyType::Dynamic;
+///     def.x = 0; def.y = 0; def.hw = 10; def.hh = 10;
+///     def.bounce = 0.3f;
+///     jostle::BodyId crate = world.createBody(def);
+///
+/// The member names are the field names of scene files (docs/scene-format.md).
+struct BodyDef {
+    BodyType type = BodyType::Dynamic;
+    float x = 0.0f;  ///< centre
+    float y = 0.0f;  ///< centre
+    float hw = 0.0f; ///< half width, must be > 0
+    float hh = 0.0f; ///< half height, must be > 0
+    float vx = 0.0f; ///< velocity, in units per second
+    float vy = 0.0f;
+    /// Restitution in [0, 1]: 0 does not bounce, 1 bounces back at full speed.
+    /// A pair bounces with the larger of its two values.
+    float bounce = 0.0f;
+    /// Friction in [0, 1]. A pair rubs with the smaller of its two values.
+    float friction = 0.5f;
+    /// Mass, > 0 to set it explicitly; 0 (the default) means density × area.
+    /// Static and kinematic bodies are infinitely heavy whatever this says.
+    float mass = 0.0f;
+    /// Mass per unit of area, > 0; used when mass is 0. Area is 4 × hw × hh.
+    float density = 1.0f;
+    /// Multiplies the world's gravity for this body (0: floats, -1: falls up).
+    float gravityScale = 1.0f;
+    /// Linear damping, >= 0: every step, velocity /= 1 + damping × dt.
+    float damping = 0.0f;
+    /// Yours: jostle stores it and gives it back, nothing more.
+    void* userData = nullptr;
+};
+
+/// What is wrong with a definition: the member's name and the rule it breaks,
+/// e.g. {"hw", "must be > 0"}.
+struct FieldError {
+    std::string field;
+    std::string problem;
+};
+
+/// The first problem with `def`, or nothing if World::createBody will accept it.
+/// The rules: every number finite; hw, hh, density > 0; mass, damping >= 0;
+/// bounce and friction in [0, 1].
+std::optional<FieldError> checkBodyDef(const BodyDef& def);
+
+} // namespace jostle

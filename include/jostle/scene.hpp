@@ -1,0 +1,49 @@
+// jostle/scene.hpp: scene files, the JSON description of a world and its bodies.
+//
+// Part of the jostle::scene library (it reads JSON with nlohmann-json); the core
+// library does not need it. The format is a contract: docs/scene-format.md.
+//
+//     jostle::Scene scene = jostle::loadScene("examples/scenes/tutorial.json");
+//     jostle::World world(scene.world);
+//     std::vector<jostle::BodyId> ids = jostle::addBodies(world, scene);
+//     world.step(scene.dt);
+#pragma once
+
+#include "jostle/world.hpp"
+
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace jostle {
+
+/// A body of a scene: its definition and the name it goes by in traces.
+struct SceneBody {
+    std::string id; ///< "id" in the file; defaults to the body's index ("0", "1", ...)
+    BodyDef def;
+};
+
+struct Scene {
+    WorldDef world;
+    float dt = 1.0f / 60.0f; ///< the time step the scene is meant to run at
+    std::vector<SceneBody> bodies;
+};
+
+/// A scene file that cannot be used. what() names the place and the rule, e.g.
+/// "bodies[3].hw: must be > 0" or "gravity: expected an array of 2 numbers".
+class SceneError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+/// Reads a scene from JSON text. Throws SceneError.
+Scene parseScene(std::string_view json);
+
+/// Reads a scene file. Throws SceneError (also when the file cannot be read).
+Scene loadScene(const std::string& path);
+
+/// Creates the scene's bodies in `world`, in file order; returns their handles.
+std::vector<BodyId> addBodies(World& world, const Scene& scene);
+
+} // namespace jostle

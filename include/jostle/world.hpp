@@ -1,0 +1,178 @@
+// jostle/world.hpp: the world, which owns bodies and steps them.
+//
+//     jostle::WorldDef def;
+//     def.gravity = {0, 800};              // y grows downward, as on screen
+//     jostle::World world(def);
+//     jostle::BodyId floor = world.createBody({.type = jostle::BodyType::Static,
+//                                              .x = 0, .y = 300, .hw = 400, .hh = 10});
+//     jostle::BodyId box = world.createBody({.x = 0, .y = 0, .hw = 10, .hh = 10});
+//     for (int i = 0; i < 60; ++i) world.step(1.0f / 60.0f);
+//     jostle::Vec2 p = world.position(box);
+//
+// Misuse (a stale BodyId, NaN, dt <= 0, ...) throws jostle::Error: see error.hpp.
+// Same inputs give the same results bit for bit: bodies are processed in creation order.
+#pragma once
+
+#include "jostle/body.hpp"
+#include "jostle/error.hpp"
+#include "jostle/math.hpp"
+
+#include <functional>
+#include <limits>
+#include <memory>
+#include <optional>
+#include <span>
+#include <string>
+
+namespace jostle {
+
+/// How collisions are resolved (docs/models.md compares them).
+enum class Solver : std::uint8_t {
+    /// The tutorial to the letter: each dynamic body, in creation order, moves and is
+    /// pushed out of whatever it overlaps, one pair at a time.
+    Classic,
+    /// All contacts solved together: stable stacks, mass, momentum, Coulomb friction.
+    Physical,
+};
+
+/// The names used in scene files: "classic", "physical".
+const char* toString(Solver solver);
+std::optional<Solver> solverFromString(const std::string& name);
+
+/// Options of the classic model, both from the tutorial's "Physics" section.
+struct ClassicOptions {
+    /// Off: only the moving body's velocity changes (the tutorial's Response section).
+    /// On: the velocity change is an impulse shared by inverse mass, so both bodies of a
+    /// dynamic pair change and momentum is conserved; static and kinematic bodies are
+    /// infinitely heavy.
+    bool mass = false;
+    /// On: Coulomb's law; friction takes away at most friction × the normal velocity
+    /// change, so a sliding body decelerates at about friction × gravity instead of
+    /// losing the fraction `friction` of its speed at every contact.
+    bool coulomb = false;
+};
+
+/// Everything that describes a world. The names are those of scene files.
+struct WorldDef {
+    /// Acceleration of every dynamic body, scaled by its gravityScale.
+    Vec2 gravity{0.0f, 0.0f};
+    /// The largest speed (length of the velocity vector) of a dynamic body, > 0.
+    /// Infinity (the default) means no clamp.
+    float maxVelocity = std::numeric_limits<float>::infinity();
+    Solver solver = Solver::Classic;
+    ClassicOptions classic;
+};
+
+/// The first problem with `def`, or nothing if it is acceptable.
+std::optional<FieldError> checkWorldDef(const WorldDef& def);
+
+/// A pair about to collide, as the solver sees it before it responds. The pre-solve
+/// callback may change bounce and friction, for this pair and this step only.
+struct Collision {
+    BodyId a;       ///< the body being resolved (classic: the dynamic body that moved)
+    BodyId b;       ///< the body it overlaps
+    Vec2 normal;    ///< unit normal, pointing from b towards a
+    float depth;    ///< how deep they overlap along the normal, > 0
+    float bounce;   ///< max of the pair's bounce
+    float friction; ///< min of the pair's friction
+};
+
+/// Called for every overlapping pair before it is resolved. Return false to let the pair
+/// pass through each other this time (a one-way platform, a ghost, a team mate).
+using PreSolveFn = std::function<bool(Collision&)>;
+
+class World {
+public:
+    /// Throws jostle::Error if checkWorldDef(def) finds a problem.
+    explicit World(const WorldDef& def = {});
+    ~World();
+    World(World&&) noexcept;
+    World& operator=(World&&) noexcept;
+    World(const World&) = delete;
+    World& operator=(const World&) = delete;
+
+    // --- Bodies ------------------------------------------------------------------------
+
+    /// Adds a body. Throws jostle::Error if checkBodyDef(def) finds a problem.
+    /// Called from a callback during step(), the body exists at once but takes part
+    /// in the simulation from the next step on.
+    BodyId createBody(const BodyDef& def);
+
+    /// Removes a body; its handle and every copy of it become stale at once.
+    /// Safe from a callback during step(): the body is left out of the rest of the step
+    /// and its storage is reclaimed when the step ends.
+    void destroyBody(BodyId id);
+
+    /// True if `id` names a body of this world that has not been destroyed.
+    bool isValid(BodyId id) const;
+
+    /// The live bodies, in creation order. Invalidated by createBody and destroyBody.
+    std::span<const BodyId> bodies() const;
+    std::size_t bodyCount() const { return bodies().size(); }
+
+    /// The body as a definition: its current position, velocity and settings.
+    BodyDef bodyDef(BodyId id) const;
+
+    BodyType type(BodyId id) const;
+    void setType(BodyId id, BodyType type);
+
+    Vec2 position(BodyId id) const;
+    /// Moves the body there at once (a teleport: nothing is swept on the way).
+    void setPosition(BodyId id, Vec2 centre);
+
+    Vec2 velocity(BodyId id) const;
+    void setVelocity(BodyId id, Vec2 velocity);
+
+    /// Half width and half height.
+    Vec2 halfExtents(BodyId id) const;
+    void setHalfExtents(BodyId id, Vec2 halfExtents);
+
+    float bounce(BodyId id) const;
+    void setBounce(BodyId id, float bounce);
+    float friction(BodyId id) const;
+    void setFriction(BodyId id, float friction);
+
+    /// The mass the solver uses: the explicit mass, or density × area; infinity for
+    /// static and kinematic bodies.
+    float mass(BodyId id) const;
+    /// Sets an explicit mass, > 0.
+    void setMass(BodyId id, float mass);
+    /// Drops any explicit mass: the mass becomes density × area from now on.
+    void setDensity(BodyId id, float density);
+
+    float gravityScale(BodyId id) const;
+    void setGravityScale(BodyId id, float scale);
+    float damping(BodyId id) const;
+    void setDamping(BodyId id, float damping);
+    void* userData(BodyId id) const;
+    void setUserData(BodyId id, void* data);
+
+    /// The sum of the separation vectors that pushed this body out of others during the
+    /// last step. Pushed up by a floor in a y-down world means separation().y < 0: that
+    /// is how a game tells that its character is standing on something.
+    Vec2 separation(BodyId id) const;
+
+    // --- The world ---------------------------------------------------------------------
+
+    /// Advances the world by dt seconds (dt > 0 and finite, else jostle::Error).
+    /// Calling step() from inside a callback of this world throws jostle::Error.
+    void step(float dt);
+
+    Vec2 gravity() const;
+    void setGravity(Vec2 gravity);
+    float maxVelocity() const;
+    /// > 0; infinity for no clamp.
+    void setMaxVelocity(float maxVelocity);
+    Solver solver() const;
+    void setSolver(Solver solver);
+    ClassicOptions classicOptions() const;
+    void setClassicOptions(ClassicOptions options);
+
+    /// Installs the pre-solve callback (an empty function removes it).
+    void setPreSolve(PreSolveFn callback);
+
+private:
+    std::unique_ptr<struct WorldState> state_;
+};
+
+} // namespace jostle

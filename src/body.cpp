@@ -1,0 +1,72 @@
+// Names of body types and the rules a BodyDef must follow.
+#include "jostle/body.hpp"
+
+#include <cmath>
+
+namespace jostle {
+
+const char* toString(BodyType type) {
+    switch (type) {
+    case BodyType::Static:
+        return "static";
+    case BodyType::Kinematic:
+        return "kinematic";
+    case BodyType::Dynamic:
+        return "dynamic";
+    }
+    return "unknown";
+}
+
+std::optional<BodyType> bodyTypeFromString(const std::string& name) {
+    for (BodyType type : {BodyType::Static, BodyType::Kinematic, BodyType::Dynamic})
+        if (name == toString(type))
+            return type;
+    return std::nullopt;
+}
+
+std::optional<FieldError> checkBodyDef(const BodyDef& def) {
+    if (def.type != BodyType::Static && def.type != BodyType::Kinematic &&
+        def.type != BodyType::Dynamic)
+        return FieldError{"type", "must be static, kinematic or dynamic"};
+
+    // Finite first, so that the range rules below never see a NaN (every comparison
+    // with NaN is false, which would let it slip through).
+    const std::pair<const char*, float> numbers[] = {
+        {"x", def.x},
+        {"y", def.y},
+        {"hw", def.hw},
+        {"hh", def.hh},
+        {"vx", def.vx},
+        {"vy", def.vy},
+        {"bounce", def.bounce},
+        {"friction", def.friction},
+        {"mass", def.mass},
+        {"density", def.density},
+        {"gravityScale", def.gravityScale},
+        {"damping", def.damping},
+    };
+    for (const auto& [field, value] : numbers)
+        if (!std::isfinite(value))
+            return FieldError{field, "must be a finite number"};
+
+    if (def.hw <= 0.0f)
+        return FieldError{"hw", "must be > 0"};
+    if (def.hh <= 0.0f)
+        return FieldError{"hh", "must be > 0"};
+    if (def.bounce < 0.0f || def.bounce > 1.0f)
+        return FieldError{"bounce", "must be in [0, 1]"};
+    if (def.friction < 0.0f || def.friction > 1.0f)
+        return FieldError{"friction", "must be in [0, 1]"};
+    if (def.mass < 0.0f)
+        return FieldError{"mass", "must be >= 0 (0: from density)"};
+    if (def.density <= 0.0f)
+        return FieldError{"density", "must be > 0"};
+    if (def.damping < 0.0f)
+        return FieldError{"damping", "must be >= 0"};
+    // A body so large that its area overflows would get an infinite density mass.
+    if (def.mass == 0.0f && !std::isfinite(4.0f * def.hw * def.hh * def.density))
+        return FieldError{"density", "gives an infinite mass (density x area overflows)"};
+    return std::nullopt;
+}
+
+} // namespace jostle

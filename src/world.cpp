@@ -1,0 +1,316 @@
+// World: body storage, handles, argument checks and the step entry point.
+#include "world_state.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+namespace jostle {
+
+namespace {
+
+[[noreturn]] void fail(const char* function, const std::string& message) {
+    throw Error(std::string(function) + ": " + message);
+}
+
+void requireFinite(const char* function, const char* what, float value) {
+    if (!std::isfinite(value))
+        fail(function, std::string(what) + " must be a finite number");
+}
+
+void requireFinite(const char* function, const char* what, Vec2 value) {
+    if (!isFinite(value))
+        fail(function, std::string(what) + " must be finite numbers");
+}
+
+void requireUnit(const char* function, const char* what, float value) {
+    if (!(value >= 0.0f && value <= 1.0f))
+        fail(function, std::string(what) + " must be in [0, 1]");
+}
+
+/// Ends a step however it ends (a callback may throw): the world is steppable again
+/// and the slots destroyed meanwhile become reusable.
+struct StepScope {
+    WorldState& world;
+    explicit StepScope(WorldState& w) : world(w) { world.stepping = true; }
+    ~StepScope() {
+        world.stepping = false;
+        world.freeSlots.insert(world.freeSlots.end(), world.pendingFree.begin(),
+                               world.pendingFree.end());
+        world.pendingFree.clear();
+    }
+    StepScope(const StepScope&) = delete;
+    StepScope& operator=(const StepScope&) = delete;
+};
+
+} // namespace
+
+void updateMass(Body& body) {
+    if (!body.isDynamic()) {
+        body.invMass = 0.0f;
+        return;
+    }
+    const float mass = body.mass > 0.0f ? body.mass : body.density * 4.0f * body.half.x * body.half.y;
+    body.invMass = 1.0f / mass;
+}
+
+// --- Construction ----------------------------------------------------------------------
+
+World::World(const WorldDef& def) : state_(std::make_unique<WorldState>()) {
+    if (auto problem = checkWorldDef(def))
+        fail("World", "WorldDef." + problem->field + ": " + problem->problem);
+    if (def.solver == Solver::Physical)
+        fail("World", "WorldDef.solver: the physical model is not available yet");
+    state_->def = def;
+}
+
+World::~World() = default;
+World::World(World&&) noexcept = default;
+World& World::operator=(World&&) noexcept = default;
+
+// --- Handles ---------------------------------------------------------------------------
+
+namespace {
+
+Body& lookUp(WorldState& world, BodyId id, const char* function) {
+    if (id.isNull())
+        fail(function, "null BodyId");
+    if (id.index >= world.slots.size() || !world.slots[id.index].alive ||
+        world.slots[id.index].generation != id.generation)
+        fail(function, "stale or foreign BodyId (the body was destroyed or is not of this world)");
+    return world.slots[id.index];
+}
+
+} // namespace
+
+bool World::isValid(BodyId id) const {
+    return !id.isNull() && id.index < state_->slots.size() && state_->slots[id.index].alive &&
+           state_->slots[id.index].generation == id.generation;
+}
+
+BodyId World::createBody(const BodyDef& def) {
+    if (auto problem = checkBodyDef(def))
+        fail("createBody", "BodyDef." + problem->field + ": " + problem->problem);
+    if (def.type == BodyType::Static && (def.vx != 0.0f || def.vy != 0.0f))
+        fail("createBody", "BodyDef.vx, vy: a static body cannot move (make it kinematic)");
+
+    WorldState& w = *state_;
+    std::uint32_t slot;
+    if (!w.freeSlots.empty()) {
+        slot = w.freeSlots.back();
+        w.freeSlots.pop_back();
+    } else {
+        if (w.slots.size() >= UINT32_MAX)
+            fail("createBody", "too many bodies");
+        slot = static_cast<std::uint32_t>(w.slots.size());
+        w.slots.emplace_back();
+    }
+    Body& body = w.slots[slot];
+    const std::uint32_t generation = body.generation;
+    body = Body{};
+    body.generation = generation;
+    body.alive = true;
+    body.type = def.type;
+    body.position = {def.x, def.y};
+    body.velocity = {def.vx, def.vy};
+    body.half = {def.hw, def.hh};
+    body.bounce = def.bounce;
+    body.friction = def.friction;
+    body.mass = def.mass;
+    body.density = def.density;
+    body.gravityScale = def.gravityScale;
+    body.damping = def.damping;
+    body.userData = def.userData;
+    updateMass(body);
+
+    const BodyId id = w.idOf(slot);
+    w.order.push_back(id);
+    return id;
+}
+
+void World::destroyBody(BodyId id) {
+    WorldState& w = *state_;
+    Body& body = lookUp(w, id, "destroyBody");
+    body.alive = false;
+    // Skip 0 on wrap-around: generation 0 is the null handle's.
+    body.generation = body.generation == UINT32_MAX ? 1 : body.generation + 1;
+    (w.stepping ? w.pendingFree : w.freeSlots).push_back(id.index);
+    w.order.erase(std::find(w.order.begin(), w.order.end(), id));
+}
+
+std::span<const BodyId> World::bodies() const { return state_->order; }
+
+// --- Body getters and setters ----------------------------------------------------------
+
+BodyDef World::bodyDef(BodyId id) const {
+    const Body& b = lookUp(*state_, id, "bodyDef");
+    BodyDef def;
+    def.type = b.type;
+    def.x = b.position.x;
+    def.y = b.position.y;
+    def.hw = b.half.x;
+    def.hh = b.half.y;
+    def.vx = b.velocity.x;
+    def.vy = b.velocity.y;
+    def.bounce = b.bounce;
+    def.friction = b.friction;
+    def.mass = b.mass;
+    def.density = b.density;
+    def.gravityScale = b.gravityScale;
+    def.damping = b.damping;
+    def.userData = b.userData;
+    return def;
+}
+
+BodyType World::type(BodyId id) const { return lookUp(*state_, id, "type").type; }
+
+void World::setType(BodyId id, BodyType type) {
+    Body& b = lookUp(*state_, id, "setType");
+    if (type != BodyType::Static && type != BodyType::Kinematic && type != BodyType::Dynamic)
+        fail("setType", "type must be static, kinematic or dynamic");
+    b.type = type;
+    if (type == BodyType::Static)
+        b.velocity = {};
+    updateMass(b);
+}
+
+Vec2 World::position(BodyId id) const { return lookUp(*state_, id, "position").position; }
+
+void World::setPosition(BodyId id, Vec2 centre) {
+    Body& b = lookUp(*state_, id, "setPosition");
+    requireFinite("setPosition", "centre", centre);
+    b.position = centre;
+}
+
+Vec2 World::velocity(BodyId id) const { return lookUp(*state_, id, "velocity").velocity; }
+
+void World::setVelocity(BodyId id, Vec2 velocity) {
+    Body& b = lookUp(*state_, id, "setVelocity");
+    requireFinite("setVelocity", "velocity", velocity);
+    if (b.type == BodyType::Static && (velocity.x != 0.0f || velocity.y != 0.0f))
+        fail("setVelocity", "a static body cannot move (make it kinematic)");
+    b.velocity = velocity;
+}
+
+Vec2 World::halfExtents(BodyId id) const { return lookUp(*state_, id, "halfExtents").half; }
+
+void World::setHalfExtents(BodyId id, Vec2 halfExtents) {
+    Body& b = lookUp(*state_, id, "setHalfExtents");
+    requireFinite("setHalfExtents", "halfExtents", halfExtents);
+    if (halfExtents.x <= 0.0f || halfExtents.y <= 0.0f)
+        fail("setHalfExtents", "halfExtents must be > 0");
+    b.half = halfExtents;
+    updateMass(b);
+}
+
+float World::bounce(BodyId id) const { return lookUp(*state_, id, "bounce").bounce; }
+
+void World::setBounce(BodyId id, float bounce) {
+    Body& b = lookUp(*state_, id, "setBounce");
+    requireUnit("setBounce", "bounce", bounce);
+    b.bounce = bounce;
+}
+
+float World::friction(BodyId id) const { return lookUp(*state_, id, "friction").friction; }
+
+void World::setFriction(BodyId id, float friction) {
+    Body& b = lookUp(*state_, id, "setFriction");
+    requireUnit("setFriction", "friction", friction);
+    b.friction = friction;
+}
+
+float World::mass(BodyId id) const {
+    const Body& b = lookUp(*state_, id, "mass");
+    return b.invMass > 0.0f ? 1.0f / b.invMass : std::numeric_limits<float>::infinity();
+}
+
+void World::setMass(BodyId id, float mass) {
+    Body& b = lookUp(*state_, id, "setMass");
+    requireFinite("setMass", "mass", mass);
+    if (mass <= 0.0f)
+        fail("setMass", "mass must be > 0");
+    b.mass = mass;
+    updateMass(b);
+}
+
+void World::setDensity(BodyId id, float density) {
+    Body& b = lookUp(*state_, id, "setDensity");
+    requireFinite("setDensity", "density", density);
+    if (density <= 0.0f)
+        fail("setDensity", "density must be > 0");
+    b.mass = 0.0f;
+    b.density = density;
+    updateMass(b);
+}
+
+float World::gravityScale(BodyId id) const {
+    return lookUp(*state_, id, "gravityScale").gravityScale;
+}
+
+void World::setGravityScale(BodyId id, float scale) {
+    Body& b = lookUp(*state_, id, "setGravityScale");
+    requireFinite("setGravityScale", "scale", scale);
+    b.gravityScale = scale;
+}
+
+float World::damping(BodyId id) const { return lookUp(*state_, id, "damping").damping; }
+
+void World::setDamping(BodyId id, float damping) {
+    Body& b = lookUp(*state_, id, "setDamping");
+    requireFinite("setDamping", "damping", damping);
+    if (damping < 0.0f)
+        fail("setDamping", "damping must be >= 0");
+    b.damping = damping;
+}
+
+void* World::userData(BodyId id) const { return lookUp(*state_, id, "userData").userData; }
+
+void World::setUserData(BodyId id, void* data) { lookUp(*state_, id, "setUserData").userData = data; }
+
+Vec2 World::separation(BodyId id) const { return lookUp(*state_, id, "separation").separation; }
+
+// --- World settings and stepping -------------------------------------------------------
+
+void World::step(float dt) {
+    WorldState& w = *state_;
+    if (w.stepping)
+        fail("step", "called from a callback during step()");
+    if (!std::isfinite(dt) || dt <= 0.0f)
+        fail("step", "dt must be a finite number > 0");
+
+    StepScope scope(w);
+    for (BodyId id : w.order)
+        w.slots[id.index].separation = {};
+    stepClassic(w, dt);
+}
+
+Vec2 World::gravity() const { return state_->def.gravity; }
+
+void World::setGravity(Vec2 gravity) {
+    requireFinite("setGravity", "gravity", gravity);
+    state_->def.gravity = gravity;
+}
+
+float World::maxVelocity() const { return state_->def.maxVelocity; }
+
+void World::setMaxVelocity(float maxVelocity) {
+    if (std::isnan(maxVelocity) || maxVelocity <= 0.0f)
+        fail("setMaxVelocity", "maxVelocity must be > 0 (infinity for no clamp)");
+    state_->def.maxVelocity = maxVelocity;
+}
+
+Solver World::solver() const { return state_->def.solver; }
+
+void World::setSolver(Solver solver) {
+    if (solver != Solver::Classic)
+        fail("setSolver", "only the classic model is available yet");
+    state_->def.solver = solver;
+}
+
+ClassicOptions World::classicOptions() const { return state_->def.classic; }
+
+void World::setClassicOptions(ClassicOptions options) { state_->def.classic = options; }
+
+void World::setPreSolve(PreSolveFn callback) { state_->preSolve = std::move(callback); }
+
+} // namespace jostle

@@ -1,0 +1,68 @@
+// The world's storage, shared by World (the API) and the solvers.
+#pragma once
+
+#include "collide.hpp"
+#include "jostle/world.hpp"
+
+#include <cstdint>
+#include <vector>
+
+namespace jostle {
+
+/// One body as the solvers see it.
+struct Body {
+    Vec2 position;
+    Vec2 velocity;
+    Vec2 half;
+    /// Sum of the separation vectors applied to this body during the last step.
+    Vec2 separation;
+    /// 0 for static and kinematic bodies: infinitely heavy.
+    float invMass = 0.0f;
+    float bounce = 0.0f;
+    float friction = 0.0f;
+    float mass = 0.0f; ///< explicit mass, or 0 for density × area
+    float density = 1.0f;
+    float gravityScale = 1.0f;
+    float damping = 0.0f;
+    void* userData = nullptr;
+    BodyType type = BodyType::Dynamic;
+    /// The slot holds a live body. Cleared at once by destroyBody, even mid-step.
+    bool alive = false;
+    /// Counts the slot's reuses; a BodyId matches only the generation it was made with.
+    std::uint32_t generation = 1;
+
+    bool isDynamic() const { return type == BodyType::Dynamic; }
+    Box box() const { return {position, half}; }
+};
+
+struct WorldState {
+    WorldDef def;
+    PreSolveFn preSolve;
+
+    /// Bodies by slot index; a BodyId's index points here.
+    std::vector<Body> slots;
+    /// Slots free for reuse.
+    std::vector<std::uint32_t> freeSlots;
+    /// Live bodies in creation order: the order every solver processes them in.
+    std::vector<BodyId> order;
+
+    /// True while step() runs. Slots freed meanwhile wait in pendingFree, so that no
+    /// slot a solver still refers to is reused before the step ends.
+    bool stepping = false;
+    std::vector<std::uint32_t> pendingFree;
+
+    BodyId idOf(std::uint32_t slot) const { return {slot, slots[slot].generation}; }
+    bool isLive(std::uint32_t slot) const { return slots[slot].alive; }
+};
+
+/// Computes invMass from the body's type, mass, density and size.
+void updateMass(Body& body);
+
+/// The classic model's step: the tutorial's update(dt). solver_classic.cpp.
+void stepClassic(WorldState& world, float dt);
+
+/// Gravity, damping and the velocity clamp for one dynamic body, as both models apply
+/// them at the start of a step.
+void integrateVelocity(const WorldDef& def, Body& body, float dt);
+
+} // namespace jostle
