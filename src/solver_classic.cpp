@@ -17,8 +17,7 @@ void integrateVelocity(const WorldDef& def, Body& body, float dt) {
     // The tutorial: d.yv = d.yv + grav, with grav = gravity*dt computed once.
     const Vec2 grav = def.gravity * dt;
     body.velocity += body.gravityScale == 1.0f ? grav : grav * body.gravityScale;
-    if (body.damping > 0.0f)
-        {
+    if (body.damping > 0.0f) {
         const float k = 1.0f + body.damping * dt;
         body.velocity = {body.velocity.x / k, body.velocity.y / k};
     }
@@ -190,6 +189,8 @@ private:
 
 } // namespace
 
-void stepClassic(WorldState& world, float dt) { ClassicStep(world, dt).run(); }
+void stepClassic(WorldState& world, float dt) {
+    ClassicStep(world, dt).run();
+}
 
 } // namespace jostle

@@ -45,13 +45,16 @@ struct StepScope {
 
 } // namespace
 
+namespace {
+
+float dynamicMass(const Body& body) {
+    return body.mass > 0.0f ? body.mass : body.density * 4.0f * body.half.x * body.half.y;
+}
+
+} // namespace
+
 void updateMass(Body& body) {
-    if (!body.isDynamic()) {
-        body.invMass = 0.0f;
-        return;
-    }
-    const float mass = body.mass > 0.0f ? body.mass : body.density * 4.0f * body.half.x * body.half.y;
-    body.invMass = 1.0f / mass;
+    body.invMass = body.isDynamic() ? 1.0f / dynamicMass(body) : 0.0f;
 }
 
 // --- Construction ----------------------------------------------------------------------
@@ -138,7 +141,9 @@ void World::destroyBody(BodyId id) {
     w.order.erase(std::find(w.order.begin(), w.order.end(), id));
 }
 
-std::span<const BodyId> World::bodies() const { return state_->order; }
+std::span<const BodyId> World::bodies() const {
+    return state_->order;
+}
 
 // --- Body getters and setters ----------------------------------------------------------
 
@@ -162,7 +167,9 @@ BodyDef World::bodyDef(BodyId id) const {
     return def;
 }
 
-BodyType World::type(BodyId id) const { return lookUp(*state_, id, "type").type; }
+BodyType World::type(BodyId id) const {
+    return lookUp(*state_, id, "type").type;
+}
 
 void World::setType(BodyId id, BodyType type) {
     Body& b = lookUp(*state_, id, "setType");
@@ -174,7 +181,9 @@ void World::setType(BodyId id, BodyType type) {
     updateMass(b);
 }
 
-Vec2 World::position(BodyId id) const { return lookUp(*state_, id, "position").position; }
+Vec2 World::position(BodyId id) const {
+    return lookUp(*state_, id, "position").position;
+}
 
 void World::setPosition(BodyId id, Vec2 centre) {
     Body& b = lookUp(*state_, id, "setPosition");
@@ -182,7 +191,9 @@ void World::setPosition(BodyId id, Vec2 centre) {
     b.position = centre;
 }
 
-Vec2 World::velocity(BodyId id) const { return lookUp(*state_, id, "velocity").velocity; }
+Vec2 World::velocity(BodyId id) const {
+    return lookUp(*state_, id, "velocity").velocity;
+}
 
 void World::setVelocity(BodyId id, Vec2 velocity) {
     Body& b = lookUp(*state_, id, "setVelocity");
@@ -192,7 +203,9 @@ void World::setVelocity(BodyId id, Vec2 velocity) {
     b.velocity = velocity;
 }
 
-Vec2 World::halfExtents(BodyId id) const { return lookUp(*state_, id, "halfExtents").half; }
+Vec2 World::halfExtents(BodyId id) const {
+    return lookUp(*state_, id, "halfExtents").half;
+}
 
 void World::setHalfExtents(BodyId id, Vec2 halfExtents) {
     Body& b = lookUp(*state_, id, "setHalfExtents");
@@ -203,7 +216,9 @@ void World::setHalfExtents(BodyId id, Vec2 halfExtents) {
     updateMass(b);
 }
 
-float World::bounce(BodyId id) const { return lookUp(*state_, id, "bounce").bounce; }
+float World::bounce(BodyId id) const {
+    return lookUp(*state_, id, "bounce").bounce;
+}
 
 void World::setBounce(BodyId id, float bounce) {
     Body& b = lookUp(*state_, id, "setBounce");
@@ -211,7 +226,9 @@ void World::setBounce(BodyId id, float bounce) {
     b.bounce = bounce;
 }
 
-float World::friction(BodyId id) const { return lookUp(*state_, id, "friction").friction; }
+float World::friction(BodyId id) const {
+    return lookUp(*state_, id, "friction").friction;
+}
 
 void World::setFriction(BodyId id, float friction) {
     Body& b = lookUp(*state_, id, "setFriction");
@@ -221,7 +238,7 @@ void World::setFriction(BodyId id, float friction) {
 
 float World::mass(BodyId id) const {
     const Body& b = lookUp(*state_, id, "mass");
-    return b.invMass > 0.0f ? 1.0f / b.invMass : std::numeric_limits<float>::infinity();
+    return b.isDynamic() ? dynamicMass(b) : std::numeric_limits<float>::infinity();
 }
 
 void World::setMass(BodyId id, float mass) {
@@ -253,7 +270,9 @@ void World::setGravityScale(BodyId id, float scale) {
     b.gravityScale = scale;
 }
 
-float World::damping(BodyId id) const { return lookUp(*state_, id, "damping").damping; }
+float World::damping(BodyId id) const {
+    return lookUp(*state_, id, "damping").damping;
+}
 
 void World::setDamping(BodyId id, float damping) {
     Body& b = lookUp(*state_, id, "setDamping");
@@ -263,11 +282,17 @@ void World::setDamping(BodyId id, float damping) {
     b.damping = damping;
 }
 
-void* World::userData(BodyId id) const { return lookUp(*state_, id, "userData").userData; }
+void* World::userData(BodyId id) const {
+    return lookUp(*state_, id, "userData").userData;
+}
 
-void World::setUserData(BodyId id, void* data) { lookUp(*state_, id, "setUserData").userData = data; }
+void World::setUserData(BodyId id, void* data) {
+    lookUp(*state_, id, "setUserData").userData = data;
+}
 
-Vec2 World::separation(BodyId id) const { return lookUp(*state_, id, "separation").separation; }
+Vec2 World::separation(BodyId id) const {
+    return lookUp(*state_, id, "separation").separation;
+}
 
 // --- World settings and stepping -------------------------------------------------------
 
@@ -284,14 +309,18 @@ void World::step(float dt) {
     stepClassic(w, dt);
 }
 
-Vec2 World::gravity() const { return state_->def.gravity; }
+Vec2 World::gravity() const {
+    return state_->def.gravity;
+}
 
 void World::setGravity(Vec2 gravity) {
     requireFinite("setGravity", "gravity", gravity);
     state_->def.gravity = gravity;
 }
 
-float World::maxVelocity() const { return state_->def.maxVelocity; }
+float World::maxVelocity() const {
+    return state_->def.maxVelocity;
+}
 
 void World::setMaxVelocity(float maxVelocity) {
     if (std::isnan(maxVelocity) || maxVelocity <= 0.0f)
@@ -299,7 +328,9 @@ void World::setMaxVelocity(float maxVelocity) {
     state_->def.maxVelocity = maxVelocity;
 }
 
-Solver World::solver() const { return state_->def.solver; }
+Solver World::solver() const {
+    return state_->def.solver;
+}
 
 void World::setSolver(Solver solver) {
     if (solver != Solver::Classic)
@@ -307,10 +338,16 @@ void World::setSolver(Solver solver) {
     state_->def.solver = solver;
 }
 
-ClassicOptions World::classicOptions() const { return state_->def.classic; }
+ClassicOptions World::classicOptions() const {
+    return state_->def.classic;
+}
 
-void World::setClassicOptions(ClassicOptions options) { state_->def.classic = options; }
+void World::setClassicOptions(ClassicOptions options) {
+    state_->def.classic = options;
+}
 
-void World::setPreSolve(PreSolveFn callback) { state_->preSolve = std::move(callback); }
+void World::setPreSolve(PreSolveFn callback) {
+    state_->preSolve = std::move(callback);
+}
 
 } // namespace jostle

@@ -113,8 +113,8 @@ struct TwinScenes {
 
     TwinScenes(unsigned seed, float gravity, float maxVelocity)
         : world(WorldDef{.gravity = {0, gravity},
-                         .maxVelocity = maxVelocity > 0 ? maxVelocity
-                                                        : std::numeric_limits<float>::infinity(),
+                         .maxVelocity =
+                             maxVelocity > 0 ? maxVelocity : std::numeric_limits<float>::infinity(),
                          .solver = Solver::Classic}) {
         tutorial.gravity = gravity;
         tutorial.maxVelocity = maxVelocity;
@@ -146,15 +146,26 @@ struct TwinScenes {
 
     void addStatic(Shape s) {
         tutorial.statics.push_back(s);
-        world.createBody({.type = BodyType::Static, .x = s.x, .y = s.y, .hw = s.hw, .hh = s.hh,
-                          .bounce = s.bounce, .friction = s.friction});
+        world.createBody({.type = BodyType::Static,
+                          .x = s.x,
+                          .y = s.y,
+                          .hw = s.hw,
+                          .hh = s.hh,
+                          .bounce = s.bounce,
+                          .friction = s.friction});
     }
 
     void addDynamic(Shape s) {
         tutorial.dynamics.push_back(s);
-        dynamicIds.push_back(world.createBody({.type = BodyType::Dynamic, .x = s.x, .y = s.y,
-                                               .hw = s.hw, .hh = s.hh, .vx = s.xv, .vy = s.yv,
-                                               .bounce = s.bounce, .friction = s.friction}));
+        dynamicIds.push_back(world.createBody({.type = BodyType::Dynamic,
+                                               .x = s.x,
+                                               .y = s.y,
+                                               .hw = s.hw,
+                                               .hh = s.hh,
+                                               .vx = s.xv,
+                                               .vy = s.yv,
+                                               .bounce = s.bounce,
+                                               .friction = s.friction}));
     }
 
     void expectSame(int step) {

@@ -8,7 +8,9 @@
 namespace jostle {
 namespace {
 
-Box box(float x, float y, float hw, float hh) { return {{x, y}, {hw, hh}}; }
+Box box(float x, float y, float hw, float hh) {
+    return {{x, y}, {hw, hh}};
+}
 
 TEST(ShortestSeparation, NoOverlapWhenApartOnEitherAxis) {
     EXPECT_FALSE(shortestSeparation(box(0, 0, 1, 1), box(5, 0, 1, 1)));

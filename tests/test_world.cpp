@@ -1,0 +1,241 @@
+// Handles, getters and setters, argument checks, and changes made during a step.
+#include "jostle/world.hpp"
+
+#include <gtest/gtest.h>
+
+#include <limits>
+#include <vector>
+
+namespace jostle {
+namespace {
+
+constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
+
+World classicWorld(Vec2 gravity = {0, 0}) {
+    return World(WorldDef{.gravity = gravity, .solver = Solver::Classic});
+}
+
+BodyDef boxAt(float x, float y) {
+    return {.x = x, .y = y, .hw = 1, .hh = 1};
+}
+
+TEST(Handles, CreateDestroyAndStaleness) {
+    World world = classicWorld();
+    BodyId a = world.createBody(boxAt(0, 0));
+    EXPECT_TRUE(world.isValid(a));
+    EXPECT_FALSE(world.isValid(BodyId{}));
+    world.destroyBody(a);
+    EXPECT_FALSE(world.isValid(a));
+    EXPECT_THROW(world.position(a), Error);
+    EXPECT_THROW(world.destroyBody(a), Error);
+
+    // The slot is reused; the old handle stays stale and does not reach the new body.
+    BodyId b = world.createBody(boxAt(5, 5));
+    EXPECT_EQ(b.index, a.index);
+    EXPECT_NE(b.generation, a.generation);
+    EXPECT_FALSE(world.isValid(a));
+    EXPECT_THROW(world.setPosition(a, {1, 1}), Error);
+    EXPECT_EQ(world.position(b), (Vec2{5, 5}));
+}
+
+TEST(Handles, NullAndForeignHandlesThrowWithTheirReason) {
+    World world = classicWorld();
+    try {
+        world.velocity(BodyId{});
+        FAIL() << "no exception";
+    } catch (const Error& e) {
+        EXPECT_STREQ(e.what(), "velocity: null BodyId");
+    }
+    EXPECT_THROW(world.velocity(BodyId{42, 1}), Error);
+}
+
+TEST(Handles, BodiesAreListedInCreationOrder) {
+    World world = classicWorld();
+    BodyId a = world.createBody(boxAt(0, 0));
+    BodyId b = world.createBody(boxAt(3, 0));
+    BodyId c = world.createBody(boxAt(6, 0));
+    world.destroyBody(b);
+    BodyId d = world.createBody(boxAt(9, 0)); // reuses b's slot, but comes last
+    std::vector<BodyId> listed(world.bodies().begin(), world.bodies().end());
+    EXPECT_EQ(listed, (std::vector<BodyId>{a, c, d}));
+    EXPECT_EQ(world.bodyCount(), 3u);
+}
+
+TEST(Bodies, EverySetterRoundTrips) {
+    World world = classicWorld();
+    int tag = 0;
+    BodyId id = world.createBody(boxAt(0, 0));
+    world.setPosition(id, {1, 2});
+    world.setVelocity(id, {3, 4});
+    world.setHalfExtents(id, {5, 6});
+    world.setBounce(id, 0.25f);
+    world.setFriction(id, 0.75f);
+    world.setGravityScale(id, -2);
+    world.setDamping(id, 0.5f);
+    world.setUserData(id, &tag);
+    world.setMass(id, 7);
+    BodyDef def = world.bodyDef(id);
+    EXPECT_EQ(def.type, BodyType::Dynamic);
+    EXPECT_EQ((Vec2{def.x, def.y}), (Vec2{1, 2}));
+    EXPECT_EQ((Vec2{def.vx, def.vy}), (Vec2{3, 4}));
+    EXPECT_EQ((Vec2{def.hw, def.hh}), (Vec2{5, 6}));
+    EXPECT_EQ(def.bounce, 0.25f);
+    EXPECT_EQ(def.friction, 0.75f);
+    EXPECT_EQ(def.gravityScale, -2.0f);
+    EXPECT_EQ(def.damping, 0.5f);
+    EXPECT_EQ(def.userData, &tag);
+    EXPECT_EQ(world.userData(id), &tag);
+    EXPECT_EQ(world.mass(id), 7.0f);
+    world.setType(id, BodyType::Kinematic);
+    EXPECT_EQ(world.type(id), BodyType::Kinematic);
+}
+
+TEST(Bodies, MassFromDensityTimesArea) {
+    World world = classicWorld();
+    BodyId id = world.createBody({.hw = 2, .hh = 3, .density = 0.5f});
+    EXPECT_EQ(world.mass(id), 0.5f * 4 * 2 * 3);
+    world.setHalfExtents(id, {1, 1});
+    EXPECT_EQ(world.mass(id), 0.5f * 4);
+    world.setMass(id, 10);
+    EXPECT_EQ(world.mass(id), 10.0f);
+    world.setDensity(id, 2);
+    EXPECT_EQ(world.mass(id), 8.0f);
+    world.setType(id, BodyType::Static);
+    EXPECT_EQ(world.mass(id), std::numeric_limits<float>::infinity());
+    EXPECT_EQ(world.velocity(id), (Vec2{0, 0})); // static bodies never move
+}
+
+TEST(Bodies, BadArgumentsThrowAndChangeNothing) {
+    World world = classicWorld();
+    BodyId id = world.createBody(boxAt(1, 1));
+    EXPECT_THROW(world.setPosition(id, {kNaN, 0}), Error);
+    EXPECT_THROW(world.setVelocity(id, {0, std::numeric_limits<float>::infinity()}), Error);
+    EXPECT_THROW(world.setHalfExtents(id, {0, 1}), Error);
+    EXPECT_THROW(world.setBounce(id, 1.1f), Error);
+    EXPECT_THROW(world.setBounce(id, kNaN), Error);
+    EXPECT_THROW(world.setFriction(id, -0.1f), Error);
+    EXPECT_THROW(world.setMass(id, 0), Error);
+    EXPECT_THROW(world.setDensity(id, -1), Error);
+    EXPECT_THROW(world.setDamping(id, -1), Error);
+    EXPECT_THROW(world.setGravityScale(id, kNaN), Error);
+    EXPECT_EQ(world.position(id), (Vec2{1, 1}));
+    EXPECT_EQ(world.halfExtents(id), (Vec2{1, 1}));
+
+    try {
+        world.createBody({.hw = 1, .hh = -2});
+        FAIL() << "no exception";
+    } catch (const Error& e) {
+        EXPECT_STREQ(e.what(), "createBody: BodyDef.hh: must be > 0");
+    }
+    EXPECT_THROW(world.createBody({.type = BodyType::Static, .hw = 1, .hh = 1, .vx = 1}), Error);
+    BodyId wall = world.createBody({.type = BodyType::Static, .hw = 1, .hh = 1});
+    EXPECT_THROW(world.setVelocity(wall, {1, 0}), Error);
+    EXPECT_EQ(world.bodyCount(), 2u);
+}
+
+TEST(WorldSettings, RoundTripAndChecks) {
+    World world = classicWorld();
+    world.setGravity({0, 9.8f});
+    EXPECT_EQ(world.gravity(), (Vec2{0, 9.8f}));
+    world.setMaxVelocity(100);
+    EXPECT_EQ(world.maxVelocity(), 100.0f);
+    world.setClassicOptions({.mass = true, .coulomb = true});
+    EXPECT_TRUE(world.classicOptions().mass);
+    EXPECT_TRUE(world.classicOptions().coulomb);
+    EXPECT_THROW(world.setGravity({kNaN, 0}), Error);
+    EXPECT_THROW(world.setMaxVelocity(-1), Error);
+    EXPECT_THROW(World(WorldDef{.maxVelocity = 0}), Error);
+    EXPECT_THROW(world.step(0), Error);
+    EXPECT_THROW(world.step(-1), Error);
+    EXPECT_THROW(world.step(kNaN), Error);
+}
+
+// A dynamic box falling onto a floor, and a callback that acts during the step.
+struct Scene {
+    World world = classicWorld({0, 800});
+    BodyId floor =
+        world.createBody({.type = BodyType::Static, .x = 0, .y = 20, .hw = 100, .hh = 10});
+    BodyId box = world.createBody({.x = 0, .y = 4, .hw = 5, .hh = 5, .vy = 60});
+};
+
+TEST(DuringStep, DestroyingTheMovingBodyFromACallbackIsSafe) {
+    Scene s;
+    BodyId later = s.world.createBody({.x = 50, .y = 0, .hw = 1, .hh = 1});
+    s.world.setPreSolve([&](Collision& c) {
+        s.world.destroyBody(c.a);
+        EXPECT_FALSE(s.world.isValid(c.a));
+        return true;
+    });
+    s.world.step(1.0f / 60);
+    EXPECT_FALSE(s.world.isValid(s.box));
+    EXPECT_EQ(s.world.bodyCount(), 2u);
+    // The rest of the step went on: the later body fell.
+    EXPECT_GT(s.world.position(later).y, 0.0f);
+    // The slot comes back only after the step, under a new generation.
+    BodyId fresh = s.world.createBody({.hw = 1, .hh = 1});
+    EXPECT_FALSE(s.world.isValid(s.box));
+    EXPECT_TRUE(s.world.isValid(fresh));
+    s.world.step(1.0f / 60);
+}
+
+TEST(DuringStep, DestroyingTheOtherBodyFromACallbackIsSafe) {
+    Scene s;
+    s.world.setPreSolve([&](Collision& c) {
+        s.world.destroyBody(c.b);
+        return true;
+    });
+    s.world.step(1.0f / 60);
+    EXPECT_FALSE(s.world.isValid(s.floor));
+    // The floor is gone: the box was not pushed back.
+    EXPECT_GT(s.world.position(s.box).y, 4.0f);
+}
+
+TEST(DuringStep, BodiesCreatedInACallbackJoinFromTheNextStep) {
+    Scene s;
+    BodyId spawned;
+    s.world.setPreSolve([&](Collision&) {
+        if (spawned.isNull()) {
+            // Enough bodies to move the storage in memory mid-step.
+            for (int i = 0; i < 1000; ++i)
+                spawned = s.world.createBody({.x = 500, .y = 0, .hw = 1, .hh = 1});
+        }
+        return true;
+    });
+    s.world.step(1.0f / 60);
+    EXPECT_TRUE(s.world.isValid(spawned));
+    EXPECT_EQ(s.world.position(spawned), (Vec2{500, 0})); // not moved yet
+    EXPECT_EQ(s.world.velocity(spawned), (Vec2{0, 0}));
+    s.world.step(1.0f / 60);
+    EXPECT_GT(s.world.position(spawned).y, 0.0f);
+}
+
+TEST(DuringStep, SteppingFromACallbackIsRefused) {
+    Scene s;
+    bool threw = false;
+    s.world.setPreSolve([&](Collision&) {
+        try {
+            s.world.step(1.0f / 60);
+        } catch (const Error&) {
+            threw = true;
+        }
+        return true;
+    });
+    s.world.step(1.0f / 60);
+    EXPECT_TRUE(threw);
+}
+
+TEST(DuringStep, AnExceptionFromACallbackLeavesTheWorldUsable) {
+    Scene s;
+    s.world.setPreSolve([&](Collision& c) -> bool {
+        s.world.destroyBody(c.a);
+        throw std::runtime_error("game error");
+    });
+    EXPECT_THROW(s.world.step(1.0f / 60), std::runtime_error);
+    s.world.setPreSolve({});
+    s.world.step(1.0f / 60); // not "called from a callback"
+    BodyId again = s.world.createBody({.hw = 1, .hh = 1});
+    EXPECT_EQ(again.index, s.box.index); // the destroyed slot was released
+}
+
+} // namespace
+} // namespace jostle
