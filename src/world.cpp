@@ -62,8 +62,6 @@ void updateMass(Body& body) {
 World::World(const WorldDef& def) : state_(std::make_unique<WorldState>()) {
     if (auto problem = checkWorldDef(def))
         fail("World", "WorldDef." + problem->field + ": " + problem->problem);
-    if (def.solver == Solver::Physical)
-        fail("World", "WorldDef.solver: the physical model is not available yet");
     state_->def = def;
 }
 
@@ -306,7 +304,10 @@ void World::step(float dt) {
     StepScope scope(w);
     for (BodyId id : w.order)
         w.slots[id.index].separation = {};
-    stepClassic(w, dt);
+    if (w.def.solver == Solver::Classic)
+        stepClassic(w, dt);
+    else
+        stepPhysical(w, dt);
 }
 
 Vec2 World::gravity() const {
@@ -333,9 +334,10 @@ Solver World::solver() const {
 }
 
 void World::setSolver(Solver solver) {
-    if (solver != Solver::Classic)
-        fail("setSolver", "only the classic model is available yet");
+    if (solver != Solver::Classic && solver != Solver::Physical)
+        fail("setSolver", "solver must be classic or physical");
     state_->def.solver = solver;
+    state_->contactCache.clear();
 }
 
 ClassicOptions World::classicOptions() const {
@@ -344,6 +346,18 @@ ClassicOptions World::classicOptions() const {
 
 void World::setClassicOptions(ClassicOptions options) {
     state_->def.classic = options;
+}
+
+PhysicalOptions World::physicalOptions() const {
+    return state_->def.physical;
+}
+
+void World::setPhysicalOptions(PhysicalOptions options) {
+    WorldDef def = state_->def;
+    def.physical = options;
+    if (auto problem = checkWorldDef(def))
+        fail("setPhysicalOptions", problem->field + ": " + problem->problem);
+    state_->def.physical = options;
 }
 
 void World::setPreSolve(PreSolveFn callback) {

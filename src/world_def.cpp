@@ -22,6 +22,46 @@ std::optional<Solver> solverFromString(const std::string& name) {
     return std::nullopt;
 }
 
+const char* toString(FrictionMix mix) {
+    switch (mix) {
+    case FrictionMix::Min:
+        return "min";
+    case FrictionMix::GeometricMean:
+        return "geometricMean";
+    }
+    return "unknown";
+}
+
+std::optional<FrictionMix> frictionMixFromString(const std::string& name) {
+    for (FrictionMix mix : {FrictionMix::Min, FrictionMix::GeometricMean})
+        if (name == toString(mix))
+            return mix;
+    return std::nullopt;
+}
+
+namespace {
+
+std::optional<FieldError> checkPhysicalOptions(const PhysicalOptions& p) {
+    auto error = [](const char* field, const char* problem) {
+        return FieldError{std::string("physical.") + field, problem};
+    };
+    if (p.velocityIterations < 1 || p.velocityIterations > 1000)
+        return error("velocityIterations", "must be in [1, 1000]");
+    if (p.positionIterations < 0 || p.positionIterations > 1000)
+        return error("positionIterations", "must be in [0, 1000]");
+    if (!(p.slop >= 0.0f && p.slop <= 0.5f))
+        return error("slop", "must be in [0, 0.5]");
+    if (!(p.correction > 0.0f && p.correction <= 1.0f))
+        return error("correction", "must be in (0, 1]");
+    if (!(p.restitutionThreshold >= 0.0f) || std::isinf(p.restitutionThreshold))
+        return error("restitutionThreshold", "must be a finite number >= 0");
+    if (p.frictionMix != FrictionMix::Min && p.frictionMix != FrictionMix::GeometricMean)
+        return error("frictionMix", "must be min or geometricMean");
+    return std::nullopt;
+}
+
+} // namespace
+
 std::optional<FieldError> checkWorldDef(const WorldDef& def) {
     if (!isFinite(def.gravity))
         return FieldError{"gravity", "must be finite numbers"};
@@ -30,7 +70,7 @@ std::optional<FieldError> checkWorldDef(const WorldDef& def) {
         return FieldError{"maxVelocity", "must be > 0"};
     if (def.solver != Solver::Classic && def.solver != Solver::Physical)
         return FieldError{"solver", "must be classic or physical"};
-    return std::nullopt;
+    return checkPhysicalOptions(def.physical);
 }
 
 } // namespace jostle

@@ -5,6 +5,7 @@
 #include "jostle/world.hpp"
 
 #include <cstdint>
+#include <unordered_map>
 #include <vector>
 
 namespace jostle {
@@ -35,6 +36,24 @@ struct Body {
     Box box() const { return {position, half}; }
 };
 
+/// What the physical model remembers of a contact from one step to the next, to start
+/// its solver from last step's impulses (warm starting).
+struct CachedContact {
+    std::uint32_t generationA = 0;
+    std::uint32_t generationB = 0;
+    Vec2 normal;
+    float normalImpulse = 0.0f;
+    float tangentImpulse = 0.0f;
+    /// A pair that met this step within a speculative gap bounces on the next step, from
+    /// the surface, at this relative speed (0: no bounce).
+    float bounceSpeed = 0.0f;
+};
+
+/// The key of a pair of slots in the contact cache.
+inline std::uint64_t pairKey(std::uint32_t a, std::uint32_t b) {
+    return (std::uint64_t{a} << 32) | b;
+}
+
 struct WorldState {
     WorldDef def;
     PreSolveFn preSolve;
@@ -51,6 +70,10 @@ struct WorldState {
     bool stepping = false;
     std::vector<std::uint32_t> pendingFree;
 
+    /// Last step's contacts of the physical model, by pairKey. Only looked up, never
+    /// iterated, so its hash order cannot leak into the results.
+    std::unordered_map<std::uint64_t, CachedContact> contactCache;
+
     BodyId idOf(std::uint32_t slot) const { return {slot, slots[slot].generation}; }
     bool isLive(std::uint32_t slot) const { return slots[slot].alive; }
 };
@@ -60,6 +83,9 @@ void updateMass(Body& body);
 
 /// The classic model's step: the tutorial's update(dt). solver_classic.cpp.
 void stepClassic(WorldState& world, float dt);
+
+/// The physical model's step. solver_physical.cpp.
+void stepPhysical(WorldState& world, float dt);
 
 /// Gravity, damping and the velocity clamp for one dynamic body, as both models apply
 /// them at the start of a step.

@@ -52,6 +52,35 @@ struct ClassicOptions {
     bool coulomb = false;
 };
 
+/// How the physical model combines the friction of a pair.
+enum class FrictionMix : std::uint8_t {
+    Min,           ///< the smaller of the two, as the tutorial does (the default)
+    GeometricMean, ///< sqrt(a × b), as Box2D does: ice on rubber is slippery, not stuck
+};
+
+/// The names used in scene files: "min", "geometricMean".
+const char* toString(FrictionMix mix);
+std::optional<FrictionMix> frictionMixFromString(const std::string& name);
+
+/// Settings of the physical model (docs/physical-model.md explains each).
+/// Tolerances are fractions of body sizes, so they work in pixels and in metres alike.
+struct PhysicalOptions {
+    /// Sequential-impulse passes over all contacts per step, >= 1. More: stiffer stacks.
+    int velocityIterations = 8;
+    /// Position-correction passes per step, >= 0.
+    int positionIterations = 3;
+    /// Penetration left alone so that resting contacts stay in touch and do not jitter,
+    /// as a fraction of the smaller half extent of the pair along the normal; in [0, 0.5].
+    float slop = 0.01f;
+    /// Fraction of the remaining penetration (beyond the slop) removed per position pass,
+    /// in (0, 1]. Corrections move bodies, never their velocities: no energy is added.
+    float correction = 0.2f;
+    /// A contact approaching slower than this does not bounce (so that resting bodies do
+    /// not buzz), >= 0. 0 means automatic: twice what gravity adds in one step, 2 |g| dt.
+    float restitutionThreshold = 0.0f;
+    FrictionMix frictionMix = FrictionMix::Min;
+};
+
 /// Everything that describes a world. The names are those of scene files.
 struct WorldDef {
     /// Acceleration of every dynamic body, scaled by its gravityScale.
@@ -59,8 +88,9 @@ struct WorldDef {
     /// The largest speed (length of the velocity vector) of a dynamic body, > 0.
     /// Infinity (the default) means no clamp.
     float maxVelocity = std::numeric_limits<float>::infinity();
-    Solver solver = Solver::Classic;
+    Solver solver = Solver::Physical;
     ClassicOptions classic;
+    PhysicalOptions physical;
 };
 
 /// The first problem with `def`, or nothing if it is acceptable.
@@ -167,6 +197,9 @@ public:
     void setSolver(Solver solver);
     ClassicOptions classicOptions() const;
     void setClassicOptions(ClassicOptions options);
+    PhysicalOptions physicalOptions() const;
+    /// Throws jostle::Error if an option is out of its range.
+    void setPhysicalOptions(PhysicalOptions options);
 
     /// Installs the pre-solve callback (an empty function removes it).
     void setPreSolve(PreSolveFn callback);

@@ -1,0 +1,380 @@
+// The physical model against physics: momentum, Coulomb friction, restitution, rest,
+// stacks. Every tolerance is derived in the comment above it (float rounding, the
+// semi-implicit Euler step, the slop), never fitted to the output.
+#include "jostle/world.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+namespace jostle {
+namespace {
+
+constexpr float kEps = std::numeric_limits<float>::epsilon();
+
+World physicalWorld(Vec2 gravity, PhysicalOptions options = {}) {
+    return World(WorldDef{.gravity = gravity, .solver = Solver::Physical, .physical = options});
+}
+
+// A static floor whose top edge is at y = 0 (y grows downward).
+BodyId addFloor(World& world, float friction = 0.5f, float halfWidth = 10000) {
+    return world.createBody({.type = BodyType::Static,
+                             .x = 0,
+                             .y = 50,
+                             .hw = halfWidth,
+                             .hh = 50,
+                             .friction = friction});
+}
+
+// The largest overlap along y between `top` resting on `bottom`.
+float overlapY(const World& world, BodyId top, BodyId bottom) {
+    return world.position(top).y + world.halfExtents(top).y -
+           (world.position(bottom).y - world.halfExtents(bottom).y);
+}
+
+TEST(PhysicalModel, IsTheDefault) {
+    EXPECT_EQ(World().solver(), Solver::Physical);
+}
+
+// --- Momentum ------------------------------------------------------------------------
+
+struct Outcome1D {
+    float v1, v2;
+};
+Outcome1D collide1D(float m1, float v1, float m2, float v2, float e) {
+    const float p = m1 * v1 + m2 * v2;
+    return {(p + m2 * e * (v2 - v1)) / (m1 + m2), (p + m1 * e * (v1 - v2)) / (m1 + m2)};
+}
+
+class Momentum : public ::testing::TestWithParam<std::tuple<float, float>> {};
+
+TEST_P(Momentum, HeadOnCollisionsFollowTheOneDimensionalFormulas) {
+    const auto [massB, bounce] = GetParam();
+    World world = physicalWorld({0, 0});
+    BodyId a = world.createBody(
+        {.x = 0, .y = 0, .hw = 5, .hh = 5, .vx = 100, .bounce = bounce, .friction = 0, .mass = 1});
+    BodyId b = world.createBody({.x = 40,
+                                 .y = 0,
+                                 .hw = 5,
+                                 .hh = 5,
+                                 .vx = -50,
+                                 .bounce = bounce,
+                                 .friction = 0,
+                                 .mass = massB});
+    for (int i = 0; i < 60; ++i)
+        world.step(1.0f / 60.0f);
+    const Outcome1D expected = collide1D(1, 100, massB, -50, bounce);
+    // Impulses are applied in equal and opposite pairs, so momentum only suffers float
+    // rounding: a few ulps of the largest momentum, per operation, over a few dozen
+    // solver operations.
+    const float momentum = 1 * world.velocity(a).x + massB * world.velocity(b).x;
+    const float scale = std::max(100.0f, 50 * massB);
+    EXPECT_NEAR(momentum, 100 - 50 * massB, 64 * kEps * scale);
+    EXPECT_NEAR(world.velocity(a).x, expected.v1, 64 * kEps * scale);
+    EXPECT_NEAR(world.velocity(b).x, expected.v2, 64 * kEps * scale);
+    EXPECT_EQ(world.velocity(a).y, 0.0f);
+    // They never overlap beyond the slop (1% of the half width).
+    EXPECT_LE(world.position(a).x + 5 - (world.position(b).x - 5), 0.05f);
+}
+
+INSTANTIATE_TEST_SUITE_P(MassRatiosAndBounce, Momentum,
+                         ::testing::Combine(::testing::Values(1.0f, 2.0f, 10.0f, 0.1f),
+                                            ::testing::Values(0.0f, 1.0f)));
+
+// --- Coulomb friction ----------------------------------------------------------------
+
+float slideDistance(World& world, float v0, float mu, float dt) {
+    addFloor(world, mu);
+    // Resting on the floor, touching it.
+    BodyId box = world.createBody({.x = 0, .y = -5, .hw = 5, .hh = 5, .vx = v0, .friction = mu});
+    for (int i = 0; i < 100000 && world.velocity(box).x != 0.0f; ++i)
+        world.step(dt);
+    return world.position(box).x;
+}
+
+TEST(CoulombFriction, SlidingBoxStopsAfterVSquaredOverTwoMuG) {
+    // The floor's normal impulse takes back what gravity adds, m g dt a step, so friction
+    // may take mu m g dt: deceleration mu g. Semi-implicit Euler moves the box by the
+    // speed *after* friction, so with K = v0 / (mu g dt) steps (an integer: 45) the
+    // distance is sum_{k=1..K} (v0 - k mu g dt) dt = v0^2 / (2 mu g) - v0 dt / 2 = 110.
+    const float v0 = 300, mu = 0.5f, g = 800, dt = 1.0f / 60.0f;
+    World world = physicalWorld({0, g});
+    const float expected = v0 * v0 / (2 * mu * g) - v0 * dt / 2;
+    // Float rounding can leave or take one step of mu g dt^2 (0.11).
+    EXPECT_NEAR(slideDistance(world, v0, mu, dt), expected, mu * g * dt * dt + 1e-3f);
+}
+
+TEST(CoulombFriction, GeometricMeanIsAWorldOption) {
+    // Box 1.0 on a floor of 0.25: min gives 0.25, the geometric mean sqrt(0.25) = 0.5.
+    const float v0 = 300, g = 800, dt = 1.0f / 60.0f;
+    auto distance = [&](FrictionMix mix, float mu) {
+        World world = physicalWorld({0, g}, {.frictionMix = mix});
+        addFloor(world, 0.25f);
+        BodyId box =
+            world.createBody({.x = 0, .y = -5, .hw = 5, .hh = 5, .vx = v0, .friction = 1.0f});
+        for (int i = 0; i < 100000 && world.velocity(box).x != 0.0f; ++i)
+            world.step(dt);
+        const float expected = v0 * v0 / (2 * mu * g) - v0 * dt / 2;
+        EXPECT_NEAR(world.position(box).x, expected, mu * g * dt * dt + 1e-3f);
+    };
+    distance(FrictionMix::Min, 0.25f);
+    distance(FrictionMix::GeometricMean, 0.5f);
+}
+
+TEST(CoulombFriction, NoStickingToWalls) {
+    // A box thrown at a wall while falling: after the impact nothing presses it against
+    // the wall, so friction (1.0 on both) has nothing to work with and it falls freely.
+    const float g = 800, dt = 1.0f / 60.0f;
+    World world = physicalWorld({0, g});
+    world.createBody(
+        {.type = BodyType::Static, .x = 100, .y = 0, .hw = 10, .hh = 1000, .friction = 1});
+    BodyId box = world.createBody({.x = 50, .y = 0, .hw = 5, .hh = 5, .vx = 600, .friction = 1});
+    for (int i = 0; i < 10; ++i)
+        world.step(dt);
+    ASSERT_EQ(world.position(box).x, 85.0f); // against the wall's face at x = 90
+    for (int i = 0; i < 60; ++i) {
+        const float before = world.velocity(box).y;
+        world.step(dt);
+        // Exactly gravity's g dt a step, up to one rounding of the sum.
+        EXPECT_NEAR(world.velocity(box).y - before, g * dt, 4 * kEps * world.velocity(box).y);
+        EXPECT_EQ(world.velocity(box).x, 0.0f);
+    }
+}
+
+// --- Restitution ---------------------------------------------------------------------
+
+/// Drops a box from `height` (gap between its bottom and the floor) and returns the
+/// highest gap it reaches after its first bounce.
+float reboundHeight(float bounce, float height, float g, float dt) {
+    World world = physicalWorld({0, g});
+    addFloor(world, 0.5f);
+    BodyId box = world.createBody(
+        {.x = 0, .y = -height - 5, .hw = 5, .hh = 5, .bounce = bounce, .friction = 0.5f});
+    bool bounced = false;
+    float apex = 0;
+    for (int i = 0; i < 100000; ++i) {
+        world.step(dt);
+        const float vy = world.velocity(box).y;
+        if (vy < 0)
+            bounced = true;
+        if (bounced) {
+            apex = std::max(apex, -(world.position(box).y + 5));
+            if (vy >= 0)
+                break;
+        }
+    }
+    return apex;
+}
+
+TEST(Restitution, ADroppedBoxReboundsToESquaredH) {
+    // Energy: the impact speed v = sqrt(2 g h) comes back as e v, which climbs
+    // (e v)^2 / (2 g) = e^2 h. The discrete step errs by at most one step of travel,
+    // v dt: semi-implicit Euler misplaces the fall and the climb by about v dt / 2 each,
+    // and the box meets the floor somewhere within a step.
+    const float g = 800, h = 200, dt = 1.0f / 240.0f;
+    const float v = std::sqrt(2 * g * h);
+    for (float e : {0.25f, 0.5f, 0.8f, 1.0f}) {
+        SCOPED_TRACE(e);
+        EXPECT_NEAR(reboundHeight(e, h, g, dt), e * e * h, v * dt);
+    }
+}
+
+TEST(Restitution, NoBounceNoRebound) {
+    EXPECT_LT(reboundHeight(0.0f, 200, 800, 1.0f / 240), 1e-3f);
+}
+
+TEST(Restitution, BouncyBoxesComeToRestAndDoNotBuzz) {
+    // Below the threshold speed (2 g dt) contacts do not bounce, so a bouncy box ends at
+    // rest instead of hopping forever on the speed gravity gives it each step.
+    World world = physicalWorld({0, 800});
+    addFloor(world);
+    BodyId box = world.createBody({.x = 0, .y = -100, .hw = 5, .hh = 5, .bounce = 0.9f});
+    for (int i = 0; i < 20 * 60; ++i)
+        world.step(1.0f / 60.0f);
+    for (int i = 0; i < 60; ++i) {
+        world.step(1.0f / 60.0f);
+        EXPECT_NEAR(world.velocity(box).y, 0.0f, 1e-3f);
+        EXPECT_NEAR(world.position(box).y, -5.0f, 0.05f); // slop: 1% of 5
+    }
+}
+
+// --- Rest and stacks -----------------------------------------------------------------
+
+TEST(Rest, ABoxOnAFloorStaysPutForAMinute) {
+    World world = physicalWorld({0, 800});
+    BodyId floor = addFloor(world);
+    BodyId box = world.createBody({.x = 3, .y = -5, .hw = 5, .hh = 5});
+    for (int i = 0; i < 60 * 60; ++i) {
+        world.step(1.0f / 60.0f);
+        ASSERT_EQ(world.position(box).x, 3.0f);
+        // Penetration within the slop, 1% of the box's half height.
+        ASSERT_LE(overlapY(world, box, floor), 0.01f * 5);
+        ASSERT_GE(overlapY(world, box, floor), -1e-4f);
+    }
+}
+
+TEST(Rest, OverlapIsRemovedWithoutAddingEnergy) {
+    // Created 4 units deep in the floor: position correction lifts it out, but moves it
+    // only, never its velocity, so it does not fly up.
+    World world = physicalWorld({0, 800});
+    BodyId floor = addFloor(world);
+    BodyId box = world.createBody({.x = 0, .y = -1, .hw = 5, .hh = 5});
+    for (int i = 0; i < 120; ++i) {
+        world.step(1.0f / 60.0f);
+        ASSERT_GE(world.velocity(box).y, -1e-3f) << "step " << i;
+        ASSERT_GE(world.position(box).y, -5.0f) << "step " << i; // never above rest
+    }
+    EXPECT_LE(overlapY(world, box, floor), 0.05f + 1e-4f);
+}
+
+TEST(Stacks, ATowerStandsForAMinute) {
+    World world = physicalWorld({0, 800});
+    addFloor(world);
+    std::vector<BodyId> tower;
+    for (int i = 0; i < 10; ++i)
+        tower.push_back(
+            world.createBody({.x = 0, .y = -5.0f - 10.0f * float(i), .hw = 5, .hh = 5}));
+    for (int i = 0; i < 60 * 60; ++i)
+        world.step(1.0f / 60.0f);
+    // Each of the 10 contacts may sink by its slop (0.05): the top sinks 0.5 at most.
+    EXPECT_NEAR(world.position(tower.back()).y, -95.0f, 10 * 0.05f);
+    for (BodyId id : tower)
+        EXPECT_EQ(world.position(id).x, 0.0f);
+}
+
+TEST(Stacks, APyramidOfTwentyRowsStandsForAMinute) {
+    World world = physicalWorld({0, 800});
+    BodyId floor = addFloor(world);
+    const int rows = 20;
+    std::vector<BodyId> boxes;
+    std::vector<Vec2> start;
+    for (int row = 0; row < rows; ++row) {
+        for (int i = 0; i < rows - row; ++i) {
+            const Vec2 p{(float(i) - float(rows - row - 1) / 2) * 10.0f,
+                         -5.0f - 10.0f * float(row)};
+            boxes.push_back(world.createBody({.x = p.x, .y = p.y, .hw = 5, .hh = 5}));
+            start.push_back(p);
+        }
+    }
+    for (int i = 0; i < 60 * 60; ++i)
+        world.step(1.0f / 60.0f);
+    for (std::size_t i = 0; i < boxes.size(); ++i) {
+        const Vec2 p = world.position(boxes[i]);
+        // Nobody slides: the pyramid is symmetric and at rest.
+        EXPECT_NEAR(p.x, start[i].x, 1e-3f) << "box " << i;
+        // Each box sinks at most one slop (0.05) per contact below it: 20 at the top.
+        EXPECT_NEAR(p.y, start[i].y, rows * 0.05f) << "box " << i;
+        EXPECT_LE(length(world.velocity(boxes[i])), 1e-2f) << "box " << i;
+    }
+    EXPECT_LE(overlapY(world, boxes.front(), floor), 0.05f + 1e-4f);
+}
+
+TEST(Stacks, AHeavyBoxOnALightOneSinksNothing) {
+    World world = physicalWorld({0, 800});
+    BodyId floor = addFloor(world);
+    BodyId light = world.createBody({.x = 0, .y = -5, .hw = 5, .hh = 5, .mass = 1});
+    BodyId heavy = world.createBody({.x = 0, .y = -15, .hw = 5, .hh = 5, .mass = 100});
+    for (int i = 0; i < 60 * 60; ++i) {
+        world.step(1.0f / 60.0f);
+        // Within a slop (0.05) of rest, with room for the few steps the solver needs to
+        // find the heavy box's weight through the light one: at most one step of fall,
+        // g dt^2 = 0.22.
+        ASSERT_LE(overlapY(world, light, floor), 0.05f + 800.0f / 3600) << "step " << i;
+        ASSERT_LE(overlapY(world, heavy, light), 0.05f + 800.0f / 3600) << "step " << i;
+    }
+    EXPECT_LE(overlapY(world, light, floor), 0.05f + 1e-4f);
+    EXPECT_LE(overlapY(world, heavy, light), 0.05f + 1e-4f);
+}
+
+TEST(Stacks, AHeavyBoxDroppedOnALightOneNeitherSinksNorTunnels) {
+    const float dt = 1.0f / 60.0f;
+    World world = physicalWorld({0, 800});
+    BodyId floor = addFloor(world);
+    BodyId light = world.createBody({.x = 0, .y = -5, .hw = 5, .hh = 5, .mass = 1});
+    // Falls 300 units: it arrives at sqrt(2 g h) = 693 units/s, 11.5 units a step.
+    BodyId heavy = world.createBody({.x = 0, .y = -315, .hw = 5, .hh = 5, .mass = 100});
+    for (int i = 0; i < 10 * 60; ++i) {
+        world.step(dt);
+        // The light box never leaves its place under the heavy one, and neither goes
+        // deeper than one slop (0.05) plus the float resolution of a correction.
+        ASSERT_LE(overlapY(world, light, floor), 0.05f + 1e-4f) << "step " << i;
+        ASSERT_LE(overlapY(world, heavy, light), 0.05f + 1e-4f) << "step " << i;
+        ASSERT_LT(world.position(heavy).y, world.position(light).y) << "step " << i;
+    }
+    EXPECT_NEAR(world.position(heavy).y, -15.0f, 0.1f);
+}
+
+// --- Kinematic bodies ----------------------------------------------------------------
+
+TEST(Kinematic, APlatformCarriesABoxThroughFriction) {
+    const float g = 800, dt = 1.0f / 60.0f, speed = 100, mu = 0.5f;
+    World world = physicalWorld({0, g});
+    BodyId platform = world.createBody({.type = BodyType::Kinematic,
+                                        .x = 0,
+                                        .y = 5,
+                                        .hw = 50,
+                                        .hh = 5,
+                                        .vx = speed,
+                                        .friction = mu});
+    BodyId box = world.createBody({.x = 0, .y = -5, .hw = 5, .hh = 5, .friction = mu});
+    // Friction accelerates the box at mu g = 400 up to the platform's speed: 0.25 s.
+    for (int i = 0; i < 30; ++i)
+        world.step(dt);
+    EXPECT_NEAR(world.velocity(box).x, speed, 1e-3f);
+    const float offset = world.position(box).x - world.position(platform).x;
+    for (int i = 0; i < 120; ++i) {
+        world.step(dt);
+        EXPECT_NEAR(world.position(box).x - world.position(platform).x, offset, 1e-3f);
+        EXPECT_NEAR(overlapY(world, box, platform), 0.0f, 0.05f);
+    }
+}
+
+TEST(Kinematic, ALiftPushesABoxUp) {
+    World world = physicalWorld({0, 800});
+    BodyId lift = world.createBody(
+        {.type = BodyType::Kinematic, .x = 0, .y = 5, .hw = 50, .hh = 5, .vy = -60});
+    BodyId box = world.createBody({.x = 0, .y = -5, .hw = 5, .hh = 5});
+    for (int i = 0; i < 120; ++i) {
+        world.step(1.0f / 60.0f);
+        EXPECT_NEAR(overlapY(world, box, lift), 0.0f, 0.05f) << "step " << i;
+    }
+    EXPECT_NEAR(world.position(lift).y, 5.0f - 120.0f, 1e-3f);
+    EXPECT_NEAR(world.velocity(box).y, -60.0f, 1e-3f);
+}
+
+TEST(Kinematic, ALiftIsNotStoppedByWhatItCarries) {
+    World world = physicalWorld({0, 800});
+    BodyId lift = world.createBody(
+        {.type = BodyType::Kinematic, .x = 0, .y = 5, .hw = 50, .hh = 5, .vy = -60});
+    world.createBody({.x = 0, .y = -5, .hw = 5, .hh = 5, .mass = 1e6f});
+    world.step(1.0f / 60.0f);
+    EXPECT_EQ(world.velocity(lift), (Vec2{0, -60}));
+}
+
+// --- Callbacks and separation --------------------------------------------------------
+
+TEST(PhysicalPreSolve, VetoLetsABoxFallThrough) {
+    World world = physicalWorld({0, 800});
+    addFloor(world);
+    BodyId box = world.createBody({.x = 0, .y = -5, .hw = 5, .hh = 5});
+    world.setPreSolve([](Collision&) { return false; });
+    for (int i = 0; i < 30; ++i)
+        world.step(1.0f / 60.0f);
+    EXPECT_GT(world.position(box).y, 50.0f);
+}
+
+TEST(PhysicalSeparation, ARestingBoxIsPushedUpByItsFloor) {
+    World world = physicalWorld({0, 800});
+    addFloor(world);
+    BodyId box = world.createBody({.x = 0, .y = -5, .hw = 5, .hh = 5});
+    world.step(1.0f / 60.0f);
+    // The floor's impulse cancels gravity's g dt, worth g dt^2 of travel this step.
+    EXPECT_NEAR(world.separation(box).y, -800.0f / 3600, 1e-4f);
+    EXPECT_EQ(world.separation(box).x, 0.0f);
+}
+
+} // namespace
+} // namespace jostle
