@@ -30,4 +30,20 @@ std::optional<Vec2> shortestSeparation(const Box& a, const Box& b) {
     return Vec2{sx, sy};
 }
 
+Axis contactAxis(float gapX, float gapY, float skinX, float skinY) {
+    const bool overlapX = gapX < -skinX;
+    const bool overlapY = gapY < -skinY;
+    if (overlapX && overlapY)
+        return gapX > gapY ? Axis::X : Axis::Y;
+    if (overlapY)
+        return Axis::X;
+    if (overlapX)
+        return Axis::Y;
+    if (gapY <= skinY)
+        return Axis::Y;
+    if (gapX <= skinX)
+        return Axis::X;
+    return gapX > gapY ? Axis::X : Axis::Y;
+}
+
 } // namespace jostle

@@ -20,4 +20,21 @@ struct Box {
 /// push `a` towards +x or +y.
 std::optional<Vec2> shortestSeparation(const Box& a, const Box& b);
 
+/// The axis of a contact normal.
+enum class Axis { X, Y };
+
+/// The axis along which two boxes touch, for the physical model. `gapX` and `gapY` are
+/// the distances between their edges along each axis (negative: they overlap by that
+/// much); an overlap within `skinX` / `skinY` is mere touching.
+///
+/// - Overlapping for real on both axes: the axis of least penetration (a tie goes to y).
+/// - Overlapping for real on one axis only: they are side by side along the other.
+/// - Touching or apart on both: the axis they touch on (y first), else the larger gap.
+///
+/// The middle rules are what keep a box sliding along a floor or a wall made of separate
+/// boxes from catching on the seams: against the next floor box, the box overlaps only by
+/// its resting slop vertically and not at all horizontally, so the contact is a floor
+/// contact, not a wall one.
+Axis contactAxis(float gapX, float gapY, float skinX, float skinY);
+
 } // namespace jostle

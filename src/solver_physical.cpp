@@ -51,6 +51,9 @@ struct Contact {
     float correctionB = 0.0f;
 };
 
+/// Touching tolerance when the slop is 0, as a fraction of the half extent: float noise.
+constexpr float kMinimumSkin = 1e-4f;
+
 Vec2 tangentOf(Vec2 normal) {
     return {-normal.y, normal.x};
 }
@@ -118,9 +121,12 @@ private:
             const Vec2 d = a.position - b.position;
             const float gapX = std::abs(d.x) - (a.half.x + b.half.x);
             const float gapY = std::abs(d.y) - (a.half.y + b.half.y);
-            // The axis of least penetration (or, apart, of the larger gap); a tie goes
-            // to y, as in the tutorial's testRectRect.
-            const bool alongX = gapX > gapY;
+            // Overlap within twice the slop is resting contact, not penetration.
+            const float slopX = options_.slop * std::min(a.half.x, b.half.x);
+            const float slopY = options_.slop * std::min(a.half.y, b.half.y);
+            const float skinX = std::max(2.0f * slopX, kMinimumSkin * std::min(a.half.x, b.half.x));
+            const float skinY = std::max(2.0f * slopY, kMinimumSkin * std::min(a.half.y, b.half.y));
+            const bool alongX = contactAxis(gapX, gapY, skinX, skinY) == Axis::X;
             const float gap = alongX ? gapX : gapY;
             const Vec2 normal = alongX ? Vec2{d.x < 0.0f ? -1.0f : 1.0f, 0.0f}
                                        : Vec2{0.0f, d.y < 0.0f ? -1.0f : 1.0f};
@@ -134,8 +140,7 @@ private:
             c.b = pair.b;
             c.normal = normal;
             c.extent = alongX ? a.half.x + b.half.x : a.half.y + b.half.y;
-            c.slop = options_.slop *
-                     (alongX ? std::min(a.half.x, b.half.x) : std::min(a.half.y, b.half.y));
+            c.slop = alongX ? slopX : slopY;
             c.friction = combineFriction(options_.frictionMix, a.friction, b.friction);
             float bounce = std::max(a.bounce, b.bounce);
 

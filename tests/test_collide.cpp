@@ -69,5 +69,32 @@ TEST(ShortestSeparation, SeparatedBoxesNoLongerOverlap) {
     EXPECT_FALSE(shortestSeparation(box(a.centre.x + s.x, a.centre.y + s.y, 1, 2), b));
 }
 
+// contactAxis(gapX, gapY, skinX, skinY), with skins of 0.1.
+
+TEST(ContactAxis, DeepOverlapOnBothAxesTakesTheLeastPenetration) {
+    EXPECT_EQ(contactAxis(-1, -3, 0.1f, 0.1f), Axis::X);
+    EXPECT_EQ(contactAxis(-3, -1, 0.1f, 0.1f), Axis::Y);
+    EXPECT_EQ(contactAxis(-2, -2, 0.1f, 0.1f), Axis::Y); // tie
+}
+
+TEST(ContactAxis, SideBySideWhenOnlyOneAxisOverlaps) {
+    EXPECT_EQ(contactAxis(0.5f, -3, 0.1f, 0.1f), Axis::X); // a wall ahead
+    EXPECT_EQ(contactAxis(-3, 0.5f, 0.1f, 0.1f), Axis::Y); // a floor below
+}
+
+TEST(ContactAxis, ARestingOverlapIsTouchingNotPenetration) {
+    // A box resting on a floor box (0.05 deep) reaches the next floor box: it is just
+    // entering it sideways (0.01), but that is the floor, not a wall.
+    EXPECT_EQ(contactAxis(-0.01f, -0.05f, 0.1f, 0.1f), Axis::Y);
+    EXPECT_EQ(contactAxis(0.5f, -0.05f, 0.1f, 0.1f), Axis::Y);
+    // Falling along a wall of boxes, flush with it, above the next wall box.
+    EXPECT_EQ(contactAxis(0, 0.5f, 0.1f, 0.1f), Axis::X);
+}
+
+TEST(ContactAxis, ApartOnBothAxesTakesTheLargerGap) {
+    EXPECT_EQ(contactAxis(2, 1, 0.1f, 0.1f), Axis::X);
+    EXPECT_EQ(contactAxis(1, 2, 0.1f, 0.1f), Axis::Y);
+}
+
 } // namespace
 } // namespace jostle

@@ -307,6 +307,47 @@ TEST(Stacks, AHeavyBoxDroppedOnALightOneNeitherSinksNorTunnels) {
     EXPECT_NEAR(world.position(heavy).y, -15.0f, 0.1f);
 }
 
+// --- Seams between boxes placed edge to edge ------------------------------------------
+
+TEST(Seams, SlidingAcrossFloorBoxesPlacedEdgeToEdgeLosesNothing) {
+    World world = physicalWorld({0, 800});
+    for (int i = 0; i < 40; ++i)
+        world.createBody({.type = BodyType::Static,
+                          .x = 16.0f * float(i),
+                          .y = 8,
+                          .hw = 8,
+                          .hh = 8,
+                          .friction = 0});
+    BodyId box = world.createBody({.x = 0, .y = -5, .hw = 5, .hh = 5, .vx = 100, .friction = 0});
+    for (int i = 0; i < 5 * 60; ++i) {
+        world.step(1.0f / 60.0f);
+        // No friction, so nothing may slow it: no wall contact at a seam, no bump.
+        ASSERT_EQ(world.velocity(box).x, 100.0f) << "step " << i;
+        ASSERT_NEAR(world.position(box).y, -5.0f, 0.05f) << "step " << i;
+    }
+}
+
+TEST(Seams, FallingAlongAWallOfBoxesNeverCatches) {
+    const float g = 800, dt = 1.0f / 60.0f;
+    World world = physicalWorld({0, g});
+    // A wall of 16-unit boxes whose left face is at x = 0.
+    for (int i = 0; i < 200; ++i)
+        world.createBody({.type = BodyType::Static,
+                          .x = 8,
+                          .y = 16.0f * float(i),
+                          .hw = 8,
+                          .hh = 8,
+                          .friction = 0});
+    // Pressed against the wall and falling.
+    BodyId box = world.createBody({.x = -5, .y = 0, .hw = 5, .hh = 5, .vx = 30, .friction = 0});
+    for (int i = 0; i < 60; ++i) {
+        const float before = world.velocity(box).y;
+        world.step(dt);
+        ASSERT_NEAR(world.velocity(box).y - before, g * dt, 1e-3f) << "step " << i;
+        ASSERT_NEAR(world.position(box).x, -5.0f, 0.05f) << "step " << i;
+    }
+}
+
 // --- Kinematic bodies ----------------------------------------------------------------
 
 TEST(Kinematic, APlatformCarriesABoxThroughFriction) {

@@ -1,0 +1,23 @@
+#!/usr/bin/env bash
+# Installs what jostle needs to build and test, from Debian's packages. Safe to run
+# again: packages already there are not fetched twice.
+set -euo pipefail
+
+packages=(
+  cmake g++ make          # the build
+  libgtest-dev libgmock-dev  # tests
+  nlohmann-json3-dev      # scene files
+  libcli11-dev            # the jostle program's command line
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg -s "$p" >/dev/null 2>&1 || missing+=("$p")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+  sudo=""
+  [ "$(id -u)" -eq 0 ] || sudo="sudo"
+  echo "setup: installing ${missing[*]}"
+  $sudo apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq "${missing[@]}" >/dev/null
+fi
