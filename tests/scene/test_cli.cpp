@@ -1,0 +1,332 @@
+// The jostle program, run as a user runs it: options, exit status, messages, and traces
+// whose numbers are worked out by hand from the tutorial's formulas.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <sys/wait.h>
+#include <unistd.h>
+#include <vector>
+
+namespace {
+
+using ::testing::HasSubstr;
+using ::testing::StartsWith;
+
+/// What a run of the program gave.
+struct Result {
+    int status = -1; ///< the exit status; -1 if it did not exit normally
+    std::string out;
+    std::string err;
+};
+
+/// One trace row, numbers read back as floats (%.9g round-trips exactly).
+struct Row {
+    std::string step;
+    std::string id;
+    float x, y, vx, vy;
+};
+
+std::string readAll(const std::filesystem::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::stringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+std::vector<std::string> lines(const std::string& text) {
+    std::vector<std::string> result;
+    std::stringstream in(text);
+    for (std::string line; std::getline(in, line);)
+        result.push_back(line);
+    return result;
+}
+
+std::vector<std::string> split(const std::string& line, char separator) {
+    std::vector<std::string> fields;
+    std::stringstream in(line);
+    for (std::string field; std::getline(in, field, separator);)
+        fields.push_back(field);
+    return fields;
+}
+
+/// The rows of a trace, after checking its header.
+std::vector<Row> rowsOf(const std::string& csv) {
+    const std::vector<std::string> all = lines(csv);
+    std::vector<Row> rows;
+    if (all.empty()) {
+        ADD_FAILURE() << "empty trace";
+        return rows;
+    }
+    EXPECT_EQ(all[0], "step,id,x,y,vx,vy");
+    for (std::size_t i = 1; i < all.size(); ++i) {
+        const std::vector<std::string> f = split(all[i], ',');
+        if (f.size() != 6) {
+            ADD_FAILURE() << "not 6 fields: " << all[i];
+            continue;
+        }
+        rows.push_back({f[0], f[1], std::strtof(f[2].c_str(), nullptr),
+                        std::strtof(f[3].c_str(), nullptr), std::strtof(f[4].c_str(), nullptr),
+                        std::strtof(f[5].c_str(), nullptr)});
+    }
+    return rows;
+}
+
+void expectRow(const Row& row, const std::string& step, const std::string& id, float x, float y,
+               float vx, float vy) {
+    SCOPED_TRACE("step " + step + ", " + id);
+    EXPECT_EQ(row.step, step);
+    EXPECT_EQ(row.id, id);
+    EXPECT_EQ(row.x, x);
+    EXPECT_EQ(row.y, y);
+    EXPECT_EQ(row.vx, vx);
+    EXPECT_EQ(row.vy, vy);
+}
+
+/// A path for the shell, in single quotes.
+std::string quote(const std::string& text) {
+    return "'" + text + "'";
+}
+
+class Cli : public ::testing::Test {
+protected:
+    void SetUp() override {
+        const auto* test = ::testing::UnitTest::GetInstance()->current_test_info();
+        dir_ = std::filesystem::temp_directory_path() /
+               ("jostle_cli_test_" + std::to_string(::getpid()) + "_" + test->name());
+        std::filesystem::create_directories(dir_);
+    }
+    void TearDown() override { std::filesystem::remove_all(dir_); }
+
+    std::string path(const std::string& name) const { return (dir_ / name).string(); }
+
+    std::string write(const std::string& name, const std::string& text) {
+        std::ofstream(path(name), std::ios::binary) << text;
+        return path(name);
+    }
+
+    /// Runs `jostle ARGS`, capturing stdout and stderr.
+    Result run(const std::string& args) {
+        const std::string command = quote(JOSTLE_EXE) + " " + args + " >" + quote(path("stdout")) +
+                                    " 2>" + quote(path("stderr"));
+        const int raw = std::system(command.c_str());
+        Result result;
+        if (raw != -1 && WIFEXITED(raw))
+            result.status = WEXITSTATUS(raw);
+        result.out = readAll(path("stdout"));
+        result.err = readAll(path("stderr"));
+        return result;
+    }
+
+    std::filesystem::path dir_;
+};
+
+// A dynamic body in empty space, dt = 1/4: each step moves it by (4, -8) / 4 = (1, -2).
+constexpr const char* kFreeScene = R"({"solver": "classic", "dt": 0.25, "bodies": [
+    {"id": "ball", "x": 0, "y": 0, "hw": 1, "hh": 1, "vx": 4, "vy": -8}]})";
+
+// A floor, two boxes falling onto it and a kinematic body passing above (dt = 1/4,
+// gravity 32: each step adds 8 to vy). Every number below is a binary fraction.
+constexpr const char* kFloorScene = R"({"solver": "classic", "gravity": [0, 32], "dt": 0.25,
+  "bodies": [
+    {"id": "floor", "type": "static", "x": 0, "y": 19.5, "hw": 100, "hh": 4,
+     "bounce": 0, "friction": 0.5},
+    {"id": "a", "x": 0, "y": 0, "hw": 4, "hh": 4, "vx": 4, "bounce": 0, "friction": 0.5},
+    {"id": "b", "x": 50, "y": 0, "hw": 4, "hh": 4, "bounce": 0.5, "friction": 0},
+    {"id": "k", "type": "kinematic", "x": 0, "y": -50, "hw": 1, "hh": 1, "vx": 8}]})";
+
+TEST_F(Cli, TraceOfFreeMotionIsExact) {
+    const std::string scene = write("free.json", kFreeScene);
+    const Result r = run("run " + quote(scene) + " --steps 3 --trace -");
+    EXPECT_EQ(r.status, 0);
+    EXPECT_EQ(r.err, "");
+    // x = n, y = -2n after step n; velocities unchanged (no gravity, nothing to hit).
+    EXPECT_EQ(r.out, "step,id,x,y,vx,vy\n"
+                     "1,ball,1,-2,4,-8\n"
+                     "2,ball,2,-4,4,-8\n"
+                     "3,ball,3,-6,4,-8\n");
+}
+
+TEST_F(Cli, TraceFollowsTheTutorialFormulas) {
+    const std::string scene = write("floor.json", kFloorScene);
+    const Result r = run("run " + quote(scene) + " --steps 6 --trace -");
+    ASSERT_EQ(r.status, 0) << r.err;
+    const std::vector<Row> rows = rowsOf(r.out);
+    // One row per non-static body (a, b, k) after each step, in scene order.
+    ASSERT_EQ(rows.size(), 6u * 3u);
+
+    // Steps 1-2, free fall (velocity first, then position): vy = 8n, y = n(n + 1).
+    // Step 3: y = 12 puts the bottom (16) 0.5 into the floor (top 15.5); y is the short
+    // axis, so the box moves up to 11.5 and its approach speed, 24, is taken away:
+    //   a: vy = 24 - 24 (1 + max(0, 0)) = 0; tangent 4 keeps 1 - min(0.5, 0.5): vx = 2.
+    //   b: vy = 24 - 24 (1 + max(0.5, 0)) = -12; friction min(0, 0.5) = 0.
+    // Step 4: a falls 2 (vy 8) back to 13.5, is pushed to 11.5, vy 0; x 3 + 2/4, vx 1.
+    //   b rises: vy -4, y 10.5 (bottom 14.5: clear of the floor).
+    // Step 5: a: x 3.75, vx 0.5.  b: vy 4, y 11.5: its bottom touches the floor's top,
+    //   which is not an overlap (|dy| >= sum of half heights), so nothing changes.
+    // Step 6: a: x 3.875, vx 0.25.  b: vy 12, y 14.5, pushed to 11.5, vy 12 - 18 = -6.
+    // k, kinematic: x = 2n, no gravity.
+    // a: {x, y, vx, vy} after steps 1 to 6; b: {y, vy} (x = 50 and vx = 0 throughout).
+    const float a[6][4] = {{1, 2, 4, 8},        {2, 6, 4, 16},           {3, 11.5f, 2, 0},
+                           {3.5f, 11.5f, 1, 0}, {3.75f, 11.5f, 0.5f, 0}, {3.875f, 11.5f, 0.25f, 0}};
+    const float b[6][2] = {{2, 8}, {6, 16}, {11.5f, -12}, {10.5f, -4}, {11.5f, 4}, {11.5f, -6}};
+    for (int n = 1; n <= 6; ++n) {
+        const std::size_t i = static_cast<std::size_t>(n - 1);
+        const std::string step = std::to_string(n);
+        expectRow(rows[3 * i], step, "a", a[i][0], a[i][1], a[i][2], a[i][3]);
+        expectRow(rows[3 * i + 1], step, "b", 50, b[i][0], 0, b[i][1]);
+        expectRow(rows[3 * i + 2], step, "k", static_cast<float>(2 * n), -50, 8, 0);
+    }
+}
+
+TEST_F(Cli, EveryKeepsStepsKTwoKAndSoOn) {
+    const std::string scene = write("floor.json", kFloorScene);
+    const Result r = run("run " + quote(scene) + " --steps 7 --trace - --every 3");
+    ASSERT_EQ(r.status, 0) << r.err;
+    const std::vector<Row> rows = rowsOf(r.out);
+    // Steps 3 and 6 of 7; the values are those of the full trace above.
+    ASSERT_EQ(rows.size(), 2u * 3u);
+    expectRow(rows[0], "3", "a", 3, 11.5f, 2, 0);
+    expectRow(rows[1], "3", "b", 50, 11.5f, 0, -12);
+    expectRow(rows[2], "3", "k", 6, -50, 8, 0);
+    expectRow(rows[3], "6", "a", 3.875f, 11.5f, 0.25f, 0);
+    expectRow(rows[4], "6", "b", 50, 11.5f, 0, -6);
+    expectRow(rows[5], "6", "k", 12, -50, 8, 0);
+}
+
+TEST_F(Cli, ZeroStepsIsTheHeaderAlone) {
+    const std::string scene = write("floor.json", kFloorScene);
+    const Result r = run("run " + quote(scene) + " --steps 0 --trace -");
+    EXPECT_EQ(r.status, 0);
+    EXPECT_EQ(r.out, "step,id,x,y,vx,vy\n");
+}
+
+TEST_F(Cli, TraceToAFile) {
+    const std::string scene = write("free.json", kFreeScene);
+    const std::string trace = path("trace.csv");
+    const Result r = run("run " + quote(scene) + " -n 2 --trace " + quote(trace));
+    EXPECT_EQ(r.status, 0);
+    EXPECT_EQ(r.out, "");
+    EXPECT_EQ(readAll(trace), "step,id,x,y,vx,vy\n1,ball,1,-2,4,-8\n2,ball,2,-4,4,-8\n");
+}
+
+TEST_F(Cli, FloatsArePrintedToReadBackExactly) {
+    // 0.1f is 0.100000001490116...; nine significant digits are 0.100000001.
+    const std::string scene = write("p.json", R"({"solver": "classic", "bodies": [
+        {"id": "p", "x": 0.1, "y": 0, "hw": 1, "hh": 1}]})");
+    const Result r = run("run " + quote(scene) + " --steps 1 --trace -");
+    EXPECT_EQ(r.status, 0);
+    EXPECT_EQ(r.out, "step,id,x,y,vx,vy\n1,p,0.100000001,0,0,0\n");
+}
+
+TEST_F(Cli, IdsAreQuotedForCsvWhenNeeded) {
+    const std::string scene = write("ids.json", R"({"solver": "classic", "bodies": [
+        {"id": "a,\"b\"", "hw": 1, "hh": 1}]})");
+    const Result r = run("run " + quote(scene) + " --steps 1 --trace -");
+    EXPECT_EQ(r.status, 0);
+    EXPECT_EQ(r.out, "step,id,x,y,vx,vy\n1,\"a,\"\"b\"\"\",0,0,0,0\n");
+}
+
+TEST_F(Cli, SummaryWithoutTrace) {
+    const std::string scene = write("free.json", kFreeScene);
+    const Result r = run("run " + quote(scene) + " --steps 4");
+    EXPECT_EQ(r.status, 0);
+    EXPECT_EQ(r.err, "");
+    EXPECT_THAT(r.out, HasSubstr(scene));
+    EXPECT_THAT(r.out, HasSubstr("classic"));
+    EXPECT_THAT(r.out, HasSubstr("1 dynamic"));
+    EXPECT_THAT(r.out, HasSubstr("1 s simulated")); // 4 steps of 1/4 s
+    // The table row of the ball: after 4 steps x = 4, y = -8, velocity unchanged.
+    bool found = false;
+    for (const std::string& line : lines(r.out)) {
+        std::stringstream words(line);
+        std::vector<std::string> cells;
+        for (std::string word; words >> word;)
+            cells.push_back(word);
+        if (!cells.empty() && cells[0] == "ball") {
+            found = true;
+            EXPECT_EQ(cells, (std::vector<std::string>{"ball", "4", "-8", "4", "-8"}));
+        }
+    }
+    EXPECT_TRUE(found) << r.out;
+}
+
+TEST_F(Cli, TheTutorialExampleRuns) {
+    const Result r =
+        run(std::string("run ") + quote(JOSTLE_SCENES_DIR "/tutorial.json") + " --steps 120");
+    EXPECT_EQ(r.status, 0);
+    EXPECT_EQ(r.err, "");
+    EXPECT_THAT(r.out, HasSubstr("classic"));
+}
+
+// --- Bad input: exit status 2 and a message naming the place -----------------------
+
+TEST_F(Cli, BadSceneNamesFileAndPlace) {
+    const std::string scene = write("bad.json", R"({"bodies": [{"hw": 1, "hh": 1},
+        {"hw": 0, "hh": 1}]})");
+    const Result r = run("run " + quote(scene) + " --steps 1 --trace -");
+    EXPECT_EQ(r.status, 2);
+    EXPECT_EQ(r.err, "jostle: error: " + scene + ": bodies[1].hw: must be > 0\n");
+    EXPECT_EQ(r.out, ""); // not even the header
+}
+
+TEST_F(Cli, InvalidJsonNamesFileAndLine) {
+    const std::string scene = write("bad.json", "{\"bodies\": [\n}");
+    const Result r = run("run " + quote(scene) + " --steps 1");
+    EXPECT_EQ(r.status, 2);
+    EXPECT_THAT(r.err, StartsWith("jostle: error: " + scene + ": invalid JSON at line 2"));
+}
+
+TEST_F(Cli, MissingFile) {
+    const std::string scene = path("missing.json");
+    const Result r = run("run " + quote(scene) + " --steps 1");
+    EXPECT_EQ(r.status, 2);
+    EXPECT_EQ(r.err, "jostle: error: " + scene + ": cannot read: No such file or directory\n");
+}
+
+TEST_F(Cli, TraceFileThatCannotBeCreated) {
+    const std::string scene = write("free.json", kFreeScene);
+    const std::string trace = path("no/such/dir/trace.csv");
+    const Result r = run("run " + quote(scene) + " --steps 1 --trace " + quote(trace));
+    EXPECT_EQ(r.status, 2);
+    EXPECT_EQ(r.err, "jostle: error: " + trace + ": cannot write: No such file or directory\n");
+}
+
+TEST_F(Cli, BadOptions) {
+    const std::string scene = quote(write("free.json", kFreeScene));
+    for (const std::string& args : {
+             "run " + scene + " --steps -1",                    // steps >= 0
+             "run " + scene + " --steps 2.5",                   // a whole number
+             "run " + scene + " --steps 1 --trace - --every 0", // every >= 1
+             "run " + scene + " --steps 1 --every 2",           // every needs a trace
+             "run " + scene,                                    // steps is required
+             std::string("run --steps 1"),                      // so is the scene
+             "run " + scene + " --steps 1 --colour",            // no such option
+             std::string(""),                                   // no command
+             std::string("fly"),                                // no such command
+         }) {
+        SCOPED_TRACE(args);
+        const Result r = run(args);
+        EXPECT_EQ(r.status, 2);
+        EXPECT_THAT(r.err, StartsWith("jostle: error: "));
+        EXPECT_EQ(r.out, "");
+    }
+}
+
+TEST_F(Cli, Help) {
+    const Result top = run("--help");
+    EXPECT_EQ(top.status, 0);
+    EXPECT_THAT(top.out, HasSubstr("run"));
+
+    const Result sub = run("run --help");
+    EXPECT_EQ(sub.status, 0);
+    EXPECT_THAT(sub.out, HasSubstr("--steps"));
+    EXPECT_THAT(sub.out, HasSubstr("--trace"));
+    EXPECT_THAT(sub.out, HasSubstr("--every"));
+}
+
+} // namespace

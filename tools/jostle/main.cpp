@@ -1,0 +1,180 @@
+// The `jostle` program: runs scene files from the command line (docs/scene-format.md).
+//
+//     jostle run SCENE --steps N [--trace FILE|-] [--every K]
+//
+// Exit status: 0 when all went well; 2 for bad input (options, scene file, a value the
+// world refuses); 1 when the output cannot be written or something unexpected fails.
+#include "summary.hpp"
+#include "trace.hpp"
+
+#include "jostle/scene.hpp"
+
+#include <CLI/CLI.hpp>
+
+#include <cerrno>
+#include <charconv>
+#include <chrono>
+#include <cstdint>
+#include <cstdio>
+#include <exception>
+#include <memory>
+#include <string>
+#include <system_error>
+#include <vector>
+
+namespace {
+
+constexpr int kBadInput = 2;
+constexpr int kFailure = 1;
+
+struct RunOptions {
+    std::string scene;
+    std::int64_t steps = 0;
+    std::string trace; ///< empty: no trace; "-": stdout
+    std::int64_t every = 1;
+};
+
+void printError(const std::string& message) {
+    std::fprintf(stderr, "jostle: error: %s\n", message.c_str());
+}
+
+std::string systemMessage(int error) {
+    return std::error_code(error, std::generic_category()).message();
+}
+
+/// Accepts whole numbers >= minimum, and says so in a sentence when it refuses.
+CLI::Validator atLeast(std::int64_t minimum) {
+    const std::string rule = ">= " + std::to_string(minimum);
+    return CLI::Validator(
+        [minimum, rule](std::string& text) -> std::string {
+            std::int64_t value = 0;
+            const char* end = text.data() + text.size();
+            const auto [stop, error] = std::from_chars(text.data(), end, value);
+            if (error != std::errc() || stop != end)
+                return "expected a whole number " + rule + ", got " + text;
+            if (value < minimum)
+                return "must be " + rule + ", got " + text;
+            return {};
+        },
+        rule);
+}
+
+/// Where the trace goes: stdout, a file of ours, or nowhere.
+class TraceOutput {
+public:
+    /// Opens `path` ("-" is stdout); false, with errno set, if it cannot be created.
+    bool open(const std::string& path) {
+        if (path == "-") {
+            out_ = stdout;
+            return true;
+        }
+        errno = 0;
+        file_.reset(std::fopen(path.c_str(), "w"));
+        out_ = file_.get();
+        return out_ != nullptr;
+    }
+    std::FILE* get() const { return out_; }
+    /// Flushes and closes; false, with errno set, if anything written was lost.
+    bool finish() {
+        errno = 0;
+        const bool flushed = std::fflush(out_) == 0 && !std::ferror(out_);
+        const bool closed = !file_ || std::fclose(file_.release()) == 0;
+        return flushed && closed;
+    }
+
+private:
+    struct Closer {
+        void operator()(std::FILE* file) const { std::fclose(file); }
+    };
+    std::unique_ptr<std::FILE, Closer> file_;
+    std::FILE* out_ = nullptr;
+};
+
+int run(const RunOptions& options) {
+    const jostle::Scene scene = jostle::loadScene(options.scene);
+    jostle::World world(scene.world);
+    const std::vector<jostle::BodyId> ids = jostle::addBodies(world, scene);
+
+    TraceOutput trace;
+    std::vector<jostle::cli::TracedBody> traced;
+    if (!options.trace.empty()) {
+        if (!trace.open(options.trace)) {
+            printError(options.trace + ": cannot write: " + systemMessage(errno));
+            return kBadInput;
+        }
+        // Static bodies never move: a trace of them would be the scene file again.
+        for (std::size_t i = 0; i < ids.size(); ++i)
+            if (scene.bodies[i].def.type != jostle::BodyType::Static)
+                traced.push_back({ids[i], jostle::cli::csvField(scene.bodies[i].id)});
+        jostle::cli::writeTraceHeader(trace.get());
+    }
+
+    const auto start = std::chrono::steady_clock::now();
+    for (std::int64_t step = 1; step <= options.steps; ++step) {
+        world.step(scene.dt);
+        if (trace.get() && step % options.every == 0)
+            jostle::cli::writeTraceRows(trace.get(), step, world, traced);
+    }
+    const auto wallTime = std::chrono::steady_clock::now() - start;
+
+    if (trace.get()) {
+        if (!trace.finish()) {
+            printError(options.trace + ": write failed: " + systemMessage(errno));
+            return kFailure;
+        }
+        return 0;
+    }
+    jostle::cli::printSummary(stdout, {options.scene, scene, world, ids, options.steps, wallTime});
+    return std::fflush(stdout) == 0 ? 0 : kFailure;
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    CLI::App app{"jostle: 2D axis-aligned box collision, from the command line.", "jostle"};
+    app.require_subcommand(1);
+
+    RunOptions options;
+    CLI::App* runCommand =
+        app.add_subcommand("run", "Load a scene file and step it; print a summary or a trace.");
+    runCommand->add_option("scene", options.scene, "The scene file (docs/scene-format.md)")
+        ->required();
+    runCommand->add_option("-n,--steps", options.steps, "How many steps to take, >= 0")
+        ->required()
+        ->check(atLeast(0));
+    CLI::Option* traceOption = runCommand->add_option(
+        "--trace", options.trace,
+        "Write a CSV trace (step,id,x,y,vx,vy) of the non-static bodies to FILE, or - for "
+        "stdout");
+    traceOption->type_name("FILE|-");
+    runCommand->add_option("--every", options.every, "Trace only steps K, 2K, 3K, ... (K >= 1)")
+        ->type_name("K")
+        ->check(atLeast(1))
+        ->needs(traceOption);
+
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& error) {
+        // --help is a ParseError that succeeds; CLI11 prints the help of the right command.
+        if (error.get_exit_code() == 0)
+            return app.exit(error);
+        printError(error.what());
+        std::fprintf(stderr, "Run '%s --help' for usage.\n",
+                     runCommand->parsed() ? "jostle run" : "jostle");
+        return kBadInput;
+    }
+
+    try {
+        return run(options);
+    } catch (const jostle::SceneError& error) {
+        printError(error.what()); // already names the file
+        return kBadInput;
+    } catch (const jostle::Error& error) {
+        // The world refused the scene (e.g. a solver it does not have yet).
+        printError(options.scene + ": " + error.what());
+        return kBadInput;
+    } catch (const std::exception& error) {
+        printError(error.what());
+        return kFailure;
+    }
+}
