@@ -122,6 +122,7 @@ BodyId World::createBody(const BodyDef& def) {
     body.gravityScale = def.gravityScale;
     body.damping = def.damping;
     body.userData = def.userData;
+    body.bullet = def.bullet;
     updateMass(body);
 
     const BodyId id = w.idOf(slot);
@@ -161,6 +162,7 @@ BodyDef World::bodyDef(BodyId id) const {
     def.density = b.density;
     def.gravityScale = b.gravityScale;
     def.damping = b.damping;
+    def.bullet = b.bullet;
     def.userData = b.userData;
     return def;
 }
@@ -280,6 +282,22 @@ void World::setDamping(BodyId id, float damping) {
     b.damping = damping;
 }
 
+bool World::isBullet(BodyId id) const {
+    return lookUp(*state_, id, "isBullet").bullet;
+}
+
+void World::setBullet(BodyId id, bool bullet) {
+    lookUp(*state_, id, "setBullet").bullet = bullet;
+}
+
+bool World::isAwake(BodyId id) const {
+    return !lookUp(*state_, id, "isAwake").asleep;
+}
+
+void World::wake(BodyId id) {
+    lookUp(*state_, id, "wake").asleep = false;
+}
+
 void* World::userData(BodyId id) const {
     return lookUp(*state_, id, "userData").userData;
 }
@@ -338,6 +356,17 @@ void World::setSolver(Solver solver) {
         fail("setSolver", "solver must be classic or physical");
     state_->def.solver = solver;
     state_->contactCache.clear();
+}
+
+bool World::sleeping() const {
+    return state_->def.sleeping;
+}
+
+void World::setSleeping(bool enabled) {
+    state_->def.sleeping = enabled;
+    if (!enabled)
+        for (BodyId id : state_->order)
+            state_->slots[id.index].asleep = false;
 }
 
 ClassicOptions World::classicOptions() const {

@@ -27,6 +27,8 @@ struct Body {
     float damping = 0.0f;
     void* userData = nullptr;
     BodyType type = BodyType::Dynamic;
+    bool bullet = false;
+    bool asleep = false;
     /// The slot holds a live body. Cleared at once by destroyBody, even mid-step.
     bool alive = false;
     /// Counts the slot's reuses; a BodyId matches only the generation it was made with.

@@ -70,6 +70,10 @@ struct BodyDef {
     float gravityScale = 1.0f;
     /// Linear damping, >= 0: every step, velocity /= 1 + damping × dt.
     float damping = 0.0f;
+    /// A fast dynamic body that must not pass through other dynamic bodies either.
+    /// Every dynamic body is kept from passing through static and kinematic ones; a bullet
+    /// is also swept against dynamic bodies, which costs more.
+    bool bullet = false;
     /// Yours: jostle stores it and gives it back, nothing more.
     void* userData = nullptr;
 };

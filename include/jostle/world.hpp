@@ -50,6 +50,10 @@ struct ClassicOptions {
     /// change, so a sliding body decelerates at about friction × gravity instead of
     /// losing the fraction `friction` of its speed at every contact.
     bool coulomb = false;
+    /// On: continuous collision, as in the physical model; a dynamic body is swept along
+    /// its motion and stopped at the first static or kinematic body in its way, so it
+    /// cannot pass through thin walls at any speed. Off: the tutorial, tunnelling and all.
+    bool ccd = false;
 };
 
 /// How the physical model combines the friction of a pair.
@@ -91,6 +95,9 @@ struct WorldDef {
     Solver solver = Solver::Physical;
     ClassicOptions classic;
     PhysicalOptions physical;
+    /// Bodies at rest for a while, and every body they touch, fall asleep together and
+    /// cost next to nothing until something wakes them (physical model only).
+    bool sleeping = true;
 };
 
 /// The first problem with `def`, or nothing if it is acceptable.
@@ -174,6 +181,14 @@ public:
     void setGravityScale(BodyId id, float scale);
     float damping(BodyId id) const;
     void setDamping(BodyId id, float damping);
+    bool isBullet(BodyId id) const;
+    void setBullet(BodyId id, bool bullet);
+    /// False while the body sleeps (see WorldDef::sleeping). Sleeping bodies wake when an
+    /// awake body touches them, when a setter changes them or a body they rest on, and
+    /// when such a body is destroyed.
+    bool isAwake(BodyId id) const;
+    /// Wakes the body and everything it rests on or carries.
+    void wake(BodyId id);
     void* userData(BodyId id) const;
     void setUserData(BodyId id, void* data);
 
@@ -195,6 +210,9 @@ public:
     void setMaxVelocity(float maxVelocity);
     Solver solver() const;
     void setSolver(Solver solver);
+    bool sleeping() const;
+    /// Turning sleeping off wakes every body.
+    void setSleeping(bool enabled);
     ClassicOptions classicOptions() const;
     void setClassicOptions(ClassicOptions options);
     PhysicalOptions physicalOptions() const;
