@@ -288,6 +288,8 @@ SceneBody readBody(const Json& value, const std::string& place, std::size_t inde
             body.def.type = readBodyType(fieldValue, at);
         } else if (float BodyDef::*member = findFloatField(name)) {
             body.def.*member = readFloat(fieldValue, at);
+        } else if (name == "bullet") {
+            body.def.bullet = readBool(fieldValue, at);
         } else {
             fail(place, "unknown field " + quoteName(name));
         }
@@ -389,6 +391,8 @@ ClassicOptions readClassic(const Json& value, const std::string& place) {
             options.mass = readBool(fieldValue, field(place, name));
         else if (name == "coulomb")
             options.coulomb = readBool(fieldValue, field(place, name));
+        else if (name == "ccd")
+            options.ccd = readBool(fieldValue, field(place, name));
         else
             fail(place, "unknown field " + quoteName(name));
     }
@@ -418,6 +422,8 @@ Scene readScene(const Json& root) {
             scene.world.classic = readClassic(value, name);
         } else if (name == "physical") {
             scene.world.physical = readPhysical(value, name);
+        } else if (name == "sleeping") {
+            scene.world.sleeping = readBool(value, name);
         } else if (name == "bodies") {
             scene.bodies = readBodies(value, name);
         } else {

@@ -49,7 +49,7 @@ constexpr const char* kBox = R"({"hw": 1, "hh": 1})";
 TEST(SceneParse, EveryFieldIsReadAsWritten) {
     const Scene scene = parseScene(R"({
         "gravity": [1.5, -800], "maxVelocity": 1000, "dt": 0.01, "solver": "classic",
-        "classic": {"mass": true, "coulomb": true},
+        "classic": {"mass": true, "coulomb": true, "ccd": true}, "sleeping": false,
         "physical": {"velocityIterations": 4, "positionIterations": 0, "slop": 0.125,
                      "correction": 0.5, "restitutionThreshold": 2, "frictionMix": "geometricMean"},
         "bodies": [
@@ -59,7 +59,7 @@ TEST(SceneParse, EveryFieldIsReadAsWritten) {
            "vy": 6, "density": 3},
           {"id": "crate", "type": "dynamic", "x": 0.1, "y": -2.5, "hw": 10, "hh": 12,
            "vx": 40, "vy": -7, "bounce": 0.3, "friction": 0.75, "mass": 2,
-           "gravityScale": -1, "damping": 0.5}
+           "gravityScale": -1, "damping": 0.5, "bullet": true}
         ]})");
 
     EXPECT_EQ(scene.world.gravity, (Vec2{1.5f, -800.0f}));
@@ -68,6 +68,8 @@ TEST(SceneParse, EveryFieldIsReadAsWritten) {
     EXPECT_EQ(scene.world.solver, Solver::Classic);
     EXPECT_TRUE(scene.world.classic.mass);
     EXPECT_TRUE(scene.world.classic.coulomb);
+    EXPECT_TRUE(scene.world.classic.ccd);
+    EXPECT_FALSE(scene.world.sleeping);
     EXPECT_EQ(scene.world.physical.velocityIterations, 4);
     EXPECT_EQ(scene.world.physical.positionIterations, 0);
     EXPECT_EQ(scene.world.physical.slop, 0.125f);
@@ -108,6 +110,8 @@ TEST(SceneParse, EveryFieldIsReadAsWritten) {
     EXPECT_EQ(crate.def.mass, 2.0f);
     EXPECT_EQ(crate.def.gravityScale, -1.0f);
     EXPECT_EQ(crate.def.damping, 0.5f);
+    EXPECT_TRUE(crate.def.bullet);
+    EXPECT_FALSE(floor.def.bullet);
     EXPECT_EQ(crate.def.userData, nullptr);
 }
 
