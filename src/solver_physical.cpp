@@ -19,7 +19,6 @@
 // Boxes do not rotate, so a contact is one normal along x or y and one tangent: the
 // effective mass of a contact is 1 / (invMassA + invMassB) and nothing else.
 // docs/physical-model.md explains the choices.
-#include "pairs.hpp"
 #include "world_state.hpp"
 
 #include <algorithm>
@@ -69,7 +68,7 @@ public:
     void run() {
         for (BodyId id : w_.order) {
             Body& body = w_.slots[id.index];
-            if (body.isDynamic())
+            if (body.isDynamic() && !body.asleep)
                 integrateVelocity(w_.def, body, dt_);
         }
         findPairs(w_, dt_, pairs_);
@@ -83,6 +82,8 @@ public:
         for (int i = 0; i < options_.positionIterations; ++i)
             correctPositions();
         remember();
+        if (w_.def.sleeping)
+            fallAsleep();
     }
 
 private:
@@ -287,9 +288,11 @@ private:
     }
 
     void integratePositions() {
-        for (BodyId id : w_.order) {
-            Body& body = w_.slots[id.index];
-            if (body.type != BodyType::Static)
+        // The bodies that were moving when the step began (a callback may have created
+        // others since: they join next step).
+        for (std::uint32_t slot : w_.movingSlots) {
+            Body& body = w_.slots[slot];
+            if (w_.isLive(slot))
                 body.position += body.velocity * dt_;
         }
     }
@@ -337,12 +340,89 @@ private:
         }
     }
 
+    /// Islands of awake dynamic bodies joined by contacts fall asleep together once every
+    /// body of the island has been slow for kTimeToSleep. A body touching a moving
+    /// kinematic body never sleeps: its platform may carry it off.
+    void fallAsleep() {
+        // Union-find over slots; the root of a set is its earliest-created body.
+        parent_.resize(w_.slots.size());
+        for (std::uint32_t slot : w_.movingSlots)
+            parent_[slot] = slot;
+        auto find = [&](std::uint32_t s) {
+            while (parent_[s] != s)
+                s = parent_[s] = parent_[parent_[s]];
+            return s;
+        };
+        for (std::uint32_t slot : w_.movingSlots) {
+            Body& body = w_.slots[slot];
+            if (!body.isDynamic() || !w_.isLive(slot))
+                continue;
+            const float slow = kSleepSpeed * std::min(body.half.x, body.half.y);
+            body.sleepTime = length(body.velocity) < slow ? body.sleepTime + dt_ : 0.0f;
+        }
+        for (const Contact& c : contacts_) {
+            Body& a = w_.slots[c.a];
+            Body& b = w_.slots[c.b];
+            if (a.isDynamic() && b.isDynamic()) {
+                std::uint32_t ra = find(c.a), rb = find(c.b);
+                if (ra != rb) {
+                    if (w_.rank[ra] > w_.rank[rb])
+                        std::swap(ra, rb);
+                    parent_[rb] = ra;
+                }
+            } else {
+                const Body& other = a.isDynamic() ? b : a;
+                if (other.type == BodyType::Kinematic &&
+                    (other.velocity.x != 0.0f || other.velocity.y != 0.0f))
+                    (a.isDynamic() ? a : b).sleepTime = 0.0f;
+            }
+        }
+        // The shortest sleep time of each island decides.
+        islandTime_.assign(w_.slots.size(), INFINITY);
+        for (std::uint32_t slot : w_.movingSlots) {
+            const Body& body = w_.slots[slot];
+            if (body.isDynamic() && w_.isLive(slot)) {
+                float& time = islandTime_[find(slot)];
+                time = std::min(time, body.sleepTime);
+            }
+        }
+        islandOf_.assign(w_.slots.size(), UINT32_MAX);
+        for (std::uint32_t slot : w_.movingSlots) {
+            Body& body = w_.slots[slot];
+            if (!body.isDynamic() || !w_.isLive(slot) || islandTime_[find(slot)] < kTimeToSleep)
+                continue;
+            std::uint32_t& island = islandOf_[find(slot)];
+            if (island == UINT32_MAX) {
+                if (w_.freeIslands.empty()) {
+                    island = std::uint32_t(w_.islands.size());
+                    w_.islands.emplace_back();
+                } else {
+                    island = w_.freeIslands.back();
+                    w_.freeIslands.pop_back();
+                }
+            }
+            w_.islands[island].push_back(slot);
+            body.asleep = true;
+            body.island = island;
+            body.velocity = {};
+            w_.restingDirty = true;
+        }
+    }
+
+    /// Sleep when slower than this many half extents per second...
+    static constexpr float kSleepSpeed = 0.05f;
+    /// ... for this long, with all the island.
+    static constexpr float kTimeToSleep = 0.5f;
+
     WorldState& w_;
     const PhysicalOptions options_; // a copy: a callback may change the world's
     float dt_;
     std::vector<BodyPair> pairs_;
     std::vector<Contact> contacts_;
     std::vector<std::uint32_t> levels_; ///< support level by slot
+    std::vector<std::uint32_t> parent_; ///< union-find of islands, by slot
+    std::vector<float> islandTime_;
+    std::vector<std::uint32_t> islandOf_;
 };
 
 } // namespace

@@ -51,6 +51,11 @@ float dynamicMass(const Body& body) {
     return body.mass > 0.0f ? body.mass : body.density * 4.0f * body.half.x * body.half.y;
 }
 
+void wakeAll(WorldState& world) {
+    for (BodyId id : world.order)
+        world.wakeIsland(id.index);
+}
+
 } // namespace
 
 void updateMass(Body& body) {
@@ -127,12 +132,16 @@ BodyId World::createBody(const BodyDef& def) {
 
     const BodyId id = w.idOf(slot);
     w.order.push_back(id);
+    w.disturb(slot);
     return id;
 }
 
 void World::destroyBody(BodyId id) {
     WorldState& w = *state_;
     Body& body = lookUp(w, id, "destroyBody");
+    w.disturb(id.index);
+    if (body.type == BodyType::Static)
+        w.restingDirty = true;
     body.alive = false;
     // Skip 0 on wrap-around: generation 0 is the null handle's.
     body.generation = body.generation == UINT32_MAX ? 1 : body.generation + 1;
@@ -175,10 +184,13 @@ void World::setType(BodyId id, BodyType type) {
     Body& b = lookUp(*state_, id, "setType");
     if (type != BodyType::Static && type != BodyType::Kinematic && type != BodyType::Dynamic)
         fail("setType", "type must be static, kinematic or dynamic");
+    state_->disturb(id.index); // what rested on it, where it was
+    state_->restingDirty = true;
     b.type = type;
     if (type == BodyType::Static)
         b.velocity = {};
     updateMass(b);
+    state_->disturb(id.index);
 }
 
 Vec2 World::position(BodyId id) const {
@@ -188,7 +200,9 @@ Vec2 World::position(BodyId id) const {
 void World::setPosition(BodyId id, Vec2 centre) {
     Body& b = lookUp(*state_, id, "setPosition");
     requireFinite("setPosition", "centre", centre);
+    state_->disturb(id.index); // what rested on it, where it was
     b.position = centre;
+    state_->disturb(id.index);
 }
 
 Vec2 World::velocity(BodyId id) const {
@@ -201,6 +215,7 @@ void World::setVelocity(BodyId id, Vec2 velocity) {
     if (b.type == BodyType::Static && (velocity.x != 0.0f || velocity.y != 0.0f))
         fail("setVelocity", "a static body cannot move (make it kinematic)");
     b.velocity = velocity;
+    state_->disturb(id.index);
 }
 
 Vec2 World::halfExtents(BodyId id) const {
@@ -212,8 +227,10 @@ void World::setHalfExtents(BodyId id, Vec2 halfExtents) {
     requireFinite("setHalfExtents", "halfExtents", halfExtents);
     if (halfExtents.x <= 0.0f || halfExtents.y <= 0.0f)
         fail("setHalfExtents", "halfExtents must be > 0");
+    state_->disturb(id.index); // what rested on it, as it was
     b.half = halfExtents;
     updateMass(b);
+    state_->disturb(id.index);
 }
 
 float World::bounce(BodyId id) const {
@@ -224,6 +241,7 @@ void World::setBounce(BodyId id, float bounce) {
     Body& b = lookUp(*state_, id, "setBounce");
     requireUnit("setBounce", "bounce", bounce);
     b.bounce = bounce;
+    state_->disturb(id.index);
 }
 
 float World::friction(BodyId id) const {
@@ -234,6 +252,7 @@ void World::setFriction(BodyId id, float friction) {
     Body& b = lookUp(*state_, id, "setFriction");
     requireUnit("setFriction", "friction", friction);
     b.friction = friction;
+    state_->disturb(id.index);
 }
 
 float World::mass(BodyId id) const {
@@ -248,6 +267,7 @@ void World::setMass(BodyId id, float mass) {
         fail("setMass", "mass must be > 0");
     b.mass = mass;
     updateMass(b);
+    state_->disturb(id.index);
 }
 
 void World::setDensity(BodyId id, float density) {
@@ -258,6 +278,7 @@ void World::setDensity(BodyId id, float density) {
     b.mass = 0.0f;
     b.density = density;
     updateMass(b);
+    state_->disturb(id.index);
 }
 
 float World::gravityScale(BodyId id) const {
@@ -268,6 +289,7 @@ void World::setGravityScale(BodyId id, float scale) {
     Body& b = lookUp(*state_, id, "setGravityScale");
     requireFinite("setGravityScale", "scale", scale);
     b.gravityScale = scale;
+    state_->disturb(id.index);
 }
 
 float World::damping(BodyId id) const {
@@ -280,6 +302,7 @@ void World::setDamping(BodyId id, float damping) {
     if (damping < 0.0f)
         fail("setDamping", "damping must be >= 0");
     b.damping = damping;
+    state_->disturb(id.index);
 }
 
 bool World::isBullet(BodyId id) const {
@@ -335,6 +358,7 @@ Vec2 World::gravity() const {
 void World::setGravity(Vec2 gravity) {
     requireFinite("setGravity", "gravity", gravity);
     state_->def.gravity = gravity;
+    wakeAll(*state_);
 }
 
 float World::maxVelocity() const {
@@ -365,8 +389,7 @@ bool World::sleeping() const {
 void World::setSleeping(bool enabled) {
     state_->def.sleeping = enabled;
     if (!enabled)
-        for (BodyId id : state_->order)
-            state_->slots[id.index].asleep = false;
+        wakeAll(*state_);
 }
 
 ClassicOptions World::classicOptions() const {

@@ -1,6 +1,7 @@
 // The world's storage, shared by World (the API) and the solvers.
 #pragma once
 
+#include "box_grid.hpp"
 #include "collide.hpp"
 #include "jostle/world.hpp"
 
@@ -29,6 +30,10 @@ struct Body {
     BodyType type = BodyType::Dynamic;
     bool bullet = false;
     bool asleep = false;
+    /// Seconds this body has been slow enough to sleep.
+    float sleepTime = 0.0f;
+    /// While asleep: the index of its island in WorldState::islands.
+    std::uint32_t island = 0;
     /// The slot holds a live body. Cleared at once by destroyBody, even mid-step.
     bool alive = false;
     /// Counts the slot's reuses; a BodyId matches only the generation it was made with.
@@ -36,6 +41,13 @@ struct Body {
 
     bool isDynamic() const { return type == BodyType::Dynamic; }
     Box box() const { return {position, half}; }
+    Bounds bounds() const { return {position - half, position + half}; }
+};
+
+/// Two bodies that may touch: slot indices, `a` created before `b`.
+struct BodyPair {
+    std::uint32_t a;
+    std::uint32_t b;
 };
 
 /// What the physical model remembers of a contact from one step to the next, to start
@@ -76,8 +88,37 @@ struct WorldState {
     /// iterated, so its hash order cannot leak into the results.
     std::unordered_map<std::uint64_t, CachedContact> contactCache;
 
+    /// Creation rank of each slot's body (its place in `order`), refreshed by
+    /// refreshRanks(); pairs are ordered by it.
+    std::vector<std::uint32_t> rank;
+
+    /// The broadphase of bodies at rest: static and sleeping bodies, rebuilt only when
+    /// one of them changes (restingDirty), so a still level costs nothing per step.
+    BoxGrid restingGrid;
+    std::vector<std::uint32_t> restingSlots; ///< grid index -> slot
+    bool restingDirty = true;
+    /// The broadphase of moving bodies (awake dynamic and kinematic), rebuilt every step.
+    BoxGrid movingGrid;
+    std::vector<std::uint32_t> movingSlots;
+
+    /// Sleeping islands: the bodies that fell asleep together and wake together.
+    std::vector<std::vector<std::uint32_t>> islands;
+    std::vector<std::uint32_t> freeIslands;
+
     BodyId idOf(std::uint32_t slot) const { return {slot, slots[slot].generation}; }
     bool isLive(std::uint32_t slot) const { return slots[slot].alive; }
+    bool isResting(const Body& body) const { return body.type == BodyType::Static || body.asleep; }
+
+    void refreshRanks();
+    /// Rebuilds restingGrid if a resting body changed.
+    void refreshRestingGrid();
+    /// Wakes the island of a sleeping body (nothing if it is awake).
+    void wakeIsland(std::uint32_t slot);
+    /// Wakes every sleeping body touching `bounds`.
+    void wakeTouching(const Bounds& bounds);
+    /// A body is about to change (or go): it and whatever sleeps against it wake, and the
+    /// resting grid is rebuilt if it is part of it.
+    void disturb(std::uint32_t slot);
 };
 
 /// Computes invMass from the body's type, mass, density and size.
@@ -85,6 +126,12 @@ void updateMass(Body& body);
 
 /// The classic model's step: the tutorial's update(dt). solver_classic.cpp.
 void stepClassic(WorldState& world, float dt);
+
+/// Every pair of live bodies, at least one of them dynamic and awake, whose boxes, each
+/// grown by the distance its velocity carries it in `dt`, overlap or touch; `a` is the
+/// one created first. Sleeping bodies touched by awake ones are woken first, so they take
+/// part. The order is fixed: the same world gives the same list. broadphase.cpp.
+void findPairs(WorldState& world, float dt, std::vector<BodyPair>& pairs);
 
 /// The physical model's step. solver_physical.cpp.
 void stepPhysical(WorldState& world, float dt);

@@ -15,8 +15,11 @@ namespace {
 
 constexpr float kEps = std::numeric_limits<float>::epsilon();
 
+// Sleeping off: these tests are about the solver, and a sleeping body would pass them
+// by not moving at all. tests/test_sleeping.cpp tests sleep.
 World physicalWorld(Vec2 gravity, PhysicalOptions options = {}) {
-    return World(WorldDef{.gravity = gravity, .solver = Solver::Physical, .physical = options});
+    return World(WorldDef{
+        .gravity = gravity, .solver = Solver::Physical, .physical = options, .sleeping = false});
 }
 
 // A static floor whose top edge is at y = 0 (y grows downward).

@@ -1,0 +1,148 @@
+// The world's broadphase: which bodies may touch. Two BoxGrids: one of the bodies at
+// rest (static and sleeping), rebuilt only when one of them changes, and one of the
+// moving bodies, rebuilt every step. Also the waking of sleeping bodies, which the
+// resting grid finds.
+#include "world_state.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace jostle {
+
+void WorldState::refreshRanks() {
+    rank.resize(slots.size());
+    for (std::uint32_t r = 0; r < order.size(); ++r)
+        rank[order[r].index] = r;
+}
+
+void WorldState::refreshRestingGrid() {
+    if (!restingDirty)
+        return;
+    restingDirty = false;
+    restingSlots.clear();
+    std::vector<Bounds> bounds;
+    for (BodyId id : order) {
+        const Body& body = slots[id.index];
+        if (isResting(body)) {
+            restingSlots.push_back(id.index);
+            bounds.push_back(body.bounds());
+        }
+    }
+    restingGrid.build(bounds);
+}
+
+void WorldState::wakeIsland(std::uint32_t slot) {
+    if (!slots[slot].asleep)
+        return;
+    const std::uint32_t island = slots[slot].island;
+    for (std::uint32_t member : islands[island]) {
+        Body& body = slots[member];
+        body.asleep = false;
+        body.sleepTime = 0.0f;
+    }
+    islands[island].clear();
+    freeIslands.push_back(island);
+    restingDirty = true;
+}
+
+void WorldState::wakeTouching(const Bounds& bounds) {
+    refreshRestingGrid();
+    std::vector<std::uint32_t> sleepers;
+    restingGrid.query(bounds, [&](std::uint32_t i) {
+        if (slots[restingSlots[i]].asleep)
+            sleepers.push_back(restingSlots[i]);
+    });
+    for (std::uint32_t slot : sleepers)
+        wakeIsland(slot);
+}
+
+void WorldState::disturb(std::uint32_t slot) {
+    Body& body = slots[slot];
+    body.sleepTime = 0.0f;
+    wakeIsland(slot);
+    if (body.type == BodyType::Static)
+        restingDirty = true;
+    wakeTouching(body.bounds());
+}
+
+namespace {
+
+/// The box a body may sweep during the step: grown by its motion along each axis.
+Bounds reach(const Body& body, float dt) {
+    const Vec2 motion{std::abs(body.velocity.x) * dt, std::abs(body.velocity.y) * dt};
+    return {body.position - body.half - motion, body.position + body.half + motion};
+}
+
+/// Collects pairs, or, if it meets sleeping bodies, the islands to wake first.
+class PairFinder {
+public:
+    PairFinder(WorldState& world, float dt, std::vector<BodyPair>& pairs)
+        : w_(world), dt_(dt), pairs_(pairs) {}
+
+    /// False if sleeping bodies were found in the way and woken: run again.
+    bool run() {
+        pairs_.clear();
+        w_.refreshRestingGrid();
+        buildMovingGrid();
+        std::vector<std::uint32_t> toWake;
+        w_.movingGrid.forEachPair([&](std::uint32_t i, std::uint32_t j) {
+            const std::uint32_t a = w_.movingSlots[i], b = w_.movingSlots[j];
+            if (w_.slots[a].isDynamic() || w_.slots[b].isDynamic())
+                add(a, b);
+        });
+        for (std::uint32_t i = 0; i < w_.movingSlots.size(); ++i) {
+            const std::uint32_t a = w_.movingSlots[i];
+            const Body& body = w_.slots[a];
+            const bool moving = body.velocity.x != 0.0f || body.velocity.y != 0.0f;
+            if (!body.isDynamic() && !moving)
+                continue; // a kinematic body at rest neither meets statics nor wakes anyone
+            w_.restingGrid.query(w_.movingGrid.bounds(i), [&](std::uint32_t k) {
+                const std::uint32_t b = w_.restingSlots[k];
+                if (w_.slots[b].asleep)
+                    toWake.push_back(b);
+                else if (body.isDynamic())
+                    add(a, b);
+            });
+        }
+        for (std::uint32_t slot : toWake)
+            w_.wakeIsland(slot);
+        return toWake.empty();
+    }
+
+private:
+    void buildMovingGrid() {
+        w_.movingSlots.clear();
+        bounds_.clear();
+        for (BodyId id : w_.order) {
+            const Body& body = w_.slots[id.index];
+            if (!w_.isResting(body)) {
+                w_.movingSlots.push_back(id.index);
+                bounds_.push_back(reach(body, dt_));
+            }
+        }
+        w_.movingGrid.build(bounds_);
+    }
+
+    void add(std::uint32_t a, std::uint32_t b) {
+        if (w_.rank[a] > w_.rank[b])
+            std::swap(a, b);
+        pairs_.push_back({a, b});
+    }
+
+    WorldState& w_;
+    float dt_;
+    std::vector<BodyPair>& pairs_;
+    std::vector<Bounds> bounds_;
+};
+
+} // namespace
+
+void findPairs(WorldState& world, float dt, std::vector<BodyPair>& pairs) {
+    world.refreshRanks();
+    PairFinder finder(world, dt, pairs);
+    // Each round wakes at least one island, and woken bodies stay awake: this ends.
+    while (!finder.run()) {
+    }
+}
+
+} // namespace jostle

@@ -1,0 +1,132 @@
+// The broadphase never misses a pair and never reports one twice: property tests against
+// brute force on random worlds of boxes from 1 to 10,000 units, near and far from the
+// origin.
+#include "box_grid.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <set>
+#include <utility>
+#include <vector>
+
+namespace jostle {
+namespace {
+
+using Pair = std::pair<std::uint32_t, std::uint32_t>;
+
+std::vector<Bounds> randomBoxes(unsigned seed, int count, float spread, Vec2 origin) {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+    std::vector<Bounds> boxes;
+    for (int i = 0; i < count; ++i) {
+        // Sizes spread evenly over four orders of magnitude: 1 to 10,000 units.
+        const float hw = 0.5f * std::pow(10.0f, 4.0f * unit(rng));
+        const float hh = i % 3 == 0 ? hw : 0.5f * std::pow(10.0f, 4.0f * unit(rng));
+        const Vec2 c{origin.x + spread * (unit(rng) - 0.5f),
+                     origin.y + spread * (unit(rng) - 0.5f)};
+        boxes.push_back({{c.x - hw, c.y - hh}, {c.x + hw, c.y + hh}});
+    }
+    // Some boxes exactly touching others, edge to edge and corner to corner.
+    for (int i = 0; i + 1 < count; i += 9) {
+        Bounds& b = boxes[std::size_t(i) + 1];
+        const Bounds& a = boxes[std::size_t(i)];
+        const float w = b.max.x - b.min.x;
+        b.min.x = a.max.x;
+        b.max.x = a.max.x + w;
+    }
+    return boxes;
+}
+
+std::set<Pair> bruteForcePairs(const std::vector<Bounds>& boxes) {
+    std::set<Pair> pairs;
+    for (std::uint32_t i = 0; i < boxes.size(); ++i)
+        for (std::uint32_t j = i + 1; j < boxes.size(); ++j)
+            if (touches(boxes[i], boxes[j]))
+                pairs.insert({i, j});
+    return pairs;
+}
+
+class BoxGridProperty : public ::testing::TestWithParam<unsigned> {};
+
+TEST_P(BoxGridProperty, PairsEqualBruteForce) {
+    const unsigned seed = GetParam();
+    const Vec2 origin = seed % 2 ? Vec2{1e6f, -3e6f} : Vec2{0, 0};
+    const std::vector<Bounds> boxes = randomBoxes(seed, 600, 60000.0f, origin);
+    BoxGrid grid;
+    grid.build(boxes);
+    std::set<Pair> found;
+    std::size_t calls = 0;
+    grid.forEachPair([&](std::uint32_t i, std::uint32_t j) {
+        ++calls;
+        found.insert({std::min(i, j), std::max(i, j)});
+    });
+    const std::set<Pair> expected = bruteForcePairs(boxes);
+    EXPECT_EQ(found, expected);
+    EXPECT_EQ(calls, expected.size()); // each pair once
+    EXPECT_GT(expected.size(), 100u);  // the worlds are crowded enough to mean something
+}
+
+TEST_P(BoxGridProperty, QueriesEqualBruteForce) {
+    const unsigned seed = GetParam();
+    const std::vector<Bounds> boxes = randomBoxes(seed, 400, 30000.0f, {0, 0});
+    BoxGrid grid;
+    grid.build(boxes);
+    const std::vector<Bounds> queries = randomBoxes(seed + 1000, 50, 30000.0f, {0, 0});
+    for (const Bounds& q : queries) {
+        std::vector<std::uint32_t> found;
+        grid.query(q, [&](std::uint32_t i) { found.push_back(i); });
+        std::vector<std::uint32_t> expected;
+        for (std::uint32_t i = 0; i < boxes.size(); ++i)
+            if (touches(boxes[i], q))
+                expected.push_back(i);
+        std::sort(found.begin(), found.end());
+        EXPECT_EQ(found, expected);
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(RandomWorlds, BoxGridProperty, ::testing::Range(1u, 13u));
+
+TEST(BoxGrid, SameInputSameOrder) {
+    const std::vector<Bounds> boxes = randomBoxes(7, 500, 20000.0f, {0, 0});
+    auto run = [&] {
+        BoxGrid grid;
+        grid.build(boxes);
+        std::vector<Pair> calls;
+        grid.forEachPair([&](std::uint32_t i, std::uint32_t j) { calls.push_back({i, j}); });
+        return calls;
+    };
+    EXPECT_EQ(run(), run());
+}
+
+TEST(BoxGrid, HugeAndTinyAndFarAway) {
+    const std::vector<Bounds> boxes = {
+        {{-1e7f, -10}, {1e7f, 10}},           // a floor 20 million units long
+        {{5e6f, 10}, {5e6f + 1, 11}},         // a small box resting on it, far out
+        {{1e30f, 1e30f}, {1.1e30f, 1.1e30f}}, // out at the edge of floats
+        {{1.05e30f, 1.05e30f}, {1.2e30f, 1.2e30f}},
+        {{-3, -3}, {-2.999f, -2.999f}}, // a speck inside the floor
+    };
+    BoxGrid grid;
+    grid.build(boxes);
+    std::set<Pair> found;
+    grid.forEachPair([&](std::uint32_t i, std::uint32_t j) {
+        found.insert({std::min(i, j), std::max(i, j)});
+    });
+    EXPECT_EQ(found, bruteForcePairs(boxes));
+    EXPECT_EQ(found, (std::set<Pair>{{0, 1}, {0, 4}, {2, 3}}));
+}
+
+TEST(BoxGrid, Empty) {
+    BoxGrid grid;
+    grid.build({});
+    int calls = 0;
+    grid.forEachPair([&](std::uint32_t, std::uint32_t) { ++calls; });
+    grid.query({{0, 0}, {1, 1}}, [&](std::uint32_t) { ++calls; });
+    EXPECT_EQ(calls, 0);
+}
+
+} // namespace
+} // namespace jostle

@@ -1,0 +1,143 @@
+// Sleeping: bodies at rest fall asleep together and wake when something concerns them.
+#include "jostle/world.hpp"
+
+#include <gtest/gtest.h>
+
+#include <vector>
+
+namespace jostle {
+namespace {
+
+constexpr float kDt = 1.0f / 60.0f;
+
+struct Level {
+    World world{WorldDef{.gravity = {0, 800}}};
+    BodyId floor =
+        world.createBody({.type = BodyType::Static, .x = 0, .y = 50, .hw = 1000, .hh = 50});
+
+    void run(float seconds) {
+        for (int i = 0; i < int(seconds * 60); ++i)
+            world.step(kDt);
+    }
+};
+
+TEST(Sleeping, ABoxAtRestFallsAsleepAndStaysPut) {
+    Level level;
+    BodyId box = level.world.createBody({.x = 0, .y = -5, .hw = 5, .hh = 5});
+    level.run(0.25f);
+    EXPECT_TRUE(level.world.isAwake(box)); // not yet: half a second of rest is needed
+    level.run(1);
+    EXPECT_FALSE(level.world.isAwake(box));
+    const Vec2 p = level.world.position(box);
+    level.run(10);
+    EXPECT_EQ(level.world.position(box), p);
+    EXPECT_EQ(level.world.velocity(box), (Vec2{0, 0}));
+}
+
+TEST(Sleeping, AStackFallsAsleepTogether) {
+    Level level;
+    std::vector<BodyId> stack;
+    for (int i = 0; i < 5; ++i)
+        stack.push_back(
+            level.world.createBody({.x = 0, .y = -5.0f - 10.0f * float(i), .hw = 5, .hh = 5}));
+    BodyId falling = level.world.createBody({.x = 0, .y = -300, .hw = 5, .hh = 5});
+    // The stack is at rest at once, but the falling box lands on it only after 0.8 s.
+    for (int i = 0; i < 60 * 3; ++i) {
+        level.world.step(kDt);
+        const bool bottom = level.world.isAwake(stack.front());
+        for (BodyId id : stack)
+            ASSERT_EQ(level.world.isAwake(id), bottom) << "step " << i;
+    }
+    EXPECT_FALSE(level.world.isAwake(stack.front()));
+    EXPECT_FALSE(level.world.isAwake(falling));
+    EXPECT_NEAR(level.world.position(falling).y, -55.0f, 0.3f);
+}
+
+TEST(Sleeping, AnAwakeBodyLandingOnASleeperWakesIt) {
+    Level level;
+    BodyId sleeper = level.world.createBody({.x = 0, .y = -5, .hw = 5, .hh = 5});
+    level.run(1);
+    ASSERT_FALSE(level.world.isAwake(sleeper));
+    BodyId dropped = level.world.createBody({.x = 3, .y = -100, .hw = 5, .hh = 5});
+    bool woke = false;
+    for (int i = 0; i < 60; ++i) {
+        level.world.step(kDt);
+        woke = woke || level.world.isAwake(sleeper);
+    }
+    EXPECT_TRUE(woke);
+    // It landed on the sleeper instead of passing through it.
+    EXPECT_NEAR(level.world.position(dropped).y, -15.0f, 0.2f);
+}
+
+TEST(Sleeping, ASetterWakesTheBody) {
+    Level level;
+    BodyId box = level.world.createBody({.x = 0, .y = -5, .hw = 5, .hh = 5});
+    level.run(1);
+    ASSERT_FALSE(level.world.isAwake(box));
+    level.world.setVelocity(box, {60, 0});
+    EXPECT_TRUE(level.world.isAwake(box));
+    level.world.step(kDt);
+    EXPECT_GT(level.world.position(box).x, 0.0f);
+}
+
+TEST(Sleeping, DestroyingWhatItRestsOnWakesIt) {
+    Level level;
+    BodyId box = level.world.createBody({.x = 0, .y = -5, .hw = 5, .hh = 5});
+    level.run(1);
+    ASSERT_FALSE(level.world.isAwake(box));
+    level.world.destroyBody(level.floor);
+    EXPECT_TRUE(level.world.isAwake(box));
+    level.run(0.5f);
+    EXPECT_GT(level.world.position(box).y, 50.0f); // fell
+}
+
+TEST(Sleeping, APlatformThatStartsMovingWakesItsRider) {
+    World world{WorldDef{.gravity = {0, 800}}};
+    BodyId lift =
+        world.createBody({.type = BodyType::Kinematic, .x = 0, .y = 5, .hw = 50, .hh = 5});
+    BodyId rider = world.createBody({.x = 0, .y = -5, .hw = 5, .hh = 5});
+    for (int i = 0; i < 60; ++i)
+        world.step(kDt);
+    ASSERT_FALSE(world.isAwake(rider));
+    world.setVelocity(lift, {0, -60});
+    EXPECT_TRUE(world.isAwake(rider));
+    for (int i = 0; i < 60; ++i)
+        world.step(kDt);
+    // Carried up by 60 with the lift, still on it, and never asleep meanwhile.
+    EXPECT_NEAR(world.position(rider).y, -65.0f, 0.1f);
+    EXPECT_TRUE(world.isAwake(rider));
+}
+
+TEST(Sleeping, ABodyMovedByTheUserWakesWhatRestedOnIt) {
+    Level level;
+    BodyId shelf =
+        level.world.createBody({.type = BodyType::Static, .x = 0, .y = -200, .hw = 20, .hh = 5});
+    BodyId box = level.world.createBody({.x = 0, .y = -210, .hw = 5, .hh = 5});
+    level.run(1);
+    ASSERT_FALSE(level.world.isAwake(box));
+    level.world.setPosition(shelf, {500, -200});
+    EXPECT_TRUE(level.world.isAwake(box));
+    level.run(1);
+    EXPECT_NEAR(level.world.position(box).y, -5.0f, 0.1f); // fell to the floor
+}
+
+TEST(Sleeping, CanBeTurnedOff) {
+    World world{WorldDef{.gravity = {0, 800}, .sleeping = false}};
+    world.createBody({.type = BodyType::Static, .x = 0, .y = 50, .hw = 1000, .hh = 50});
+    BodyId box = world.createBody({.x = 0, .y = -5, .hw = 5, .hh = 5});
+    for (int i = 0; i < 600; ++i)
+        world.step(kDt);
+    EXPECT_TRUE(world.isAwake(box));
+
+    World sleepy{WorldDef{.gravity = {0, 800}}};
+    sleepy.createBody({.type = BodyType::Static, .x = 0, .y = 50, .hw = 1000, .hh = 50});
+    BodyId other = sleepy.createBody({.x = 0, .y = -5, .hw = 5, .hh = 5});
+    for (int i = 0; i < 120; ++i)
+        sleepy.step(kDt);
+    ASSERT_FALSE(sleepy.isAwake(other));
+    sleepy.setSleeping(false);
+    EXPECT_TRUE(sleepy.isAwake(other));
+}
+
+} // namespace
+} // namespace jostle
