@@ -57,6 +57,7 @@ void WorldState::wakeTouching(const Bounds& bounds) {
 }
 
 void WorldState::disturb(std::uint32_t slot) {
+    ++changes;
     Body& body = slots[slot];
     body.sleepTime = 0.0f;
     wakeIsland(slot);

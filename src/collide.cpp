@@ -30,6 +30,43 @@ std::optional<Vec2> shortestSeparation(const Box& a, const Box& b) {
     return Vec2{sx, sy};
 }
 
+std::optional<Hit> sweepBox(const Box& a, Vec2 motion, const Box& b, Vec2 skin) {
+    // a's centre moving along `motion` against b grown by a's half extents (Minkowski
+    // sum), shrunk by the skin: a ray against a box, one slab per axis.
+    const Vec2 reach{b.half.x + a.half.x - skin.x, b.half.y + a.half.y - skin.y};
+    if (reach.x <= 0.0f || reach.y <= 0.0f)
+        return std::nullopt;
+    const float start[2] = {a.centre.x - b.centre.x, a.centre.y - b.centre.y};
+    const float move[2] = {motion.x, motion.y};
+    const float half[2] = {reach.x, reach.y};
+    float enter = -INFINITY, leave = INFINITY;
+    int enterAxis = -1;
+    for (int axis = 0; axis < 2; ++axis) {
+        if (move[axis] == 0.0f) {
+            if (start[axis] <= -half[axis] || start[axis] >= half[axis])
+                return std::nullopt; // never inside this slab
+            continue;
+        }
+        float t0 = (-half[axis] - start[axis]) / move[axis];
+        float t1 = (half[axis] - start[axis]) / move[axis];
+        if (t0 > t1)
+            std::swap(t0, t1);
+        if (t0 > enter) {
+            enter = t0;
+            enterAxis = axis;
+        }
+        leave = std::min(leave, t1);
+    }
+    if (enterAxis < 0 || enter < 0.0f || enter > 1.0f || enter >= leave)
+        return std::nullopt;
+    Vec2 normal{0.0f, 0.0f};
+    if (enterAxis == 0)
+        normal.x = move[0] > 0.0f ? -1.0f : 1.0f;
+    else
+        normal.y = move[1] > 0.0f ? -1.0f : 1.0f;
+    return Hit{enter, normal};
+}
+
 Axis contactAxis(float gapX, float gapY, float skinX, float skinY) {
     const bool overlapX = gapX < -skinX;
     const bool overlapY = gapY < -skinY;

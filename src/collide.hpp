@@ -20,6 +20,19 @@ struct Box {
 /// push `a` towards +x or +y.
 std::optional<Vec2> shortestSeparation(const Box& a, const Box& b);
 
+/// Where a moving box first touches another.
+struct Hit {
+    float time;  ///< fraction of the motion, in [0, 1]
+    Vec2 normal; ///< unit, along x or y, pointing from `b` towards the moving box
+};
+
+/// Sweeps box `a` along `motion` against the still box `b`: the first time it enters
+/// `b`, if it does within the motion. An overlap within `skin` (per axis) at the start
+/// is touching, not entering: a box sliding along a floor does not hit the floor, nor
+/// the next floor box at their seam. A box that already overlaps `b` deeper than that on
+/// both axes is not hit either: it is inside, and the solver's contacts push it out.
+std::optional<Hit> sweepBox(const Box& a, Vec2 motion, const Box& b, Vec2 skin);
+
 /// The axis of a contact normal.
 enum class Axis { X, Y };
 

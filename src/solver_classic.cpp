@@ -56,6 +56,7 @@ public:
     ClassicStep(WorldState& world, float dt) : w_(world), dt_(dt) {}
 
     void run() {
+        w_.refreshRanks();
         // The tutorial keeps two lists, statics and dynamics, in creation order. Kinematic
         // bodies go with the statics: the dynamic bodies collide with them the same way.
         for (BodyId id : w_.order) {
@@ -72,6 +73,7 @@ public:
             if (k.type == BodyType::Kinematic)
                 k.position += k.velocity * dt_;
         }
+        buildGrids();
 
         // move dynamic objects, then check and resolve their collisions
         for (std::size_t i = 0; i < dynamics_.size(); ++i) {
@@ -79,26 +81,180 @@ public:
             if (!w_.isLive(a))
                 continue; // destroyed by a callback earlier in this step
             Body& d = w_.slots[a];
-            d.position += d.velocity * dt_;
-            if (resolveAgainst(a, statics_.begin(), statics_.end()) == Outcome::Destroyed)
+            if (w_.def.classic.ccd && sweepMove(a) == Outcome::Destroyed)
                 continue;
-            resolveAgainst(a, dynamics_.begin() + static_cast<std::ptrdiff_t>(i) + 1,
-                           dynamics_.end());
+            if (!w_.def.classic.ccd)
+                d.position += d.velocity * dt_;
+            if (resolveAgainstStatics(a) == Outcome::Destroyed)
+                continue;
+            resolveAgainstLaterDynamics(a, i);
         }
     }
 
 private:
-    using Iterator = std::vector<std::uint32_t>::const_iterator;
+    // --- Pruning -------------------------------------------------------------------------
+    //
+    // The tutorial resolves a body against every static body, then every later dynamic
+    // body, in creation order. Pairs whose boxes do not even touch do nothing there, so
+    // the broadphase leaves them out, and the rest are visited in the same order: the
+    // results are the tutorial's, bit for bit. The only subtlety is that the body moves
+    // while it is resolved: candidates are gathered for a region around it, and gathered
+    // again (for the bodies not yet visited) whenever it leaves that region.
 
-    Outcome resolveAgainst(std::uint32_t a, Iterator first, Iterator last) {
-        for (; first != last; ++first) {
-            if (checkCollision(a, *first) == Outcome::Destroyed)
-                return Outcome::Destroyed;
+    void buildGrids() {
+        // Static bodies have their own grid in the world, rebuilt only when they change.
+        w_.refreshRestingGrid();
+        // Kinematic bodies where they are now; dynamic bodies where they start the step,
+        // which is where the later ones still are when an earlier one meets them.
+        std::vector<Bounds> kinematic, dynamic;
+        kinematicSlots_.clear();
+        for (std::uint32_t s : statics_) {
+            if (w_.slots[s].type == BodyType::Kinematic) {
+                kinematicSlots_.push_back(s);
+                kinematic.push_back(w_.slots[s].bounds());
+            }
         }
-        return Outcome::Kept;
+        kinematicGrid_.build(kinematic);
+        dynamicIndex_.assign(w_.slots.size(), 0);
+        for (std::uint32_t i = 0; i < dynamics_.size(); ++i) {
+            dynamicIndex_[dynamics_[i]] = i;
+            dynamic.push_back(w_.slots[dynamics_[i]].bounds());
+        }
+        w_.movingGrid.build(dynamic);
+        w_.movingSlots = dynamics_;
+        builtAt_ = w_.changes;
     }
 
-    // checkCollision and solveCollision of the tutorial.
+    /// A callback changed bodies (moved one, say): the grids are rebuilt from where the
+    /// bodies are now.
+    void refreshGrids() {
+        if (builtAt_ != w_.changes)
+            buildGrids();
+    }
+
+    /// The region in which a body's candidates are gathered: its box and half its size
+    /// again around it, room for the small pushes of most collisions.
+    static Bounds regionAround(const Body& body) {
+        return {body.position - body.half * 2.0f, body.position + body.half * 2.0f};
+    }
+
+    static bool contains(const Bounds& outer, const Bounds& inner) {
+        return outer.min.x <= inner.min.x && outer.min.y <= inner.min.y &&
+               inner.max.x <= outer.max.x && inner.max.y <= outer.max.y;
+    }
+
+    /// Static and kinematic bodies touching `region`, ranked after `after`, by rank.
+    void gatherStatics(const Bounds& region, std::int64_t after) {
+        candidates_.clear();
+        w_.restingGrid.query(region, [&](std::uint32_t k) {
+            const std::uint32_t s = w_.restingSlots[k];
+            if (w_.slots[s].type == BodyType::Static && std::int64_t(w_.rank[s]) > after)
+                candidates_.push_back(s);
+        });
+        kinematicGrid_.query(region, [&](std::uint32_t k) {
+            const std::uint32_t s = kinematicSlots_[k];
+            if (std::int64_t(w_.rank[s]) > after)
+                candidates_.push_back(s);
+        });
+        std::sort(candidates_.begin(), candidates_.end(),
+                  [&](std::uint32_t p, std::uint32_t q) { return w_.rank[p] < w_.rank[q]; });
+    }
+
+    /// Dynamic bodies touching `region` that come after position `after` in dynamics_.
+    void gatherDynamics(const Bounds& region, std::size_t after) {
+        candidates_.clear();
+        w_.movingGrid.query(region, [&](std::uint32_t k) {
+            if (k > after)
+                candidates_.push_back(dynamics_[k]);
+        });
+        std::sort(candidates_.begin(), candidates_.end(), [&](std::uint32_t p, std::uint32_t q) {
+            return dynamicIndex_[p] < dynamicIndex_[q];
+        });
+    }
+
+    Outcome resolveAgainstStatics(std::uint32_t a) {
+        std::int64_t after = -1;
+        for (;;) {
+            refreshGrids();
+            const Bounds region = regionAround(w_.slots[a]);
+            gatherStatics(region, after);
+            const std::vector<std::uint32_t> batch = candidates_;
+            bool left = false;
+            for (std::uint32_t s : batch) {
+                after = w_.rank[s];
+                if (checkCollision(a, s) == Outcome::Destroyed)
+                    return Outcome::Destroyed;
+                if (!contains(region, w_.slots[a].bounds())) {
+                    left = true;
+                    break;
+                }
+            }
+            if (!left)
+                return Outcome::Kept;
+        }
+    }
+
+    Outcome resolveAgainstLaterDynamics(std::uint32_t a, std::size_t index) {
+        std::size_t after = index;
+        for (;;) {
+            refreshGrids();
+            const Bounds region = regionAround(w_.slots[a]);
+            gatherDynamics(region, after);
+            const std::vector<std::uint32_t> batch = candidates_;
+            bool left = false;
+            for (std::uint32_t b : batch) {
+                after = dynamicIndex_[b];
+                if (checkCollision(a, b) == Outcome::Destroyed)
+                    return Outcome::Destroyed;
+                if (!contains(region, w_.slots[a].bounds())) {
+                    left = true;
+                    break;
+                }
+            }
+            if (!left)
+                return Outcome::Kept;
+        }
+    }
+
+    // --- Continuous collision (the ccd option) -------------------------------------------
+
+    /// Moves the body by v*dt, but stops it at the first static or kinematic body in its
+    /// way and responds there as solveCollision would, with that face's normal.
+    Outcome sweepMove(std::uint32_t a) {
+        refreshGrids();
+        Body& body = w_.slots[a];
+        const Vec2 motion = body.velocity * dt_;
+        const Bounds swept{{std::min(body.position.x, body.position.x + motion.x) - body.half.x,
+                            std::min(body.position.y, body.position.y + motion.y) - body.half.y},
+                           {std::max(body.position.x, body.position.x + motion.x) + body.half.x,
+                            std::max(body.position.y, body.position.y + motion.y) + body.half.y}};
+        gatherStatics(swept, -1);
+        std::optional<Hit> first;
+        std::uint32_t hitSlot = 0;
+        for (std::uint32_t s : candidates_) {
+            const std::optional<Hit> hit = sweepBox(body.box(), motion, w_.slots[s].box(), {});
+            if (hit && (!first || hit->time < first->time)) {
+                first = hit;
+                hitSlot = s;
+            }
+        }
+        if (!first) {
+            body.position += motion;
+            return Outcome::Kept;
+        }
+        body.position += motion * first->time;
+        const Vec2 va = body.velocity;
+        const Vec2 vb = w_.slots[hitSlot].velocity;
+        const float vx = va.x - vb.x;
+        const float vy = va.y - vb.y;
+        const float ps = vx * first->normal.x + vy * first->normal.y;
+        if (ps > 0.0f)
+            return Outcome::Kept;
+        return respond(a, hitSlot, first->normal.x, first->normal.y, vx, vy, ps, 0.0f);
+    }
+
+    // --- The tutorial's checkCollision and solveCollision ---------------------------------
+
     Outcome checkCollision(std::uint32_t ia, std::uint32_t ib) {
         if (!w_.isLive(ib))
             return Outcome::Kept;
@@ -122,11 +278,17 @@ private:
         const float ps = vx * nx + vy * ny;
         if (ps > 0.0f)
             return Outcome::Kept;
+        return respond(ia, ib, nx, ny, vx, vy, ps, d);
+    }
 
+    /// solveCollision from "objects moving towards each other" on: the pre-solve
+    /// callback, separation by (nx, ny) × depth, and the velocity response.
+    Outcome respond(std::uint32_t ia, std::uint32_t ib, float nx, float ny, float vx, float vy,
+                    float ps, float depth) {
         float bounce = std::max(w_.slots[ia].bounce, w_.slots[ib].bounce);
         float friction = std::min(w_.slots[ia].friction, w_.slots[ib].friction);
         if (w_.preSolve) {
-            Collision c{w_.idOf(ia), w_.idOf(ib), {nx, ny}, d, bounce, friction};
+            Collision c{w_.idOf(ia), w_.idOf(ib), {nx, ny}, depth, bounce, friction};
             const bool keep = w_.preSolve(c);
             // The callback may have destroyed either body or created others (which may
             // have moved the slots in memory: nothing is held across this call).
@@ -143,10 +305,14 @@ private:
 
         Body& ba = w_.slots[ia];
         Body& bb = w_.slots[ib];
-        // separate the two objects: moveShape(a, sx, sy)
-        ba.position.x = ba.position.x + sx;
-        ba.position.y = ba.position.y + sy;
-        ba.separation += Vec2{sx, sy};
+        // separate the two objects: moveShape(a, sx, sy), with (sx, sy) = n * depth
+        if (depth > 0.0f) {
+            const float sx = nx * depth;
+            const float sy = ny * depth;
+            ba.position.x = ba.position.x + sx;
+            ba.position.y = ba.position.y + sy;
+            ba.separation += Vec2{sx, sy};
+        }
 
         // penetration component
         const float px = nx * ps;
@@ -185,6 +351,11 @@ private:
     float dt_;
     std::vector<std::uint32_t> dynamics_;
     std::vector<std::uint32_t> statics_;
+    std::vector<std::uint32_t> dynamicIndex_; ///< by slot: place in dynamics_
+    BoxGrid kinematicGrid_;
+    std::vector<std::uint32_t> kinematicSlots_;
+    std::vector<std::uint32_t> candidates_;
+    std::uint64_t builtAt_ = 0;
 };
 
 } // namespace

@@ -19,6 +19,7 @@
 // Boxes do not rotate, so a contact is one normal along x or y and one tangent: the
 // effective mass of a contact is 1 / (invMassA + invMassB) and nothing else.
 // docs/physical-model.md explains the choices.
+#include "collide.hpp"
 #include "world_state.hpp"
 
 #include <algorithm>
@@ -78,6 +79,7 @@ public:
         for (int i = 0; i < options_.velocityIterations; ++i)
             solveVelocities();
         propagateShock();
+        sweepFastBodies();
         integratePositions();
         for (int i = 0; i < options_.positionIterations; ++i)
             correctPositions();
@@ -125,8 +127,8 @@ private:
             // Overlap within twice the slop is resting contact, not penetration.
             const float slopX = options_.slop * std::min(a.half.x, b.half.x);
             const float slopY = options_.slop * std::min(a.half.y, b.half.y);
-            const float skinX = std::max(2.0f * slopX, kMinimumSkin * std::min(a.half.x, b.half.x));
-            const float skinY = std::max(2.0f * slopY, kMinimumSkin * std::min(a.half.y, b.half.y));
+            const float skinX = skinOf(a.half.x, b.half.x);
+            const float skinY = skinOf(a.half.y, b.half.y);
             const bool alongX = contactAxis(gapX, gapY, skinX, skinY) == Axis::X;
             const float gap = alongX ? gapX : gapY;
             const Vec2 normal = alongX ? Vec2{d.x < 0.0f ? -1.0f : 1.0f, 0.0f}
@@ -287,6 +289,69 @@ private:
         }
     }
 
+    /// Continuous collision: a body that moves more than its own half size in this step
+    /// is swept along its motion against static and kinematic bodies (and, if it is a
+    /// bullet, dynamic ones), and stopped where it first meets one, its velocity into
+    /// that body removed. Contacts already stop what they foresee; this catches the rest,
+    /// so nothing passes through a wall however fast it goes.
+    void sweepFastBodies() {
+        for (std::uint32_t slot : w_.movingSlots) {
+            Body& body = w_.slots[slot];
+            if (!body.isDynamic() || !w_.isLive(slot))
+                continue;
+            const Vec2 motion = body.velocity * dt_;
+            const float size = std::min(body.half.x, body.half.y);
+            if (std::abs(motion.x) <= size && std::abs(motion.y) <= size)
+                continue;
+            sweep(slot, motion);
+        }
+    }
+
+    void sweep(std::uint32_t slot, Vec2 motion) {
+        Body& body = w_.slots[slot];
+        const Bounds swept{{std::min(body.position.x, body.position.x + motion.x) - body.half.x,
+                            std::min(body.position.y, body.position.y + motion.y) - body.half.y},
+                           {std::max(body.position.x, body.position.x + motion.x) + body.half.x,
+                            std::max(body.position.y, body.position.y + motion.y) + body.half.y}};
+        std::optional<Hit> first;
+        std::uint32_t firstSlot = 0;
+        auto consider = [&](std::uint32_t other) {
+            const Body& obstacle = w_.slots[other];
+            if (other == slot || !w_.isLive(other))
+                return;
+            if (obstacle.isDynamic() && !body.bullet)
+                return;
+            const Vec2 relative = motion - obstacle.velocity * dt_;
+            const Vec2 skin{skinOf(body.half.x, obstacle.half.x),
+                            skinOf(body.half.y, obstacle.half.y)};
+            const std::optional<Hit> hit = sweepBox(body.box(), relative, obstacle.box(), skin);
+            if (hit && (!first || hit->time < first->time)) {
+                first = hit;
+                firstSlot = other;
+            }
+        };
+        w_.restingGrid.query(swept, [&](std::uint32_t i) {
+            if (w_.slots[w_.restingSlots[i]].type == BodyType::Static)
+                consider(w_.restingSlots[i]);
+        });
+        w_.movingGrid.query(swept, [&](std::uint32_t i) { consider(w_.movingSlots[i]); });
+        if (!first)
+            return;
+        // Stop at the first hit: move there now, and take away the part of the velocity
+        // that goes into the obstacle, so that the step's own motion starts from there.
+        const Body& obstacle = w_.slots[firstSlot];
+        const Vec2 relative = motion - obstacle.velocity * dt_;
+        body.position += relative * first->time;
+        const float into = dot(body.velocity - obstacle.velocity, first->normal);
+        if (into < 0.0f)
+            body.velocity -= first->normal * into;
+    }
+
+    float skinOf(float halfA, float halfB) const {
+        const float smaller = std::min(halfA, halfB);
+        return std::max(2.0f * options_.slop * smaller, kMinimumSkin * smaller);
+    }
+
     void integratePositions() {
         // The bodies that were moving when the step began (a callback may have created
         // others since: they join next step).
@@ -302,6 +367,10 @@ private:
             Body& a = w_.slots[c.a];
             Body& b = w_.slots[c.b];
             const float overlap = c.extent - dot(a.position - b.position, c.normal);
+            // Centres that have passed each other along the normal (a kinematic body that
+            // went on through what it pushed): pushing "out" would push through.
+            if (overlap > c.extent)
+                continue;
             const float largest = 0.25f * (c.extent - c.slop);
             const float correction =
                 std::clamp(options_.correction * (overlap - c.slop), 0.0f, largest);

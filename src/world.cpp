@@ -380,6 +380,7 @@ void World::setSolver(Solver solver) {
         fail("setSolver", "solver must be classic or physical");
     state_->def.solver = solver;
     state_->contactCache.clear();
+    wakeAll(*state_); // the classic model has no sleep
 }
 
 bool World::sleeping() const {

@@ -101,6 +101,10 @@ struct WorldState {
     BoxGrid movingGrid;
     std::vector<std::uint32_t> movingSlots;
 
+    /// Counts changes made to bodies through the API (see disturb), so that a step can
+    /// tell that a callback moved something under its feet.
+    std::uint64_t changes = 0;
+
     /// Sleeping islands: the bodies that fell asleep together and wake together.
     std::vector<std::vector<std::uint32_t>> islands;
     std::vector<std::uint32_t> freeIslands;
