@@ -20,7 +20,8 @@ void WorldState::refreshRestingGrid() {
         return;
     restingDirty = false;
     restingSlots.clear();
-    std::vector<Bounds> bounds;
+    std::vector<Bounds>& bounds = boundsScratch;
+    bounds.clear();
     for (BodyId id : order) {
         const Body& body = slots[id.index];
         if (isResting(body)) {
@@ -113,6 +114,7 @@ public:
 private:
     void buildMovingGrid() {
         w_.movingSlots.clear();
+        std::vector<Bounds>& bounds_ = w_.boundsScratch;
         bounds_.clear();
         for (BodyId id : w_.order) {
             const Body& body = w_.slots[id.index];
@@ -133,7 +135,6 @@ private:
     WorldState& w_;
     float dt_;
     std::vector<BodyPair>& pairs_;
-    std::vector<Bounds> bounds_;
 };
 
 } // namespace

@@ -30,33 +30,8 @@ namespace jostle {
 
 namespace {
 
-struct Contact {
-    std::uint32_t a, b; ///< slots
-    Vec2 normal;        ///< unit, along x or y, pointing from b towards a
-    float extent;       ///< sum of the half extents along the normal
-    float slop;         ///< overlap left alone
-    float friction;
-    float invMassA, invMassB;
-    float effectiveMass; ///< 1 / (invMassA + invMassB)
-    /// The relative normal velocity must end >= this: 0 to stop, -gap/dt to let a
-    /// speculative contact close its gap, -bounce × approach speed to bounce.
-    float targetSpeed;
-    float normalImpulse = 0.0f;
-    float tangentImpulse = 0.0f;
-    float bounceSpeed = 0.0f; ///< to remember: bounce at this speed next step
-    /// Which body is held fixed across support levels: 0 none, 1 a, 2 b.
-    int supporter = 0;
-    std::uint32_t level = 0;  ///< the lower support level of the two
-    float correctionA = 0.0f; ///< distance moved out by position correction, for separation()
-    float correctionB = 0.0f;
-};
-
 /// Touching tolerance when the slop is 0, as a fraction of the half extent: float noise.
 constexpr float kMinimumSkin = 1e-4f;
-
-Vec2 tangentOf(Vec2 normal) {
-    return {-normal.y, normal.x};
-}
 
 float combineFriction(FrictionMix mix, float a, float b) {
     return mix == FrictionMix::GeometricMean ? std::sqrt(a * b) : std::min(a, b);
@@ -73,16 +48,27 @@ public:
                 integrateVelocity(w_.def, body, dt_);
         }
         findPairs(w_, dt_, pairs_);
+        solverIndex_.assign(w_.slots.size(), kNoSolverBody);
+        bodies_.clear();
         buildContacts();
         orderBySupport();
         warmStart();
         for (int i = 0; i < options_.velocityIterations; ++i)
             solveVelocities();
         propagateShock();
+        for (const SolverBody& body : bodies_)
+            w_.slots[body.slot].velocity = {body.velocity[0], body.velocity[1]};
         sweepFastBodies();
         integratePositions();
+        for (SolverBody& body : bodies_) {
+            body.position[0] = w_.slots[body.slot].position.x;
+            body.position[1] = w_.slots[body.slot].position.y;
+        }
         for (int i = 0; i < options_.positionIterations; ++i)
             correctPositions();
+        for (const SolverBody& body : bodies_)
+            if (body.invMass > 0.0f)
+                w_.slots[body.slot].position = {body.position[0], body.position[1]};
         remember();
         if (w_.def.sleeping)
             fallAsleep();
@@ -110,6 +96,19 @@ private:
         const float meetAfter =
             gap > 0.0f && approach < 0.0f ? std::min(dt_, gap / -approach) : 0.0f;
         return before + gravityAlong * meetAfter;
+    }
+
+    std::uint32_t solverBodyOf(std::uint32_t slot) {
+        std::uint32_t& index = solverIndex_[slot];
+        if (index == kNoSolverBody) {
+            const Body& body = w_.slots[slot];
+            index = std::uint32_t(bodies_.size());
+            bodies_.push_back({{body.velocity.x, body.velocity.y},
+                               {body.position.x, body.position.y},
+                               body.invMass,
+                               slot});
+        }
+        return index;
     }
 
     void buildContacts() {
@@ -142,6 +141,9 @@ private:
             c.a = pair.a;
             c.b = pair.b;
             c.normal = normal;
+            c.axis = alongX ? 0 : 1;
+            c.sign = alongX ? normal.x : normal.y;
+            c.tangentSign = alongX ? normal.x : -normal.y;
             c.extent = alongX ? a.half.x + b.half.x : a.half.y + b.half.y;
             c.slop = alongX ? slopX : slopY;
             c.friction = combineFriction(options_.frictionMix, a.friction, b.friction);
@@ -162,6 +164,8 @@ private:
             const Body& bb = w_.slots[pair.b];
             c.invMassA = ba.invMass;
             c.invMassB = bb.invMass;
+            c.ia = solverBodyOf(pair.a);
+            c.ib = solverBodyOf(pair.b);
             const float invMassSum = c.invMassA + c.invMassB;
             if (invMassSum <= 0.0f)
                 continue; // the callback made both infinitely heavy
@@ -169,10 +173,10 @@ private:
 
             // Warm start from last step's impulses if this is the same contact.
             const CachedContact* cached = nullptr;
-            if (auto found = w_.contactCache.find(pairKey(pair.a, pair.b));
-                found != w_.contactCache.end() && found->second.generationA == ba.generation &&
-                found->second.generationB == bb.generation && found->second.normal == normal) {
-                cached = &found->second;
+            if (const CachedContact* found = w_.contactCache.find(pair.a, pair.b);
+                found && found->generationA == ba.generation &&
+                found->generationB == bb.generation && found->normal == normal) {
+                cached = found;
                 c.normalImpulse = cached->normalImpulse;
                 c.tangentImpulse = cached->tangentImpulse;
             }
@@ -197,73 +201,101 @@ private:
         }
     }
 
-    /// Support levels (see the top of the file), then contacts sorted from the ground up,
-    /// ties in pair order.
+    /// Support levels (see the top of the file), by a breadth-first search from the
+    /// static and kinematic bodies over the contact graph; then contacts are sorted from
+    /// the ground up, ties in pair order.
     void orderBySupport() {
         constexpr std::uint32_t unsupported = UINT32_MAX;
-        levels_.assign(w_.slots.size(), unsupported);
-        for (BodyId id : w_.order)
-            if (!w_.slots[id.index].isDynamic())
-                levels_[id.index] = 0;
-        // Relax until nothing changes: a breadth-first search over the contact list, which
-        // is short and already in a fixed order.
-        for (bool changed = true; changed;) {
-            changed = false;
-            for (const Contact& c : contacts_) {
-                std::uint32_t& la = levels_[c.a];
-                std::uint32_t& lb = levels_[c.b];
-                if (lb != unsupported && la > lb + 1) {
-                    la = lb + 1;
-                    changed = true;
-                }
-                if (la != unsupported && lb > la + 1) {
-                    lb = la + 1;
-                    changed = true;
+        const std::size_t n = bodies_.size();
+        // The contact graph as adjacency lists (compressed: offsets, then neighbours).
+        offsets_.assign(n + 1, 0);
+        for (const Contact& c : contacts_) {
+            ++offsets_[c.ia + 1];
+            ++offsets_[c.ib + 1];
+        }
+        for (std::size_t i = 0; i < n; ++i)
+            offsets_[i + 1] += offsets_[i];
+        neighbours_.resize(offsets_[n]);
+        fill_.assign(offsets_.begin(), offsets_.end() - 1);
+        for (const Contact& c : contacts_) {
+            neighbours_[fill_[c.ia]++] = c.ib;
+            neighbours_[fill_[c.ib]++] = c.ia;
+        }
+        levels_.assign(n, unsupported);
+        queue_.clear();
+        for (std::uint32_t i = 0; i < n; ++i) {
+            if (bodies_[i].invMass == 0.0f) {
+                levels_[i] = 0;
+                queue_.push_back(i);
+            }
+        }
+        for (std::size_t head = 0; head < queue_.size(); ++head) {
+            const std::uint32_t body = queue_[head];
+            for (std::uint32_t k = offsets_[body]; k < offsets_[body + 1]; ++k) {
+                const std::uint32_t other = neighbours_[k];
+                if (levels_[other] == unsupported) {
+                    levels_[other] = levels_[body] + 1;
+                    queue_.push_back(other);
                 }
             }
         }
+        // A stable counting sort by level; unsupported contacts (floating piles) last.
+        std::uint32_t top = 0;
         for (Contact& c : contacts_) {
-            const std::uint32_t la = levels_[c.a];
-            const std::uint32_t lb = levels_[c.b];
+            const std::uint32_t la = levels_[c.ia];
+            const std::uint32_t lb = levels_[c.ib];
             c.level = std::min(la, lb);
             c.supporter = la < lb ? 1 : lb < la ? 2 : 0;
+            if (c.level != unsupported)
+                top = std::max(top, c.level + 1);
         }
-        std::stable_sort(contacts_.begin(), contacts_.end(),
-                         [](const Contact& p, const Contact& q) { return p.level < q.level; });
+        counts_.assign(std::size_t(top) + 2, 0);
+        auto bucket = [&](const Contact& c) { return c.level == unsupported ? top : c.level; };
+        for (const Contact& c : contacts_)
+            ++counts_[bucket(c) + 1];
+        for (std::size_t i = 0; i + 1 < counts_.size(); ++i)
+            counts_[i + 1] += counts_[i];
+        sorted_.resize(contacts_.size());
+        for (Contact& c : contacts_)
+            sorted_[counts_[bucket(c)]++] = c;
+        contacts_.swap(sorted_);
     }
 
-    void applyImpulse(const Contact& c, Vec2 impulse) {
-        Body& a = w_.slots[c.a];
-        Body& b = w_.slots[c.b];
-        a.velocity += impulse * c.invMassA;
-        b.velocity -= impulse * c.invMassB;
+    /// Applies `impulse` along the contact's normal (n = 0) or tangent (n = 1) axis.
+    void applyImpulse(const Contact& c, int axis, float impulse) {
+        bodies_[c.ia].velocity[axis] += impulse * c.invMassA;
+        bodies_[c.ib].velocity[axis] -= impulse * c.invMassB;
+    }
+
+    float relativeSpeed(const Contact& c, int axis) const {
+        return bodies_[c.ia].velocity[axis] - bodies_[c.ib].velocity[axis];
     }
 
     void warmStart() {
-        for (const Contact& c : contacts_)
-            applyImpulse(c, c.normal * c.normalImpulse + tangentOf(c.normal) * c.tangentImpulse);
+        for (const Contact& c : contacts_) {
+            applyImpulse(c, c.axis, c.sign * c.normalImpulse);
+            applyImpulse(c, 1 - c.axis, c.tangentSign * c.tangentImpulse);
+        }
     }
 
     void solveVelocities() {
         for (Contact& c : contacts_) {
-            const Vec2 tangent = tangentOf(c.normal);
             // Normal: push (never pull) until the pair stops approaching.
             {
-                const Vec2 relative = w_.slots[c.a].velocity - w_.slots[c.b].velocity;
-                const float speed = dot(relative, c.normal);
+                const float speed = c.sign * relativeSpeed(c, c.axis);
                 const float impulse = -c.effectiveMass * (speed - c.targetSpeed);
                 const float total = std::max(c.normalImpulse + impulse, 0.0f);
-                applyImpulse(c, c.normal * (total - c.normalImpulse));
+                applyImpulse(c, c.axis, c.sign * (total - c.normalImpulse));
                 c.normalImpulse = total;
             }
             // Friction: stop the sliding, within Coulomb's cone.
             {
-                const Vec2 relative = w_.slots[c.a].velocity - w_.slots[c.b].velocity;
-                const float speed = dot(relative, tangent);
+                const int tangent = 1 - c.axis;
+                const float speed = c.tangentSign * relativeSpeed(c, tangent);
                 const float impulse = -c.effectiveMass * speed;
                 const float limit = c.friction * c.normalImpulse;
                 const float total = std::clamp(c.tangentImpulse + impulse, -limit, limit);
-                applyImpulse(c, tangent * (total - c.tangentImpulse));
+                applyImpulse(c, tangent, c.tangentSign * (total - c.tangentImpulse));
                 c.tangentImpulse = total;
             }
         }
@@ -277,14 +309,13 @@ private:
             const float invMass = c.supporter == 1 ? c.invMassB : c.invMassA;
             if (invMass <= 0.0f)
                 continue;
-            const Vec2 relative = w_.slots[c.a].velocity - w_.slots[c.b].velocity;
-            const float speed = dot(relative, c.normal);
+            const float speed = c.sign * relativeSpeed(c, c.axis);
             const float total = std::max(c.normalImpulse - (speed - c.targetSpeed) / invMass, 0.0f);
-            const Vec2 impulse = c.normal * (total - c.normalImpulse);
+            const float impulse = c.sign * (total - c.normalImpulse);
             if (c.supporter == 1)
-                w_.slots[c.b].velocity -= impulse * c.invMassB;
+                bodies_[c.ib].velocity[c.axis] -= impulse * c.invMassB;
             else
-                w_.slots[c.a].velocity += impulse * c.invMassA;
+                bodies_[c.ia].velocity[c.axis] += impulse * c.invMassA;
             c.normalImpulse = total;
         }
     }
@@ -364,9 +395,9 @@ private:
 
     void correctPositions() {
         for (Contact& c : contacts_) {
-            Body& a = w_.slots[c.a];
-            Body& b = w_.slots[c.b];
-            const float overlap = c.extent - dot(a.position - b.position, c.normal);
+            SolverBody& a = bodies_[c.ia];
+            SolverBody& b = bodies_[c.ib];
+            const float overlap = c.extent - c.sign * (a.position[c.axis] - b.position[c.axis]);
             // Centres that have passed each other along the normal (a kinematic body that
             // went on through what it pushed): pushing "out" would push through.
             if (overlap > c.extent)
@@ -386,27 +417,28 @@ private:
                                                     : c.invMassB * c.effectiveMass;
             const float moveA = correction * shareA;
             const float moveB = correction * shareB;
-            a.position += c.normal * moveA;
-            b.position -= c.normal * moveB;
+            a.position[c.axis] += c.sign * moveA;
+            b.position[c.axis] -= c.sign * moveB;
             c.correctionA += moveA;
             c.correctionB += moveB;
         }
     }
 
     void remember() {
-        w_.contactCache.clear();
         for (const Contact& c : contacts_) {
             Body& a = w_.slots[c.a];
             Body& b = w_.slots[c.b];
             // A pending bounce is kept only if the contact did stop the pair.
             const float bounceSpeed = c.normalImpulse > 0.0f ? c.bounceSpeed : 0.0f;
-            w_.contactCache[pairKey(c.a, c.b)] = {a.generation,    b.generation,     c.normal,
-                                                  c.normalImpulse, c.tangentImpulse, bounceSpeed};
+            w_.contactCache.stage(c.a, c.b,
+                                  {a.generation, b.generation, c.normal, c.normalImpulse,
+                                   c.tangentImpulse, bounceSpeed});
             // How far the contact pushed each body out this step: its impulse's share
             // of the motion, and the position correction.
             a.separation += c.normal * (c.normalImpulse * c.invMassA * dt_ + c.correctionA);
             b.separation -= c.normal * (c.normalImpulse * c.invMassB * dt_ + c.correctionB);
         }
+        w_.contactCache.commit(w_.slots.size());
     }
 
     /// Islands of awake dynamic bodies joined by contacts fall asleep together once every
@@ -486,12 +518,21 @@ private:
     WorldState& w_;
     const PhysicalOptions options_; // a copy: a callback may change the world's
     float dt_;
-    std::vector<BodyPair> pairs_;
-    std::vector<Contact> contacts_;
-    std::vector<std::uint32_t> levels_; ///< support level by slot
-    std::vector<std::uint32_t> parent_; ///< union-find of islands, by slot
-    std::vector<float> islandTime_;
-    std::vector<std::uint32_t> islandOf_;
+    std::vector<BodyPair>& pairs_ = w_.pairs;
+    std::vector<Contact>& contacts_ = w_.physical.contacts;
+    static constexpr std::uint32_t kNoSolverBody = UINT32_MAX;
+    std::vector<SolverBody>& bodies_ = w_.physical.bodies;
+    std::vector<std::uint32_t>& solverIndex_ = w_.physical.solverIndex;
+    std::vector<std::uint32_t>& levels_ = w_.physical.levels;
+    std::vector<std::uint32_t>& offsets_ = w_.physical.offsets;
+    std::vector<std::uint32_t>& neighbours_ = w_.physical.neighbours;
+    std::vector<std::uint32_t>& fill_ = w_.physical.fill;
+    std::vector<std::uint32_t>& queue_ = w_.physical.queue;
+    std::vector<std::uint32_t>& counts_ = w_.physical.counts;
+    std::vector<Contact>& sorted_ = w_.physical.sorted;
+    std::vector<std::uint32_t>& parent_ = w_.physical.parent;
+    std::vector<float>& islandTime_ = w_.physical.islandTime;
+    std::vector<std::uint32_t>& islandOf_ = w_.physical.islandOf;
 };
 
 } // namespace

@@ -4,9 +4,9 @@
 #include "box_grid.hpp"
 #include "collide.hpp"
 #include "jostle/world.hpp"
+#include "physical_state.hpp"
 
 #include <cstdint>
-#include <unordered_map>
 #include <vector>
 
 namespace jostle {
@@ -50,24 +50,6 @@ struct BodyPair {
     std::uint32_t b;
 };
 
-/// What the physical model remembers of a contact from one step to the next, to start
-/// its solver from last step's impulses (warm starting).
-struct CachedContact {
-    std::uint32_t generationA = 0;
-    std::uint32_t generationB = 0;
-    Vec2 normal;
-    float normalImpulse = 0.0f;
-    float tangentImpulse = 0.0f;
-    /// A pair that met this step within a speculative gap bounces on the next step, from
-    /// the surface, at this relative speed (0: no bounce).
-    float bounceSpeed = 0.0f;
-};
-
-/// The key of a pair of slots in the contact cache.
-inline std::uint64_t pairKey(std::uint32_t a, std::uint32_t b) {
-    return (std::uint64_t{a} << 32) | b;
-}
-
 struct WorldState {
     WorldDef def;
     PreSolveFn preSolve;
@@ -86,7 +68,11 @@ struct WorldState {
 
     /// Last step's contacts of the physical model, by pairKey. Only looked up, never
     /// iterated, so its hash order cannot leak into the results.
-    std::unordered_map<std::uint64_t, CachedContact> contactCache;
+    ContactCache contactCache;
+    /// Buffers of the physical step and of the broadphase, kept from step to step.
+    PhysicalScratch physical;
+    std::vector<BodyPair> pairs;
+    std::vector<Bounds> boundsScratch;
 
     /// Creation rank of each slot's body (its place in `order`), refreshed by
     /// refreshRanks(); pairs are ordered by it.

@@ -70,7 +70,7 @@ std::optional<FrictionMix> frictionMixFromString(const std::string& name);
 /// Tolerances are fractions of body sizes, so they work in pixels and in metres alike.
 struct PhysicalOptions {
     /// Sequential-impulse passes over all contacts per step, >= 1. More: stiffer stacks.
-    int velocityIterations = 8;
+    int velocityIterations = 4;
     /// Position-correction passes per step, >= 0.
     int positionIterations = 3;
     /// Penetration left alone so that resting contacts stay in touch and do not jitter,
