@@ -8,34 +8,20 @@ namespace jostle {
 
 namespace {
 
-// Cell coordinates are clamped here: far beyond any float world, and still far from
-// overflowing when a window adds or subtracts one.
-constexpr double kCellLimit = 4.0e18;
+// Cell coordinates are clamped here, so that a window can add and subtract one without
+// overflow. Clamping keeps the order of cells, so a box beyond the limit is still found,
+// in a crowded edge cell: slower, never wrong. It takes a world 2^30 cells wide to reach.
+constexpr double kCellLimit = 1073741824.0;
 
 float sizeOf(const Bounds& box) {
     return std::max(box.max.x - box.min.x, box.max.y - box.min.y);
 }
 
-/// The smallest power of two >= x (x > 0 and finite).
-float powerOfTwoAtLeast(float x) {
-    int exponent = 0;
-    const float mantissa = std::frexp(x, &exponent); // x = mantissa * 2^exponent, [0.5, 1)
-    return std::ldexp(1.0f, mantissa == 0.5f ? exponent - 1 : exponent);
-}
-
-std::uint64_t mix(std::uint64_t h) {
-    h ^= h >> 33;
-    h *= 0xff51afd7ed558ccdULL;
-    h ^= h >> 33;
-    h *= 0xc4ceb9fe1a85ec53ULL;
-    h ^= h >> 33;
-    return h;
-}
-
 } // namespace
 
 int BoxGrid::levelOf(const Bounds& box) const {
-    const float size = sizeOf(box);
+    // A little room above the size: a box must never be larger than its cells.
+    const double size = double(sizeOf(box)) * (1.0 + 1.0 / (1 << 20));
     int level = 0;
     while (level < kLevels - 1 && cellSizes_[level] < size)
         ++level;
@@ -44,28 +30,33 @@ int BoxGrid::levelOf(const Bounds& box) const {
 
 BoxGrid::Cell BoxGrid::cellOf(Vec2 point, int level) const {
     auto coordinate = [&](float value) {
-        const double cell = std::floor(double(value) / double(cellSizes_[level]));
-        return std::int64_t(std::clamp(cell, -kCellLimit, kCellLimit));
+        const double cell = std::floor(double(value) * inverseSizes_[level]);
+        return std::int32_t(std::clamp(cell, -kCellLimit, kCellLimit));
     };
     return {coordinate(point.x), coordinate(point.y)};
 }
 
-std::uint64_t BoxGrid::keyOf(int level, Cell cell) {
-    // Distinct cells may share a key only through the hash of the table slot, never here:
-    // level and both coordinates are folded with a strong mixer, and the table compares
-    // whole keys. (Two cells with the same 64-bit key would merely share a list, which
-    // the overlap test sorts out: a cost, never a wrong answer.)
-    return mix(std::uint64_t(cell.x) * 0x9E3779B97F4A7C15ULL ^ mix(std::uint64_t(cell.y)) ^
-               std::uint64_t(level) << 58);
+std::size_t BoxGrid::slotOf(int level, Cell cell) const {
+    // Pack the cell into 64 bits, then mix them well (a murmur-style finalizer): nearby
+    // cells must land in unrelated slots, or linear probing runs long.
+    std::uint64_t h = (std::uint64_t(std::uint32_t(cell.x)) << 32 | std::uint32_t(cell.y)) ^
+                      std::uint64_t(level) * 0x9E3779B97F4A7C15ULL;
+    h ^= h >> 33;
+    h *= 0xff51afd7ed558ccdULL;
+    h ^= h >> 33;
+    h *= 0xc4ceb9fe1a85ec53ULL;
+    h ^= h >> 33;
+    return std::size_t(h >> tableShift_);
 }
 
-std::uint32_t BoxGrid::head(std::uint64_t key) const {
+std::uint32_t BoxGrid::head(int level, Cell cell) const {
     const std::size_t mask = table_.size() - 1;
-    for (std::size_t slot = key & mask;; slot = (slot + 1) & mask) {
-        if (table_[slot].head == kNone)
+    for (std::size_t slot = slotOf(level, cell);; slot = (slot + 1) & mask) {
+        const Slot& entry = table_[slot];
+        if (entry.level < 0)
             return kNone;
-        if (table_[slot].key == key)
-            return table_[slot].head;
+        if (entry.level == level && entry.cell.x == cell.x && entry.cell.y == cell.y)
+            return entry.head;
     }
 }
 
@@ -78,23 +69,30 @@ void BoxGrid::build(const std::vector<Bounds>& boxes) {
     std::fill(std::begin(levelStart_), std::end(levelStart_), 0u);
     if (n == 0) {
         table_.assign(1, Slot{});
+        tableShift_ = 63;
         byLevel_.clear();
         return;
     }
 
-    // Level 0 fits the smallest box; each level doubles. If 64 levels cannot span the
-    // sizes, the small boxes share a coarser level: slower, still correct.
+    // Level 0 fits the smallest box; each level doubles. If 63 levels cannot span the
+    // sizes, the small boxes share a coarser level: slower, still correct. The last
+    // level is one infinite cell, for whatever is larger still.
     float smallest = INFINITY, largest = 0.0f;
     for (const Bounds& box : boxes_) {
         smallest = std::min(smallest, sizeOf(box));
         largest = std::max(largest, sizeOf(box));
     }
-    const float tiny = std::numeric_limits<float>::min();
-    float base = powerOfTwoAtLeast(std::max(smallest, tiny));
-    base = std::max(base, std::ldexp(powerOfTwoAtLeast(std::max(largest, tiny)), -(kLevels - 2)));
-    for (int level = 0; level < kLevels; ++level)
+    const double tiny = double(std::numeric_limits<float>::min());
+    // A quarter above the smallest: boxes a little larger than the smallest (grown by
+    // their motion, say) still share its level.
+    double base = std::max(double(smallest), tiny) * 1.25;
+    base = std::max(base, std::ldexp(std::max(double(largest), tiny), -(kLevels - 2)));
+    for (int level = 0; level < kLevels; ++level) {
         cellSizes_[level] = std::ldexp(base, level);
-    cellSizes_[kLevels - 1] = INFINITY; // whatever is left: one cell
+        inverseSizes_[level] = 1.0 / cellSizes_[level];
+    }
+    cellSizes_[kLevels - 1] = INFINITY;
+    inverseSizes_[kLevels - 1] = 0.0;
 
     // Group by level (a counting sort keeps insertion order within a level).
     std::uint32_t counts[kLevels] = {};
@@ -114,15 +112,20 @@ void BoxGrid::build(const std::vector<Bounds>& boxes) {
     // File each box under its min corner's cell. Inserting in reverse order and linking
     // at the head leaves each cell's list in insertion order.
     table_.assign(std::bit_ceil(2 * n), Slot{});
+    tableShift_ = 64 - std::countr_zero(table_.size());
     const std::size_t mask = table_.size() - 1;
     for (std::uint32_t i = std::uint32_t(n); i-- > 0;) {
-        const std::uint64_t key = keyOf(levels_[i], cellOf(boxes_[i].min, levels_[i]));
-        std::size_t slot = key & mask;
-        while (table_[slot].head != kNone && table_[slot].key != key)
+        const int level = levels_[i];
+        const Cell cell = cellOf(boxes_[i].min, level);
+        std::size_t slot = slotOf(level, cell) & mask;
+        while (table_[slot].level >= 0 &&
+               !(table_[slot].level == level && table_[slot].cell.x == cell.x &&
+                 table_[slot].cell.y == cell.y))
             slot = (slot + 1) & mask;
         next_[i] = table_[slot].head;
-        table_[slot] = {key, i};
+        table_[slot] = {cell, level, i};
     }
+
 }
 
 } // namespace jostle

@@ -1,7 +1,8 @@
 // BoxGrid: a hierarchical grid of boxes, the broadphase of both models.
 //
 // Each box lives in one cell of one level: the level whose cells are at least as large as
-// the box (cell sizes are powers of two), the cell that holds its min corner. So a box
+// the box (level 0 fits the smallest box, and each level doubles), the cell that holds
+// its min corner. So a box
 // spans at most two cells of its level along each axis, and a box of any size is found
 // by looking at a window of at most 3 × 3 cells per level. Small and huge boxes in one
 // grid cost no more than their own levels, and the cost of a step grows about linearly
@@ -51,19 +52,21 @@ private:
     static constexpr int kLevels = 64;
 
     struct Cell {
-        std::int64_t x, y;
+        std::int32_t x, y;
     };
 
+    /// A cell of the hash table: which cell it is (compared whole, so that two cells
+    /// never share a list, which would visit their boxes twice) and its first box.
     struct Slot {
-        std::uint64_t key = 0;
+        Cell cell{0, 0};
+        std::int32_t level = -1; ///< -1: empty
         std::uint32_t head = kNone;
     };
 
     int levelOf(const Bounds& box) const;
-    float cellSize(int level) const { return cellSizes_[level]; }
     Cell cellOf(Vec2 point, int level) const;
-    static std::uint64_t keyOf(int level, Cell cell);
-    std::uint32_t head(std::uint64_t key) const;
+    std::size_t slotOf(int level, Cell cell) const;
+    std::uint32_t head(int level, Cell cell) const;
 
     /// Visits every box of `level` in the window of cells that may hold a box touching
     /// `query`, or, when that window has more cells than the level has boxes, every box
@@ -76,7 +79,12 @@ private:
     std::vector<std::uint32_t> byLevel_; ///< box indices grouped by level, in order
     std::uint32_t levelStart_[kLevels + 1] = {};
     std::uint64_t usedLevels_ = 0; ///< bit k: level k has boxes
-    float cellSizes_[kLevels] = {};
+    /// Cell sizes and their inverses, in double: cells are found by multiplying float
+    /// coordinates, and double's 29 extra bits keep that exact enough that a box is
+    /// never filed a cell away from where a query looks for it.
+    double cellSizes_[kLevels] = {};
+    double inverseSizes_[kLevels] = {};
+    int tableShift_ = 64;
     std::vector<Slot> table_; ///< open addressing, linear probing; size a power of two
 };
 
@@ -88,7 +96,7 @@ void BoxGrid::visitLevel(int level, const Bounds& query, Visit&& visit) const {
     const Cell high = cellOf(query.max, level);
     // A box is filed under its min corner and is at most one cell large, so one touching
     // the query has its min corner at most one cell before the query's.
-    const std::int64_t fromX = low.x - 1, fromY = low.y - 1;
+    const std::int64_t fromX = std::int64_t(low.x) - 1, fromY = std::int64_t(low.y) - 1;
     const double cells =
         (double(high.x) - double(fromX) + 1) * (double(high.y) - double(fromY) + 1);
     const std::uint32_t count = levelStart_[level + 1] - levelStart_[level];
@@ -98,9 +106,10 @@ void BoxGrid::visitLevel(int level, const Bounds& query, Visit&& visit) const {
                 visit(byLevel_[k]);
         return;
     }
-    for (std::int64_t y = fromY; y <= high.y; ++y)
-        for (std::int64_t x = fromX; x <= high.x; ++x)
-            for (std::uint32_t i = head(keyOf(level, {x, y})); i != kNone; i = next_[i])
+    for (std::int64_t y = fromY; y <= std::int64_t(high.y); ++y)
+        for (std::int64_t x = fromX; x <= std::int64_t(high.x); ++x)
+            for (std::uint32_t i = head(level, {std::int32_t(x), std::int32_t(y)}); i != kNone;
+                 i = next_[i])
                 if (touches(boxes_[i], query))
                     visit(i);
 }
