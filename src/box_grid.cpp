@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <limits>
 
 namespace jostle {
 
@@ -12,6 +13,9 @@ namespace {
 // overflow. Clamping keeps the order of cells, so a box beyond the limit is still found,
 // in a crowded edge cell: slower, never wrong. It takes a world 2^30 cells wide to reach.
 constexpr double kCellLimit = 1073741824.0;
+
+// A level is dense (an array of cells) when it has at most this many cells per box.
+constexpr std::int64_t kDenseCellsPerBox = 8;
 
 float sizeOf(const Bounds& box) {
     return std::max(box.max.x - box.min.x, box.max.y - box.min.y);
@@ -23,20 +27,20 @@ int BoxGrid::levelOf(const Bounds& box) const {
     // A little room above the size: a box must never be larger than its cells.
     const double size = double(sizeOf(box)) * (1.0 + 1.0 / (1 << 20));
     int level = 0;
-    while (level < kLevels - 1 && cellSizes_[level] < size)
+    while (level < kLevels - 1 && levels_[level].size < size)
         ++level;
     return level;
 }
 
-BoxGrid::Cell BoxGrid::cellOf(Vec2 point, int level) const {
+BoxGrid::Cell BoxGrid::cellOf(Vec2 point, const Level& level) const {
     auto coordinate = [&](float value) {
-        const double cell = std::floor(double(value) * inverseSizes_[level]);
+        const double cell = std::floor(double(value) * level.inverse);
         return std::int32_t(std::clamp(cell, -kCellLimit, kCellLimit));
     };
     return {coordinate(point.x), coordinate(point.y)};
 }
 
-std::size_t BoxGrid::slotOf(int level, Cell cell) const {
+std::size_t BoxGrid::hashOf(int level, Cell cell) const {
     // Pack the cell into 64 bits, then mix them well (a murmur-style finalizer): nearby
     // cells must land in unrelated slots, or linear probing runs long.
     std::uint64_t h = (std::uint64_t(std::uint32_t(cell.x)) << 32 | std::uint32_t(cell.y)) ^
@@ -49,83 +53,155 @@ std::size_t BoxGrid::slotOf(int level, Cell cell) const {
     return std::size_t(h >> tableShift_);
 }
 
-std::uint32_t BoxGrid::head(int level, Cell cell) const {
+void BoxGrid::run(int levelIndex, std::int64_t x, std::int64_t y, std::uint32_t& first,
+                  std::uint32_t& last) const {
+    const Level& level = levels_[levelIndex];
+    first = last = 0;
+    if (level.dense) {
+        const std::int64_t cx = x - level.low.x, cy = y - level.low.y;
+        if (cx < 0 || cy < 0 || cx >= level.width || cy >= level.height)
+            return;
+        const std::size_t cell = level.cellStart + std::size_t(cy * level.width + cx);
+        first = cellStarts_[cell];
+        last = cellStarts_[cell + 1];
+        return;
+    }
+    const Cell cell{std::int32_t(x), std::int32_t(y)};
     const std::size_t mask = table_.size() - 1;
-    for (std::size_t slot = slotOf(level, cell);; slot = (slot + 1) & mask) {
-        const Slot& entry = table_[slot];
+    for (std::size_t slot = hashOf(levelIndex, cell) & mask;; slot = (slot + 1) & mask) {
+        const HashSlot& entry = table_[slot];
         if (entry.level < 0)
-            return kNone;
-        if (entry.level == level && entry.cell.x == cell.x && entry.cell.y == cell.y)
-            return entry.head;
+            return;
+        if (entry.level == levelIndex && entry.cell.x == cell.x && entry.cell.y == cell.y) {
+            first = entry.first;
+            last = entry.last;
+            return;
+        }
     }
 }
 
 void BoxGrid::build(const std::vector<Bounds>& boxes) {
     boxes_ = boxes;
     const std::size_t n = boxes_.size();
-    levels_.assign(n, 0);
-    next_.assign(n, kNone);
     usedLevels_ = 0;
-    std::fill(std::begin(levelStart_), std::end(levelStart_), 0u);
-    if (n == 0) {
-        table_.assign(1, Slot{});
-        tableShift_ = 63;
-        byLevel_.clear();
+    for (Level& level : levels_)
+        level = Level{};
+    sorted_.resize(n);
+    cellStarts_.clear();
+    if (n == 0)
         return;
-    }
 
-    // Level 0 fits the smallest box; each level doubles. If 63 levels cannot span the
-    // sizes, the small boxes share a coarser level: slower, still correct. The last
-    // level is one infinite cell, for whatever is larger still.
+    // Level 0 fits the smallest box, a quarter to spare (boxes a little larger than the
+    // smallest, grown by their motion say, still share its level); each level doubles.
+    // If 63 levels cannot span the sizes, the small boxes share a coarser level: slower,
+    // still correct. The last level is one infinite cell, for whatever is larger still.
     float smallest = INFINITY, largest = 0.0f;
     for (const Bounds& box : boxes_) {
         smallest = std::min(smallest, sizeOf(box));
         largest = std::max(largest, sizeOf(box));
     }
     const double tiny = double(std::numeric_limits<float>::min());
-    // A quarter above the smallest: boxes a little larger than the smallest (grown by
-    // their motion, say) still share its level.
     double base = std::max(double(smallest), tiny) * 1.25;
     base = std::max(base, std::ldexp(std::max(double(largest), tiny), -(kLevels - 2)));
-    for (int level = 0; level < kLevels; ++level) {
-        cellSizes_[level] = std::ldexp(base, level);
-        inverseSizes_[level] = 1.0 / cellSizes_[level];
+    for (int k = 0; k < kLevels; ++k) {
+        levels_[k].size = std::ldexp(base, k);
+        levels_[k].inverse = 1.0 / levels_[k].size;
     }
-    cellSizes_[kLevels - 1] = INFINITY;
-    inverseSizes_[kLevels - 1] = 0.0;
+    levels_[kLevels - 1].size = INFINITY;
+    levels_[kLevels - 1].inverse = 0.0;
 
-    // Group by level (a counting sort keeps insertion order within a level).
-    std::uint32_t counts[kLevels] = {};
+    // Each box's level and cell; then the boxes grouped by level (a counting sort keeps
+    // insertion order within a level).
+    levelOfBox_.resize(n);
+    cellOfBox_.resize(n);
+    std::uint32_t counts[kLevels + 1] = {};
     for (std::size_t i = 0; i < n; ++i) {
-        levels_[i] = std::uint8_t(levelOf(boxes_[i]));
-        ++counts[levels_[i]];
-        usedLevels_ |= std::uint64_t{1} << levels_[i];
+        const int level = levelOf(boxes_[i]);
+        levelOfBox_[i] = std::uint8_t(level);
+        cellOfBox_[i] = cellOf(boxes_[i].min, levels_[level]);
+        ++counts[level + 1];
+        usedLevels_ |= std::uint64_t{1} << level;
     }
-    for (int level = 0; level < kLevels; ++level)
-        levelStart_[level + 1] = levelStart_[level] + counts[level];
-    byLevel_.resize(n);
-    std::uint32_t fill[kLevels];
-    std::copy(levelStart_, levelStart_ + kLevels, fill);
+    for (int k = 0; k < kLevels; ++k) {
+        counts[k + 1] += counts[k];
+        levels_[k].begin = counts[k];
+        levels_[k].end = counts[k + 1];
+    }
+    std::vector<std::uint32_t> byLevel(n);
     for (std::uint32_t i = 0; i < n; ++i)
-        byLevel_[fill[levels_[i]]++] = i;
+        byLevel[counts[levelOfBox_[i]]++] = i;
 
-    // File each box under its min corner's cell. Inserting in reverse order and linking
-    // at the head leaves each cell's list in insertion order.
-    table_.assign(std::bit_ceil(2 * n), Slot{});
+    // Within each level, by cell: a counting sort into a dense array of cells when the
+    // boxes are close together, else a sort by cell and a hash table of the runs.
+    std::size_t hashedRuns = 0;
+    for (int k = 0; k < kLevels; ++k) {
+        Level& level = levels_[k];
+        if (level.begin == level.end)
+            continue;
+        Cell low{INT32_MAX, INT32_MAX}, high{INT32_MIN, INT32_MIN};
+        for (std::uint32_t m = level.begin; m < level.end; ++m) {
+            const Cell c = cellOfBox_[byLevel[m]];
+            low = {std::min(low.x, c.x), std::min(low.y, c.y)};
+            high = {std::max(high.x, c.x), std::max(high.y, c.y)};
+        }
+        const std::int64_t width = std::int64_t(high.x) - low.x + 1;
+        const std::int64_t height = std::int64_t(high.y) - low.y + 1;
+        const std::int64_t count = level.end - level.begin;
+        if (double(width) * double(height) <= double(kDenseCellsPerBox * count + 16)) {
+            level.dense = true;
+            level.low = low;
+            level.width = width;
+            level.height = height;
+            level.cellStart = std::uint32_t(cellStarts_.size());
+            const std::size_t cells = std::size_t(width * height);
+            cellStarts_.resize(cellStarts_.size() + cells + 1, 0);
+            std::uint32_t* starts = cellStarts_.data() + level.cellStart;
+            auto cellIndex = [&](std::uint32_t i) {
+                const Cell c = cellOfBox_[i];
+                return std::size_t((std::int64_t(c.y) - low.y) * width + (c.x - low.x));
+            };
+            for (std::uint32_t m = level.begin; m < level.end; ++m)
+                ++starts[cellIndex(byLevel[m]) + 1];
+            starts[0] = level.begin;
+            for (std::size_t c = 0; c < cells; ++c)
+                starts[c + 1] += starts[c];
+            // Fill through a moving copy of the starts, keeping insertion order in a cell.
+            std::vector<std::uint32_t> fill(starts, starts + cells);
+            for (std::uint32_t m = level.begin; m < level.end; ++m)
+                sorted_[fill[cellIndex(byLevel[m])]++] = byLevel[m];
+        } else {
+            std::copy(byLevel.begin() + level.begin, byLevel.begin() + level.end,
+                      sorted_.begin() + level.begin);
+            std::sort(sorted_.begin() + level.begin, sorted_.begin() + level.end,
+                      [&](std::uint32_t p, std::uint32_t q) {
+                          const Cell a = cellOfBox_[p], b = cellOfBox_[q];
+                          return a.y != b.y ? a.y < b.y : a.x != b.x ? a.x < b.x : p < q;
+                      });
+            hashedRuns += std::size_t(count);
+        }
+    }
+
+    // The hash table of the sparse levels' cells: one slot per run of equal cells.
+    table_.assign(std::bit_ceil(std::max<std::size_t>(2, 2 * hashedRuns)), HashSlot{});
     tableShift_ = 64 - std::countr_zero(table_.size());
     const std::size_t mask = table_.size() - 1;
-    for (std::uint32_t i = std::uint32_t(n); i-- > 0;) {
-        const int level = levels_[i];
-        const Cell cell = cellOf(boxes_[i].min, level);
-        std::size_t slot = slotOf(level, cell) & mask;
-        while (table_[slot].level >= 0 &&
-               !(table_[slot].level == level && table_[slot].cell.x == cell.x &&
-                 table_[slot].cell.y == cell.y))
-            slot = (slot + 1) & mask;
-        next_[i] = table_[slot].head;
-        table_[slot] = {cell, level, i};
+    for (int k = 0; k < kLevels; ++k) {
+        const Level& level = levels_[k];
+        if (level.dense || level.begin == level.end)
+            continue;
+        for (std::uint32_t m = level.begin; m < level.end;) {
+            const Cell c = cellOfBox_[sorted_[m]];
+            std::uint32_t last = m + 1;
+            while (last < level.end && cellOfBox_[sorted_[last]].x == c.x &&
+                   cellOfBox_[sorted_[last]].y == c.y)
+                ++last;
+            std::size_t slot = hashOf(k, c) & mask;
+            while (table_[slot].level >= 0)
+                slot = (slot + 1) & mask;
+            table_[slot] = {c, k, m, last};
+            m = last;
+        }
     }
-
 }
 
 } // namespace jostle

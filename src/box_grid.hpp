@@ -2,15 +2,20 @@
 //
 // Each box lives in one cell of one level: the level whose cells are at least as large as
 // the box (level 0 fits the smallest box, and each level doubles), the cell that holds
-// its min corner. So a box
-// spans at most two cells of its level along each axis, and a box of any size is found
-// by looking at a window of at most 3 × 3 cells per level. Small and huge boxes in one
-// grid cost no more than their own levels, and the cost of a step grows about linearly
-// with the number of boxes. Cells live in a hash table: the world may be as large and as
-// far from the origin as floats go.
+// its min corner. So a box spans at most two cells of its level along each axis, and a
+// box of any size is found by looking at a window of at most 3 × 3 cells per level.
+// Small and huge boxes in one grid cost no more than their own levels, and the cost of a
+// step grows about linearly with the number of boxes.
 //
-// Everything is visited in a fixed order (insertion order, then cell order), never in
-// pointer or hash order, so the same input gives the same pairs in the same order.
+// A level's cells are a dense array over the cells its boxes occupy, its boxes sorted by
+// cell (a counting sort), so that walking the boxes in cell order reads memory in order.
+// A level whose boxes are too spread out for that (a few boxes kilometres apart) keeps
+// its cells in a hash table instead: the world may be as large and as far from the
+// origin as floats go.
+//
+// Everything is visited in a fixed order (by level, then cell, then insertion order),
+// never in pointer or hash order, so the same input gives the same pairs in the same
+// order.
 #pragma once
 
 #include "jostle/math.hpp"
@@ -42,9 +47,8 @@ public:
     /// Calls visit(i) for every box i that overlaps or touches `query`, each once.
     template <class Visit> void query(const Bounds& query, Visit&& visit) const;
 
-    /// Calls visit(i, j) for every pair of boxes that overlap or touch, each pair once.
-    /// The calls come in a fixed order: by i, the boxes in insertion order; j may be
-    /// smaller or larger than i.
+    /// Calls visit(i, j) for every pair of boxes that overlap or touch, each pair once,
+    /// in a fixed order (j may be smaller or larger than i).
     template <class Visit> void forEachPair(Visit&& visit) const;
 
 private:
@@ -55,43 +59,55 @@ private:
         std::int32_t x, y;
     };
 
-    /// A cell of the hash table: which cell it is (compared whole, so that two cells
-    /// never share a list, which would visit their boxes twice) and its first box.
-    struct Slot {
+    /// A cell of a hashed level: which cell (compared whole, so that two cells never
+    /// share a run) and where its boxes are in `sorted_`.
+    struct HashSlot {
         Cell cell{0, 0};
         std::int32_t level = -1; ///< -1: empty
-        std::uint32_t head = kNone;
+        std::uint32_t first = 0, last = 0;
+    };
+
+    struct Level {
+        std::uint32_t begin = 0, end = 0; ///< its boxes: sorted_[begin, end)
+        double size = 0.0, inverse = 0.0; ///< cell size and its inverse
+        bool dense = false;
+        Cell low{0, 0};         ///< dense: the first cell of the array
+        std::int64_t width = 0; ///< dense: cells per row
+        std::int64_t height = 0;
+        std::uint32_t cellStart = 0; ///< dense: its cells in cellStarts_
     };
 
     int levelOf(const Bounds& box) const;
-    Cell cellOf(Vec2 point, int level) const;
-    std::size_t slotOf(int level, Cell cell) const;
-    std::uint32_t head(int level, Cell cell) const;
+    Cell cellOf(Vec2 point, const Level& level) const;
+    std::size_t hashOf(int level, Cell cell) const;
+    /// The run of sorted_ that holds cell (x, y) of `level`: [first, last).
+    void run(int level, std::int64_t x, std::int64_t y, std::uint32_t& first,
+             std::uint32_t& last) const;
 
-    /// Visits every box of `level` in the window of cells that may hold a box touching
-    /// `query`, or, when that window has more cells than the level has boxes, every box
-    /// of the level. visit(i) is called for each box that does touch `query`.
+    /// Calls visit(i) for every box of `level` that touches `query`, looking at the window
+    /// of cells that may hold one, or at all of the level's boxes when that is fewer.
     template <class Visit> void visitLevel(int level, const Bounds& query, Visit&& visit) const;
 
+    /// Same-level pairs of a level: each box against the boxes of the cells of its window
+    /// that come after its own cell (and after it in its own cell).
+    template <class Visit> void pairsWithinLevel(int level, Visit&& visit) const;
+
     std::vector<Bounds> boxes_;
-    std::vector<std::uint8_t> levels_;   ///< level of each box
-    std::vector<std::uint32_t> next_;    ///< next box in the same cell
-    std::vector<std::uint32_t> byLevel_; ///< box indices grouped by level, in order
-    std::uint32_t levelStart_[kLevels + 1] = {};
+    std::vector<std::uint8_t> levelOfBox_;
+    std::vector<Cell> cellOfBox_;
+    std::vector<std::uint32_t> sorted_;     ///< box indices by level, then cell, then index
+    std::vector<std::uint32_t> cellStarts_; ///< dense levels: first box of each cell
+    std::vector<HashSlot> table_;           ///< hashed levels: open addressing
+    int tableShift_ = 63;
+    Level levels_[kLevels];
     std::uint64_t usedLevels_ = 0; ///< bit k: level k has boxes
-    /// Cell sizes and their inverses, in double: cells are found by multiplying float
-    /// coordinates, and double's 29 extra bits keep that exact enough that a box is
-    /// never filed a cell away from where a query looks for it.
-    double cellSizes_[kLevels] = {};
-    double inverseSizes_[kLevels] = {};
-    int tableShift_ = 64;
-    std::vector<Slot> table_; ///< open addressing, linear probing; size a power of two
 };
 
 // --- Template definitions ----------------------------------------------------------------
 
 template <class Visit>
-void BoxGrid::visitLevel(int level, const Bounds& query, Visit&& visit) const {
+void BoxGrid::visitLevel(int levelIndex, const Bounds& query, Visit&& visit) const {
+    const Level& level = levels_[levelIndex];
     const Cell low = cellOf(query.min, level);
     const Cell high = cellOf(query.max, level);
     // A box is filed under its min corner and is at most one cell large, so one touching
@@ -99,19 +115,46 @@ void BoxGrid::visitLevel(int level, const Bounds& query, Visit&& visit) const {
     const std::int64_t fromX = std::int64_t(low.x) - 1, fromY = std::int64_t(low.y) - 1;
     const double cells =
         (double(high.x) - double(fromX) + 1) * (double(high.y) - double(fromY) + 1);
-    const std::uint32_t count = levelStart_[level + 1] - levelStart_[level];
-    if (cells > double(count)) {
-        for (std::uint32_t k = levelStart_[level]; k < levelStart_[level + 1]; ++k)
-            if (touches(boxes_[byLevel_[k]], query))
-                visit(byLevel_[k]);
+    if (cells > double(level.end - level.begin)) {
+        for (std::uint32_t k = level.begin; k < level.end; ++k)
+            if (touches(boxes_[sorted_[k]], query))
+                visit(sorted_[k]);
         return;
     }
-    for (std::int64_t y = fromY; y <= std::int64_t(high.y); ++y)
-        for (std::int64_t x = fromX; x <= std::int64_t(high.x); ++x)
-            for (std::uint32_t i = head(level, {std::int32_t(x), std::int32_t(y)}); i != kNone;
-                 i = next_[i])
-                if (touches(boxes_[i], query))
-                    visit(i);
+    for (std::int64_t y = fromY; y <= high.y; ++y) {
+        for (std::int64_t x = fromX; x <= high.x; ++x) {
+            std::uint32_t first, last;
+            run(levelIndex, x, y, first, last);
+            for (std::uint32_t k = first; k < last; ++k)
+                if (touches(boxes_[sorted_[k]], query))
+                    visit(sorted_[k]);
+        }
+    }
+}
+
+template <class Visit> void BoxGrid::pairsWithinLevel(int levelIndex, Visit&& visit) const {
+    const Level& level = levels_[levelIndex];
+    for (std::uint32_t k = level.begin; k < level.end; ++k) {
+        const std::uint32_t i = sorted_[k];
+        const Bounds& box = boxes_[i];
+        const Cell home = cellOfBox_[i];
+        // The boxes after it in its own cell.
+        std::uint32_t first, last;
+        run(levelIndex, home.x, home.y, first, last);
+        for (std::uint32_t m = k + 1; m < last; ++m)
+            if (touches(box, boxes_[sorted_[m]]))
+                visit(i, sorted_[m]);
+        // Touching boxes have cells at most one apart on each axis (either way: the
+        // relation is symmetric), so each pair is reported by the box whose cell comes
+        // first in row order: these four neighbours come after this cell.
+        constexpr std::int64_t after[4][2] = {{1, 0}, {-1, 1}, {0, 1}, {1, 1}};
+        for (const auto& offset : after) {
+            run(levelIndex, home.x + offset[0], home.y + offset[1], first, last);
+            for (std::uint32_t m = first; m < last; ++m)
+                if (touches(box, boxes_[sorted_[m]]))
+                    visit(i, sorted_[m]);
+        }
+    }
 }
 
 template <class Visit> void BoxGrid::query(const Bounds& query, Visit&& visit) const {
@@ -120,14 +163,13 @@ template <class Visit> void BoxGrid::query(const Bounds& query, Visit&& visit) c
 }
 
 template <class Visit> void BoxGrid::forEachPair(Visit&& visit) const {
+    // Within each level, in cell order.
+    for (std::uint64_t used = usedLevels_; used != 0; used &= used - 1)
+        pairsWithinLevel(__builtin_ctzll(used), visit);
+    // Across levels: the finer box looks into the coarser levels, so each pair is found
+    // once.
     for (std::uint32_t i = 0; i < boxes_.size(); ++i) {
-        const int level = levels_[i];
-        // Same level: both boxes see each other; the one inserted first reports.
-        visitLevel(level, boxes_[i], [&](std::uint32_t j) {
-            if (j > i)
-                visit(i, j);
-        });
-        // Coarser levels: only the finer box looks, so each pair is found once.
+        const int level = levelOfBox_[i];
         const std::uint64_t coarser =
             level + 1 < kLevels ? usedLevels_ >> (level + 1) << (level + 1) : 0;
         for (std::uint64_t used = coarser; used != 0; used &= used - 1)
