@@ -1,0 +1,34 @@
+// Dispatch from an engine's kind to its builder.
+#include "engine.hpp"
+
+namespace jostle::bench {
+
+std::string_view name(EngineKind kind) {
+    switch (kind) {
+    case EngineKind::Jostle:
+        return "jostle";
+    case EngineKind::JostleSleeping:
+        return "jostle+sleep";
+    case EngineKind::Box2D:
+        return "box2d";
+    case EngineKind::Chipmunk:
+        return "chipmunk";
+    }
+    return "?";
+}
+
+std::unique_ptr<Engine> makeEngine(EngineKind kind, const Scene& scene) {
+    switch (kind) {
+    case EngineKind::Jostle:
+        return makeJostle(scene, false);
+    case EngineKind::JostleSleeping:
+        return makeJostle(scene, true);
+    case EngineKind::Box2D:
+        return makeBox2D(scene);
+    case EngineKind::Chipmunk:
+        return makeChipmunk(scene);
+    }
+    return nullptr;
+}
+
+} // namespace jostle::bench

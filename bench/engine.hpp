@@ -1,0 +1,51 @@
+// bench/engine.hpp: one scene built in one physics engine, stepped and read back.
+//
+// The three engines (jostle, Box2D 2.4.1, Chipmunk 7) hide behind this small interface so
+// that the timing, the memory count and the quality figures are the same code for all of
+// them. The virtual call costs once per step, nothing per body.
+#pragma once
+
+#include "jostle/scene.hpp"
+
+#include <memory>
+#include <span>
+#include <string>
+#include <string_view>
+
+namespace jostle::bench {
+
+class Engine {
+public:
+    virtual ~Engine() = default;
+
+    /// Advances the world by dt seconds.
+    virtual void step(float dt) = 0;
+
+    /// Writes the centre of every body, in scene order, to `out` (one per scene body).
+    virtual void positions(std::span<Vec2> out) const = 0;
+};
+
+enum class EngineKind {
+    Jostle,         ///< sleeping off: the timed figures
+    JostleSleeping, ///< sleeping on: what a game gets by default
+    Box2D,
+    Chipmunk,
+};
+
+/// The name printed in tables and CSV files: "jostle", "jostle+sleep", "box2d", "chipmunk".
+std::string_view name(EngineKind kind);
+
+/// Builds `scene` in the engine. An engine stores nothing per body beyond its own
+/// bodies, so the memory measured around this call is the engine's alone.
+std::unique_ptr<Engine> makeEngine(EngineKind kind, const Scene& scene);
+
+std::unique_ptr<Engine> makeJostle(const Scene& scene, bool sleeping);
+std::unique_ptr<Engine> makeBox2D(const Scene& scene);
+std::unique_ptr<Engine> makeChipmunk(const Scene& scene);
+
+/// How each engine is set up, one line each, for the top of the report.
+std::string describeJostle();
+std::string_view describeBox2D();
+std::string_view describeChipmunk();
+
+} // namespace jostle::bench

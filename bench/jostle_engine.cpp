@@ -1,0 +1,47 @@
+// The scene in jostle, exactly as the scene describes it, except for the sleeping switch.
+#include "engine.hpp"
+
+#include <string>
+
+namespace jostle::bench {
+namespace {
+
+class JostleEngine final : public Engine {
+public:
+    JostleEngine(const Scene& scene, bool sleeping) : world_(withSleeping(scene.world, sleeping)) {
+        for (const SceneBody& body : scene.bodies)
+            world_.createBody(body.def);
+    }
+
+    void step(float dt) override { world_.step(dt); }
+
+    void positions(std::span<Vec2> out) const override {
+        // No body is destroyed, so creation order is scene order.
+        const std::span<const BodyId> ids = world_.bodies();
+        for (std::size_t i = 0; i < ids.size() && i < out.size(); ++i)
+            out[i] = world_.position(ids[i]);
+    }
+
+private:
+    static WorldDef withSleeping(WorldDef def, bool sleeping) {
+        def.sleeping = sleeping;
+        return def;
+    }
+
+    World world_;
+};
+
+} // namespace
+
+std::unique_ptr<Engine> makeJostle(const Scene& scene, bool sleeping) {
+    return std::make_unique<JostleEngine>(scene, sleeping);
+}
+
+std::string describeJostle() {
+    const PhysicalOptions defaults;
+    return "jostle: physical model with its default settings (" +
+           std::to_string(defaults.velocityIterations) + " velocity / " +
+           std::to_string(defaults.positionIterations) + " position iterations)";
+}
+
+} // namespace jostle::bench

@@ -1,0 +1,195 @@
+// jostle-bench: the sample scenes in jostle, Box2D 2.4.1 and Chipmunk 7, side by side.
+//
+//     jostle-bench                      every scene at full size (a few minutes)
+//     jostle-bench --quick              small sizes, a smoke run
+//     jostle-bench --scene rain_100k    one case; --scene rain: all of a family
+//     jostle-bench --series gas --csv series.csv   one family at several sizes
+//     jostle-bench --markdown           the table for docs/benchmarks.md
+//
+// Progress goes to standard error, the table to standard output. Exit status: 0 when
+// all ran; 2 for bad options; 1 when something failed (the CSV file cannot be written).
+#include "catalog.hpp"
+#include "engine.hpp"
+#include "report.hpp"
+#include "runner.hpp"
+
+#include <CLI/CLI.hpp>
+
+#include <cstdio>
+#include <exception>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace {
+
+using namespace jostle::bench;
+
+constexpr int kBadInput = 2;
+constexpr int kFailure = 1;
+
+struct Options {
+    std::vector<std::string> scenes;
+    std::vector<std::string> series;
+    std::vector<std::string> engines;
+    bool quick = false;
+    std::optional<int> steps;
+    std::optional<int> warmup;
+    double maxSeconds = 20.0;
+    std::string csv;
+    bool markdown = false;
+    bool list = false;
+};
+
+const std::vector<EngineKind>& allEngines() {
+    static const std::vector<EngineKind> kinds{EngineKind::Jostle, EngineKind::Box2D,
+                                               EngineKind::Chipmunk, EngineKind::JostleSleeping};
+    return kinds;
+}
+
+EngineKind engineFromName(const std::string& text) {
+    for (const EngineKind kind : allEngines())
+        if (name(kind) == text)
+            return kind;
+    throw std::invalid_argument("--engine: unknown engine \"" + text +
+                                "\" (jostle, jostle+sleep, box2d, chipmunk)");
+}
+
+std::vector<Case> chooseCases(const Options& options) {
+    std::vector<Case> cases;
+    for (const std::string& family : options.series)
+        for (Case& c : seriesCases(family, options.quick))
+            cases.push_back(std::move(c));
+    for (const std::string& scene : options.scenes)
+        for (Case& c : selectCases(scene, options.quick))
+            cases.push_back(std::move(c));
+    if (options.series.empty() && options.scenes.empty())
+        cases = defaultCases(options.quick);
+    for (Case& c : cases) {
+        if (options.steps)
+            c.steps = *options.steps;
+        if (options.warmup)
+            c.warmup = *options.warmup;
+    }
+    return cases;
+}
+
+std::vector<EngineKind> chooseEngines(const Options& options) {
+    if (options.engines.empty()) {
+        // A series is for the plot of time against size: sleeping off only.
+        if (!options.series.empty())
+            return {EngineKind::Jostle, EngineKind::Box2D, EngineKind::Chipmunk};
+        return allEngines();
+    }
+    std::vector<EngineKind> kinds;
+    for (const std::string& text : options.engines)
+        kinds.push_back(engineFromName(text));
+    return kinds;
+}
+
+void printIntroduction(std::FILE* out, double maxSeconds) {
+    std::fprintf(out,
+                 "Single thread. ms/step: median of the measured steps, after the warm-up "
+                 "steps (steps = warm-up + measured;\n"
+                 "measuring stops early after %.0f s). jostle/peer: jostle's ms/step over the "
+                 "peer's, below 1 means jostle is faster.\n"
+                 "Sleeping is off in all three engines; jostle+sleep is jostle with sleeping "
+                 "on. Each engine as below: jostle with its\n"
+                 "defaults, Box2D with its recommended iterations, Chipmunk with as many.\n"
+                 "bytes/body: heap growth from before building the world to after the "
+                 "warm-up, over all bodies, static ones included.\n"
+                 "top drift: how far a pyramid's top box moved; max overlap: deepest overlap "
+                 "of two bodies at the end; escaped: dynamic\n"
+                 "bodies outside the scene's starting bounds at the end.\n",
+                 maxSeconds);
+    std::fprintf(out, "  %s\n", describeJostle().c_str());
+    std::fprintf(out, "  %.*s\n", static_cast<int>(describeBox2D().size()), describeBox2D().data());
+    std::fprintf(out, "  %.*s\n\n", static_cast<int>(describeChipmunk().size()),
+                 describeChipmunk().data());
+}
+
+int runAll(const Options& options) {
+    const std::vector<Case> cases = chooseCases(options);
+    const std::vector<EngineKind> engines = chooseEngines(options);
+    if (options.list) {
+        for (const Case& c : cases)
+            std::printf("%s  (warm-up %d, measured %d)\n", c.name.c_str(), c.warmup, c.steps);
+        return 0;
+    }
+
+    std::vector<RunResult> results;
+    for (const Case& c : cases) {
+        const jostle::Scene scene = c.make();
+        for (const EngineKind engine : engines) {
+            std::fprintf(stderr, "%-18s %-13.*s ", c.name.c_str(),
+                         static_cast<int>(name(engine).size()), name(engine).data());
+            std::fflush(stderr);
+            const RunLimits limits{c.warmup, c.steps, options.maxSeconds};
+            results.push_back(run(c, scene, engine, limits));
+            std::fprintf(stderr, "%10.3f ms/step over %d steps\n", results.back().msPerStep,
+                         results.back().measuredSteps);
+        }
+    }
+
+    if (options.markdown) {
+        printTable(stdout, results, true);
+    } else {
+        std::fputc('\n', stdout);
+        printIntroduction(stdout, options.maxSeconds);
+        printTable(stdout, results, false);
+    }
+    if (!options.csv.empty() && !writeCsv(options.csv, results)) {
+        std::fprintf(stderr, "jostle-bench: error: %s: cannot write\n", options.csv.c_str());
+        return kFailure;
+    }
+    return 0;
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    CLI::App app{"jostle-bench: the sample scenes in jostle, Box2D 2.4.1 and Chipmunk 7, "
+                 "timed in the same run (docs/benchmarks.md)"};
+    Options options;
+    app.add_option("--scene", options.scenes,
+                   "Scenes to run (repeatable or a comma list): a family (pyramid, "
+                   "many_pyramids, rain, gas, tilemap), a case (rain_100k) or a family at any "
+                   "size (rain_30k). Default: every case")
+        ->delimiter(',');
+    app.add_option("--series", options.series,
+                   "Run a family at several sizes, for the plot (scripts/plot-bench.sh)")
+        ->delimiter(',');
+    app.add_option("--engine", options.engines,
+                   "Engines (repeatable or a comma list): jostle, jostle+sleep, box2d, chipmunk. "
+                   "Default: all")
+        ->delimiter(',');
+    app.add_flag("--quick", options.quick, "Small sizes and few steps: a smoke run");
+    app.add_option("--steps", options.steps, "Steps measured, for every scene")
+        ->check(CLI::Range(1, 1'000'000));
+    app.add_option("--warmup", options.warmup, "Steps before measuring, for every scene")
+        ->check(CLI::Range(0, 1'000'000));
+    app.add_option("--max-seconds", options.maxSeconds,
+                   "Stop measuring an engine after this much measured time (default 20)")
+        ->check(CLI::PositiveNumber);
+    app.add_option("--csv", options.csv, "Also write the results to this CSV file");
+    app.add_flag("--markdown", options.markdown,
+                 "Print only the table, as markdown (for docs/benchmarks.md)");
+    app.add_flag("--list", options.list, "List the cases that would run, and stop");
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& error) {
+        const int status = app.exit(error);
+        return status == 0 ? 0 : kBadInput;
+    }
+
+    try {
+        return runAll(options);
+    } catch (const std::invalid_argument& error) {
+        std::fprintf(stderr, "jostle-bench: error: %s\n", error.what());
+        return kBadInput;
+    } catch (const std::exception& error) {
+        std::fprintf(stderr, "jostle-bench: error: %s\n", error.what());
+        return kFailure;
+    }
+}

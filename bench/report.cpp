@@ -1,0 +1,147 @@
+// Tables and CSV.
+#include "report.hpp"
+
+#include <array>
+#include <cmath>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace jostle::bench {
+namespace {
+
+std::string format(const char* pattern, double value) {
+    std::array<char, 64> text{};
+    std::snprintf(text.data(), text.size(), pattern, value);
+    return text.data();
+}
+
+/// Three significant figures at most, without exponent for the usual range.
+std::string milliseconds(double ms) {
+    if (ms >= 100.0)
+        return format("%.0f", ms);
+    if (ms >= 10.0)
+        return format("%.1f", ms);
+    if (ms >= 1.0)
+        return format("%.2f", ms);
+    return format("%.3f", ms);
+}
+
+std::string length(float value) {
+    if (!std::isfinite(value))
+        return "lost";
+    return format("%.3f", static_cast<double>(value));
+}
+
+struct Row {
+    std::array<std::string, 10> cells;
+};
+
+constexpr std::array<const char*, 10> kHeader{
+    "scene",       "bodies",     "engine",    "steps",       "ms/step",
+    "jostle/peer", "bytes/body", "top drift", "max overlap", "escaped"};
+
+Row makeRow(std::span<const RunResult> all, const RunResult& r) {
+    const std::optional<double> ratio = jostleRatio(all, r);
+    return {{
+        r.caseName,
+        std::to_string(r.bodies),
+        std::string(name(r.engine)),
+        std::to_string(r.warmupSteps) + "+" + std::to_string(r.measuredSteps),
+        milliseconds(r.msPerStep),
+        ratio ? format("%.2f", *ratio) : "-",
+        format("%.0f", r.bytesPerBody),
+        r.quality.topDrift ? length(*r.quality.topDrift) : "-",
+        length(r.quality.maxPenetration),
+        std::to_string(r.quality.escaped),
+    }};
+}
+
+} // namespace
+
+std::optional<double> jostleRatio(std::span<const RunResult> all, const RunResult& result) {
+    if (result.engine != EngineKind::Box2D && result.engine != EngineKind::Chipmunk)
+        return std::nullopt;
+    for (const RunResult& other : all)
+        if (other.caseName == result.caseName && other.engine == EngineKind::Jostle &&
+            result.msPerStep > 0.0)
+            return other.msPerStep / result.msPerStep;
+    return std::nullopt;
+}
+
+void printTable(std::FILE* out, std::span<const RunResult> results, bool markdown) {
+    std::vector<Row> rows;
+    for (const RunResult& r : results)
+        rows.push_back(makeRow(results, r));
+
+    std::array<std::size_t, kHeader.size()> width{};
+    for (std::size_t c = 0; c < kHeader.size(); ++c) {
+        width[c] = std::string(kHeader[c]).size();
+        for (const Row& row : rows)
+            width[c] = std::max(width[c], row.cells[c].size());
+    }
+    // Text columns (scene, engine) to the left, numbers to the right.
+    const auto leftAligned = [](std::size_t c) { return c == 0 || c == 2; };
+    const auto printRow = [&](const auto& cells) {
+        for (std::size_t c = 0; c < kHeader.size(); ++c) {
+            const int w = static_cast<int>(width[c]);
+            const std::string cell = cells[c];
+            if (markdown)
+                std::fprintf(out, "| %*s ", leftAligned(c) ? -w : w, cell.c_str());
+            else
+                std::fprintf(out, c == 0 ? "%*s" : "  %*s", leftAligned(c) ? -w : w, cell.c_str());
+        }
+        std::fputs(markdown ? "|\n" : "\n", out);
+    };
+
+    std::array<std::string, kHeader.size()> header;
+    for (std::size_t c = 0; c < kHeader.size(); ++c)
+        header[c] = kHeader[c];
+    printRow(header);
+    if (markdown) {
+        for (std::size_t c = 0; c < kHeader.size(); ++c) {
+            std::string rule(width[c] + 2, '-');
+            if (!leftAligned(c))
+                rule.back() = ':';
+            std::fprintf(out, "|%s", rule.c_str());
+        }
+        std::fputs("|\n", out);
+    }
+    std::string previous;
+    for (const Row& row : rows) {
+        if (!markdown && !previous.empty() && row.cells[0] != previous)
+            std::fputc('\n', out); // a blank line between scenes
+        previous = row.cells[0];
+        printRow(row.cells);
+    }
+}
+
+bool writeCsv(const std::string& path, std::span<const RunResult> results) {
+    struct Closer {
+        void operator()(std::FILE* file) const { std::fclose(file); }
+    };
+    std::unique_ptr<std::FILE, Closer> file(std::fopen(path.c_str(), "w"));
+    if (!file)
+        return false;
+    std::FILE* out = file.get();
+    std::fputs("scene,family,size,engine,bodies,warmup_steps,measured_steps,ms_per_step,"
+               "jostle_over_engine,bytes_per_body,top_drift,max_overlap,escaped\n",
+               out);
+    for (const RunResult& r : results) {
+        const std::optional<double> ratio = jostleRatio(results, r);
+        std::fprintf(out, "%s,%s,%d,%.*s,%d,%d,%d,%.6f,", r.caseName.c_str(), r.family.c_str(),
+                     r.size, static_cast<int>(name(r.engine).size()), name(r.engine).data(),
+                     r.bodies, r.warmupSteps, r.measuredSteps, r.msPerStep);
+        if (ratio)
+            std::fprintf(out, "%.6f", *ratio);
+        std::fprintf(out, ",%.1f,", r.bytesPerBody);
+        if (r.quality.topDrift)
+            std::fprintf(out, "%.6g", static_cast<double>(*r.quality.topDrift));
+        std::fprintf(out, ",%.6g,%d\n", static_cast<double>(r.quality.maxPenetration),
+                     r.quality.escaped);
+    }
+    const bool ok = std::fflush(out) == 0 && !std::ferror(out);
+    return std::fclose(file.release()) == 0 && ok;
+}
+
+} // namespace jostle::bench

@@ -1,0 +1,23 @@
+// bench/report.hpp: the results as a table for people (plain or markdown) and as CSV.
+#pragma once
+
+#include "runner.hpp"
+
+#include <cstdio>
+#include <optional>
+#include <span>
+#include <string>
+
+namespace jostle::bench {
+
+/// jostle's time (sleeping off) over this result's, for a peer of the same case:
+/// below 1, jostle is faster. Empty for jostle's own rows or when jostle did not run.
+std::optional<double> jostleRatio(std::span<const RunResult> all, const RunResult& result);
+
+/// The table, one row per result, in the order given. Markdown: a GitHub table.
+void printTable(std::FILE* out, std::span<const RunResult> results, bool markdown);
+
+/// Writes the results as CSV with a header row; false if the file cannot be written.
+bool writeCsv(const std::string& path, std::span<const RunResult> results);
+
+} // namespace jostle::bench

@@ -1,0 +1,39 @@
+// bench/runner.hpp: runs one scene in one engine and takes its figures.
+#pragma once
+
+#include "catalog.hpp"
+#include "engine.hpp"
+#include "quality.hpp"
+
+#include <string>
+
+namespace jostle::bench {
+
+struct RunLimits {
+    int warmup = 0; ///< steps before measuring, the same for every engine
+    int steps = 0;  ///< steps measured, unless the time limit stops it earlier
+    /// Measuring stops once the measured steps took this long (at least kMinSteps are
+    /// measured): a slow engine at 100,000 bodies gets fewer measured steps, in the same
+    /// run. Warm-up steps are never cut, so every engine is measured in the same state.
+    double maxSeconds = 0.0;
+    static constexpr int kMinSteps = 10;
+};
+
+struct RunResult {
+    std::string caseName;
+    std::string family;
+    int size = 0;
+    EngineKind engine = EngineKind::Jostle;
+    int bodies = 0;
+    int warmupSteps = 0;
+    int measuredSteps = 0;
+    double msPerStep = 0.0; ///< median of the measured steps
+    double bytesPerBody = 0.0;
+    Quality quality;
+};
+
+/// Builds the case's scene in `engine`, steps it `warmup` times, reads the heap, measures
+/// up to `steps` steps, and reads the final positions for the quality figures.
+RunResult run(const Case& c, const Scene& scene, EngineKind engine, const RunLimits& limits);
+
+} // namespace jostle::bench
