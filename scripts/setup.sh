@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# Installs what jostle needs to build and test, from Debian's packages. Safe to run
-# again: packages already there are not fetched twice.
+# Installs what jostle needs to build and test, from Debian's packages, and any further
+# packages named as arguments (scripts/bench.sh adds the peers). Safe to run again:
+# packages already there are not fetched twice.
 set -euo pipefail
 
 packages=(
@@ -8,6 +9,7 @@ packages=(
   libgtest-dev libgmock-dev  # tests
   nlohmann-json3-dev      # scene files
   libcli11-dev            # the jostle program's command line
+  "$@"
 )
 
 missing=()
