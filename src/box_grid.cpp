@@ -15,7 +15,7 @@ namespace {
 constexpr double kCellLimit = 1073741824.0;
 
 // A level is dense (an array of cells) when it has at most this many cells per box.
-constexpr std::int64_t kDenseCellsPerBox = 8;
+constexpr std::int64_t kDenseCellsPerBox = 16;
 
 float sizeOf(const Bounds& box) {
     return std::max(box.max.x - box.min.x, box.max.y - box.min.y);
@@ -34,8 +34,11 @@ int BoxGrid::levelOf(const Bounds& box) const {
 
 BoxGrid::Cell BoxGrid::cellOf(Vec2 point, const Level& level) const {
     auto coordinate = [&](float value) {
-        const double cell = std::floor(double(value) * level.inverse);
-        return std::int32_t(std::clamp(cell, -kCellLimit, kCellLimit));
+        // floor() by hand: truncate, then step down for negative fractions. (std::floor
+        // is a library call on baseline x86-64, and this runs for every box and query.)
+        const double cell = std::clamp(double(value) * level.inverse, -kCellLimit, kCellLimit);
+        const auto truncated = std::int32_t(cell);
+        return truncated - std::int32_t(double(truncated) > cell);
     };
     return {coordinate(point.x), coordinate(point.y)};
 }
@@ -127,7 +130,8 @@ void BoxGrid::build(const std::vector<Bounds>& boxes) {
         levels_[k].begin = counts[k];
         levels_[k].end = counts[k + 1];
     }
-    std::vector<std::uint32_t> byLevel(n);
+    std::vector<std::uint32_t>& byLevel = byLevel_;
+    byLevel.resize(n);
     for (std::uint32_t i = 0; i < n; ++i)
         byLevel[counts[levelOfBox_[i]]++] = i;
 
@@ -166,7 +170,8 @@ void BoxGrid::build(const std::vector<Bounds>& boxes) {
             for (std::size_t c = 0; c < cells; ++c)
                 starts[c + 1] += starts[c];
             // Fill through a moving copy of the starts, keeping insertion order in a cell.
-            std::vector<std::uint32_t> fill(starts, starts + cells);
+            std::vector<std::uint32_t>& fill = fill_;
+            fill.assign(starts, starts + cells);
             for (std::uint32_t m = level.begin; m < level.end; ++m)
                 sorted_[fill[cellIndex(byLevel[m])]++] = byLevel[m];
         } else {
@@ -181,6 +186,13 @@ void BoxGrid::build(const std::vector<Bounds>& boxes) {
         }
     }
 
+    sortedBoxes_.resize(n);
+    sortedCells_.resize(n);
+    for (std::size_t k = 0; k < n; ++k) {
+        sortedBoxes_[k] = boxes_[sorted_[k]];
+        sortedCells_[k] = cellOfBox_[sorted_[k]];
+    }
+
     // The hash table of the sparse levels' cells: one slot per run of equal cells.
     table_.assign(std::bit_ceil(std::max<std::size_t>(2, 2 * hashedRuns)), HashSlot{});
     tableShift_ = 64 - std::countr_zero(table_.size());
@@ -190,10 +202,9 @@ void BoxGrid::build(const std::vector<Bounds>& boxes) {
         if (level.dense || level.begin == level.end)
             continue;
         for (std::uint32_t m = level.begin; m < level.end;) {
-            const Cell c = cellOfBox_[sorted_[m]];
+            const Cell c = sortedCells_[m];
             std::uint32_t last = m + 1;
-            while (last < level.end && cellOfBox_[sorted_[last]].x == c.x &&
-                   cellOfBox_[sorted_[last]].y == c.y)
+            while (last < level.end && sortedCells_[last].x == c.x && sortedCells_[last].y == c.y)
                 ++last;
             std::size_t slot = hashOf(k, c) & mask;
             while (table_[slot].level >= 0)

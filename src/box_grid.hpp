@@ -92,10 +92,16 @@ private:
     /// that come after its own cell (and after it in its own cell).
     template <class Visit> void pairsWithinLevel(int level, Visit&& visit) const;
 
-    std::vector<Bounds> boxes_;
+    std::vector<Bounds> boxes_; ///< as given: bounds(i)
     std::vector<std::uint8_t> levelOfBox_;
     std::vector<Cell> cellOfBox_;
-    std::vector<std::uint32_t> sorted_;     ///< box indices by level, then cell, then index
+    std::vector<std::uint32_t> byLevel_; ///< build's scratch
+    std::vector<std::uint32_t> fill_;    ///< build's scratch
+    std::vector<std::uint32_t> sorted_;  ///< box indices by level, then cell, then index
+    /// The boxes and their cells in the order of sorted_, so that the scans of a cell's
+    /// boxes read memory in order.
+    std::vector<Bounds> sortedBoxes_;
+    std::vector<Cell> sortedCells_;
     std::vector<std::uint32_t> cellStarts_; ///< dense levels: first box of each cell
     std::vector<HashSlot> table_;           ///< hashed levels: open addressing
     int tableShift_ = 63;
@@ -117,7 +123,7 @@ void BoxGrid::visitLevel(int levelIndex, const Bounds& query, Visit&& visit) con
         (double(high.x) - double(fromX) + 1) * (double(high.y) - double(fromY) + 1);
     if (cells > double(level.end - level.begin)) {
         for (std::uint32_t k = level.begin; k < level.end; ++k)
-            if (touches(boxes_[sorted_[k]], query))
+            if (touches(sortedBoxes_[k], query))
                 visit(sorted_[k]);
         return;
     }
@@ -126,7 +132,7 @@ void BoxGrid::visitLevel(int levelIndex, const Bounds& query, Visit&& visit) con
             std::uint32_t first, last;
             run(levelIndex, x, y, first, last);
             for (std::uint32_t k = first; k < last; ++k)
-                if (touches(boxes_[sorted_[k]], query))
+                if (touches(sortedBoxes_[k], query))
                     visit(sorted_[k]);
         }
     }
@@ -136,13 +142,13 @@ template <class Visit> void BoxGrid::pairsWithinLevel(int levelIndex, Visit&& vi
     const Level& level = levels_[levelIndex];
     for (std::uint32_t k = level.begin; k < level.end; ++k) {
         const std::uint32_t i = sorted_[k];
-        const Bounds& box = boxes_[i];
-        const Cell home = cellOfBox_[i];
+        const Bounds& box = sortedBoxes_[k];
+        const Cell home = sortedCells_[k];
         // The boxes after it in its own cell.
         std::uint32_t first, last;
         run(levelIndex, home.x, home.y, first, last);
         for (std::uint32_t m = k + 1; m < last; ++m)
-            if (touches(box, boxes_[sorted_[m]]))
+            if (touches(box, sortedBoxes_[m]))
                 visit(i, sorted_[m]);
         // Touching boxes have cells at most one apart on each axis (either way: the
         // relation is symmetric), so each pair is reported by the box whose cell comes
@@ -151,7 +157,7 @@ template <class Visit> void BoxGrid::pairsWithinLevel(int levelIndex, Visit&& vi
         for (const auto& offset : after) {
             run(levelIndex, home.x + offset[0], home.y + offset[1], first, last);
             for (std::uint32_t m = first; m < last; ++m)
-                if (touches(box, boxes_[sorted_[m]]))
+                if (touches(box, sortedBoxes_[m]))
                     visit(i, sorted_[m]);
         }
     }
@@ -168,12 +174,18 @@ template <class Visit> void BoxGrid::forEachPair(Visit&& visit) const {
         pairsWithinLevel(__builtin_ctzll(used), visit);
     // Across levels: the finer box looks into the coarser levels, so each pair is found
     // once.
-    for (std::uint32_t i = 0; i < boxes_.size(); ++i) {
-        const int level = levelOfBox_[i];
+    for (std::uint64_t finer = usedLevels_; finer != 0; finer &= finer - 1) {
+        const int level = __builtin_ctzll(finer);
         const std::uint64_t coarser =
             level + 1 < kLevels ? usedLevels_ >> (level + 1) << (level + 1) : 0;
-        for (std::uint64_t used = coarser; used != 0; used &= used - 1)
-            visitLevel(__builtin_ctzll(used), boxes_[i], [&](std::uint32_t j) { visit(i, j); });
+        if (coarser == 0)
+            break;
+        for (std::uint32_t k = levels_[level].begin; k < levels_[level].end; ++k) {
+            const std::uint32_t i = sorted_[k];
+            for (std::uint64_t used = coarser; used != 0; used &= used - 1)
+                visitLevel(__builtin_ctzll(used), sortedBoxes_[k],
+                           [&](std::uint32_t j) { visit(i, j); });
+        }
     }
 }
 

@@ -87,10 +87,10 @@ public:
         w_.refreshRestingGrid();
         buildMovingGrid();
         std::vector<std::uint32_t> toWake;
+        // The moving grid holds its bodies in creation order: the smaller index is `a`.
         w_.movingGrid.forEachPair([&](std::uint32_t i, std::uint32_t j) {
-            const std::uint32_t a = w_.movingSlots[i], b = w_.movingSlots[j];
-            if (w_.slots[a].isDynamic() || w_.slots[b].isDynamic())
-                add(a, b);
+            if (w_.movingDynamic[i] || w_.movingDynamic[j])
+                pairs_.push_back({w_.movingSlots[std::min(i, j)], w_.movingSlots[std::max(i, j)]});
         });
         for (std::uint32_t i = 0; i < w_.movingSlots.size(); ++i) {
             const std::uint32_t a = w_.movingSlots[i];
@@ -114,12 +114,14 @@ public:
 private:
     void buildMovingGrid() {
         w_.movingSlots.clear();
+        w_.movingDynamic.clear();
         std::vector<Bounds>& bounds_ = w_.boundsScratch;
         bounds_.clear();
         for (BodyId id : w_.order) {
             const Body& body = w_.slots[id.index];
             if (!w_.isResting(body)) {
                 w_.movingSlots.push_back(id.index);
+                w_.movingDynamic.push_back(body.isDynamic());
                 bounds_.push_back(reach(body, dt_));
             }
         }

@@ -20,12 +20,13 @@ struct SolverBody {
 };
 
 struct Contact {
-    std::uint32_t a, b;   ///< slots
-    std::uint32_t ia, ib; ///< solver bodies
-    Vec2 normal;          ///< unit, along x or y, pointing from b towards a
-    /// The normal as the passes use it: the axis (0: x, 1: y) and its sign; the tangent
-    /// is the other axis, with its own sign (the normal turned a quarter, (-ny, nx)).
-    int axis;
+    std::uint32_t ia, ib; ///< solver bodies; a is the body created first
+    /// The normal points from b towards a along one axis (0: x, 1: y), with this sign;
+    /// the tangent is the other axis, with its own sign (the normal turned a quarter,
+    /// (-ny, nx)).
+    std::uint8_t axis;
+    /// Which body is held fixed across support levels: 0 none, 1 a, 2 b.
+    std::uint8_t supporter = 0;
     float sign, tangentSign;
     float extent; ///< sum of the half extents along the normal
     float slop;   ///< overlap left alone
@@ -38,11 +39,8 @@ struct Contact {
     float normalImpulse = 0.0f;
     float tangentImpulse = 0.0f;
     float bounceSpeed = 0.0f; ///< to remember: bounce at this speed next step
-    /// Which body is held fixed across support levels: 0 none, 1 a, 2 b.
-    int supporter = 0;
-    std::uint32_t level = 0;  ///< the lower support level of the two
-    float correctionA = 0.0f; ///< distance moved out by position correction, for separation()
-    float correctionB = 0.0f;
+
+    Vec2 normal() const { return axis == 0 ? Vec2{sign, 0.0f} : Vec2{0.0f, sign}; }
 };
 
 /// What the physical model remembers of a contact from one step to the next, to start
@@ -62,29 +60,39 @@ struct CachedContact {
 /// slot (a counting sort, rebuilt every step), so a lookup scans the few contacts of one
 /// body, and lookups in creation order walk the table front to back. Never iterated for
 /// results, so nothing of its layout can leak into them.
+///
+/// Rebuilt in place from this step's contacts, with no second copy: a counting pass
+/// (count(a) for each), then a filling pass (add(a, b, contact) for each, same order).
 class ContactCache {
 public:
     /// Empties the cache.
     void clear();
-    /// Stages one contact of this step; commit() makes the staged contacts the cache.
-    void stage(std::uint32_t a, std::uint32_t b, const CachedContact& contact);
-    /// Replaces the cache with the staged contacts, for a world of `slotCount` slots.
-    void commit(std::size_t slotCount);
     const CachedContact* find(std::uint32_t a, std::uint32_t b) const;
+
+    /// Starts a rebuild for a world of `slotCount` slots; the old contents are gone.
+    void beginRebuild(std::size_t slotCount);
+    /// Counting pass: one more contact whose first body is `a`.
+    void count(std::uint32_t a) { ++offsets_[a + 1]; }
+    /// Ends the counting pass.
+    void endCounting();
+    /// Filling pass: the contacts counted, in the same order.
+    void add(std::uint32_t a, std::uint32_t b, const CachedContact& contact);
+    /// Ends the rebuild.
+    void endRebuild();
 
 private:
     struct Entry {
-        std::uint32_t a = 0, b = 0;
+        std::uint32_t b = 0;
         CachedContact contact;
     };
     std::vector<std::uint32_t> offsets_; ///< by slot a: its first entry; size slotCount + 1
     std::vector<Entry> entries_;
-    std::vector<Entry> staged_;
 };
 
 /// Buffers of the physical step, reused from step to step.
 struct PhysicalScratch {
-    std::vector<Contact> contacts, sorted;
+    std::vector<Contact> contacts;
+    std::vector<std::uint32_t> destination; ///< where the support sort moves each contact
     std::vector<SolverBody> bodies;
     std::vector<std::uint32_t> solverIndex; ///< by slot
     std::vector<std::uint32_t> levels;      ///< support level by solver body

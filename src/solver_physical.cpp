@@ -66,9 +66,15 @@ public:
         }
         for (int i = 0; i < options_.positionIterations; ++i)
             correctPositions();
-        for (const SolverBody& body : bodies_)
-            if (body.invMass > 0.0f)
-                w_.slots[body.slot].position = {body.position[0], body.position[1]};
+        for (const SolverBody& body : bodies_) {
+            if (body.invMass > 0.0f) {
+                // What position correction moved the body is part of its separation.
+                Body& written = w_.slots[body.slot];
+                const Vec2 corrected{body.position[0], body.position[1]};
+                written.separation += corrected - written.position;
+                written.position = corrected;
+            }
+        }
         remember();
         if (w_.def.sleeping)
             fallAsleep();
@@ -138,9 +144,6 @@ private:
                 continue;
 
             Contact c;
-            c.a = pair.a;
-            c.b = pair.b;
-            c.normal = normal;
             c.axis = alongX ? 0 : 1;
             c.sign = alongX ? normal.x : normal.y;
             c.tangentSign = alongX ? normal.x : -normal.y;
@@ -240,25 +243,36 @@ private:
             }
         }
         // A stable counting sort by level; unsupported contacts (floating piles) last.
+        // Contacts are large: the sort finds each one's destination, then moves them
+        // there in place, along the cycles of the permutation.
         std::uint32_t top = 0;
+        auto levelOf = [&](const Contact& c) { return std::min(levels_[c.ia], levels_[c.ib]); };
         for (Contact& c : contacts_) {
             const std::uint32_t la = levels_[c.ia];
             const std::uint32_t lb = levels_[c.ib];
-            c.level = std::min(la, lb);
             c.supporter = la < lb ? 1 : lb < la ? 2 : 0;
-            if (c.level != unsupported)
-                top = std::max(top, c.level + 1);
+            if (levelOf(c) != unsupported)
+                top = std::max(top, levelOf(c) + 1);
         }
         counts_.assign(std::size_t(top) + 2, 0);
-        auto bucket = [&](const Contact& c) { return c.level == unsupported ? top : c.level; };
+        auto bucket = [&](const Contact& c) {
+            const std::uint32_t level = levelOf(c);
+            return level == unsupported ? top : level;
+        };
         for (const Contact& c : contacts_)
             ++counts_[bucket(c) + 1];
         for (std::size_t i = 0; i + 1 < counts_.size(); ++i)
             counts_[i + 1] += counts_[i];
-        sorted_.resize(contacts_.size());
-        for (Contact& c : contacts_)
-            sorted_[counts_[bucket(c)]++] = c;
-        contacts_.swap(sorted_);
+        destination_.resize(contacts_.size());
+        for (std::size_t k = 0; k < contacts_.size(); ++k)
+            destination_[k] = counts_[bucket(contacts_[k])]++;
+        for (std::uint32_t k = 0; k < contacts_.size(); ++k) {
+            while (destination_[k] != k) {
+                const std::uint32_t to = destination_[k];
+                std::swap(contacts_[k], contacts_[to]);
+                std::swap(destination_[k], destination_[to]);
+            }
+        }
     }
 
     /// Applies `impulse` along the contact's normal (n = 0) or tangent (n = 1) axis.
@@ -419,26 +433,30 @@ private:
             const float moveB = correction * shareB;
             a.position[c.axis] += c.sign * moveA;
             b.position[c.axis] -= c.sign * moveB;
-            c.correctionA += moveA;
-            c.correctionB += moveB;
         }
     }
 
     void remember() {
+        ContactCache& cache = w_.contactCache;
+        cache.beginRebuild(w_.slots.size());
+        for (const Contact& c : contacts_)
+            cache.count(bodies_[c.ia].slot);
+        cache.endCounting();
         for (const Contact& c : contacts_) {
-            Body& a = w_.slots[c.a];
-            Body& b = w_.slots[c.b];
+            const std::uint32_t slotA = bodies_[c.ia].slot, slotB = bodies_[c.ib].slot;
+            Body& a = w_.slots[slotA];
+            Body& b = w_.slots[slotB];
             // A pending bounce is kept only if the contact did stop the pair.
             const float bounceSpeed = c.normalImpulse > 0.0f ? c.bounceSpeed : 0.0f;
-            w_.contactCache.stage(c.a, c.b,
-                                  {a.generation, b.generation, c.normal, c.normalImpulse,
-                                   c.tangentImpulse, bounceSpeed});
-            // How far the contact pushed each body out this step: its impulse's share
-            // of the motion, and the position correction.
-            a.separation += c.normal * (c.normalImpulse * c.invMassA * dt_ + c.correctionA);
-            b.separation -= c.normal * (c.normalImpulse * c.invMassB * dt_ + c.correctionB);
+            cache.add(slotA, slotB,
+                      {a.generation, b.generation, c.normal(), c.normalImpulse, c.tangentImpulse,
+                       bounceSpeed});
+            // How far the contact's impulse pushed each body out this step (position
+            // correction was counted when it was written back).
+            a.separation += c.normal() * (c.normalImpulse * c.invMassA * dt_);
+            b.separation -= c.normal() * (c.normalImpulse * c.invMassB * dt_);
         }
-        w_.contactCache.commit(w_.slots.size());
+        cache.endRebuild();
     }
 
     /// Islands of awake dynamic bodies joined by contacts fall asleep together once every
@@ -462,10 +480,11 @@ private:
             body.sleepTime = length(body.velocity) < slow ? body.sleepTime + dt_ : 0.0f;
         }
         for (const Contact& c : contacts_) {
-            Body& a = w_.slots[c.a];
-            Body& b = w_.slots[c.b];
+            const std::uint32_t slotA = bodies_[c.ia].slot, slotB = bodies_[c.ib].slot;
+            Body& a = w_.slots[slotA];
+            Body& b = w_.slots[slotB];
             if (a.isDynamic() && b.isDynamic()) {
-                std::uint32_t ra = find(c.a), rb = find(c.b);
+                std::uint32_t ra = find(slotA), rb = find(slotB);
                 if (ra != rb) {
                     if (w_.rank[ra] > w_.rank[rb])
                         std::swap(ra, rb);
@@ -529,7 +548,7 @@ private:
     std::vector<std::uint32_t>& fill_ = w_.physical.fill;
     std::vector<std::uint32_t>& queue_ = w_.physical.queue;
     std::vector<std::uint32_t>& counts_ = w_.physical.counts;
-    std::vector<Contact>& sorted_ = w_.physical.sorted;
+    std::vector<std::uint32_t>& destination_ = w_.physical.destination;
     std::vector<std::uint32_t>& parent_ = w_.physical.parent;
     std::vector<float>& islandTime_ = w_.physical.islandTime;
     std::vector<std::uint32_t>& islandOf_ = w_.physical.islandOf;

@@ -85,7 +85,8 @@ struct WorldState {
     bool restingDirty = true;
     /// The broadphase of moving bodies (awake dynamic and kinematic), rebuilt every step.
     BoxGrid movingGrid;
-    std::vector<std::uint32_t> movingSlots;
+    std::vector<std::uint32_t> movingSlots;  ///< grid index -> slot, in creation order
+    std::vector<std::uint8_t> movingDynamic; ///< grid index -> is the body dynamic
 
     /// Counts changes made to bodies through the API (see disturb), so that a step can
     /// tell that a callback moved something under its feet.
