@@ -84,6 +84,13 @@ private:
     void run(int level, std::int64_t x, std::int64_t y, std::uint32_t& first,
              std::uint32_t& last) const;
 
+    /// Calls visit(k) for every position k in sorted_ of the boxes in cells x0..x1 of row
+    /// y of `level`. A dense level stores a row's cells one after another, so that is
+    /// one run of sorted_; a hashed level looks each cell up.
+    template <class Visit>
+    void forEachInRow(int level, std::int64_t y, std::int64_t x0, std::int64_t x1,
+                      Visit&& visit) const;
+
     /// Calls visit(i) for every box of `level` that touches `query`, looking at the window
     /// of cells that may hold one, or at all of the level's boxes when that is fewer.
     template <class Visit> void visitLevel(int level, const Bounds& query, Visit&& visit) const;
@@ -128,13 +135,34 @@ void BoxGrid::visitLevel(int levelIndex, const Bounds& query, Visit&& visit) con
         return;
     }
     for (std::int64_t y = fromY; y <= high.y; ++y) {
-        for (std::int64_t x = fromX; x <= high.x; ++x) {
-            std::uint32_t first, last;
-            run(levelIndex, x, y, first, last);
-            for (std::uint32_t k = first; k < last; ++k)
-                if (touches(sortedBoxes_[k], query))
-                    visit(sorted_[k]);
-        }
+        forEachInRow(levelIndex, y, fromX, high.x, [&](std::uint32_t k) {
+            if (touches(sortedBoxes_[k], query))
+                visit(sorted_[k]);
+        });
+    }
+}
+
+template <class Visit>
+void BoxGrid::forEachInRow(int levelIndex, std::int64_t y, std::int64_t x0, std::int64_t x1,
+                           Visit&& visit) const {
+    const Level& level = levels_[levelIndex];
+    if (level.dense) {
+        const std::int64_t row = y - level.low.y;
+        const std::int64_t from = std::max<std::int64_t>(x0 - level.low.x, 0);
+        const std::int64_t to = std::min<std::int64_t>(x1 - level.low.x, level.width - 1);
+        if (row < 0 || row >= level.height || from > to)
+            return;
+        const std::size_t cell = level.cellStart + std::size_t(row * level.width + from);
+        const std::uint32_t last = cellStarts_[cell + std::size_t(to - from) + 1];
+        for (std::uint32_t k = cellStarts_[cell]; k < last; ++k)
+            visit(k);
+        return;
+    }
+    for (std::int64_t x = x0; x <= x1; ++x) {
+        std::uint32_t first, last;
+        run(levelIndex, x, y, first, last);
+        for (std::uint32_t k = first; k < last; ++k)
+            visit(k);
     }
 }
 
@@ -144,22 +172,18 @@ template <class Visit> void BoxGrid::pairsWithinLevel(int levelIndex, Visit&& vi
         const std::uint32_t i = sorted_[k];
         const Bounds& box = sortedBoxes_[k];
         const Cell home = sortedCells_[k];
-        // The boxes after it in its own cell.
-        std::uint32_t first, last;
-        run(levelIndex, home.x, home.y, first, last);
-        for (std::uint32_t m = k + 1; m < last; ++m)
-            if (touches(box, sortedBoxes_[m]))
-                visit(i, sorted_[m]);
         // Touching boxes have cells at most one apart on each axis (either way: the
-        // relation is symmetric), so each pair is reported by the box whose cell comes
-        // first in row order: these four neighbours come after this cell.
-        constexpr std::int64_t after[4][2] = {{1, 0}, {-1, 1}, {0, 1}, {1, 1}};
-        for (const auto& offset : after) {
-            run(levelIndex, home.x + offset[0], home.y + offset[1], first, last);
-            for (std::uint32_t m = first; m < last; ++m)
-                if (touches(box, sortedBoxes_[m]))
-                    visit(i, sorted_[m]);
-        }
+        // relation is symmetric), so each pair is reported by the box that comes first
+        // in sorted order (cells in row order): the boxes after it in its own cell, and
+        // those of the four neighbour cells that come after its cell: one to the right in
+        // its row, three in the next row.
+        auto test = [&](std::uint32_t m) {
+            if (m > k && touches(box, sortedBoxes_[m]))
+                visit(i, sorted_[m]);
+        };
+        forEachInRow(levelIndex, home.y, home.x, std::int64_t(home.x) + 1, test);
+        forEachInRow(levelIndex, std::int64_t(home.y) + 1, std::int64_t(home.x) - 1,
+                     std::int64_t(home.x) + 1, test);
     }
 }
 

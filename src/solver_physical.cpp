@@ -64,8 +64,9 @@ public:
             body.position[0] = w_.slots[body.slot].position.x;
             body.position[1] = w_.slots[body.slot].position.y;
         }
-        for (int i = 0; i < options_.positionIterations; ++i)
-            correctPositions();
+        // A pass that moved nothing leaves the next one nothing to do.
+        for (int i = 0; i < options_.positionIterations && correctPositions(); ++i) {
+        }
         for (const SolverBody& body : bodies_) {
             if (body.invMass > 0.0f) {
                 // What position correction moved the body is part of its separation.
@@ -407,7 +408,9 @@ private:
         }
     }
 
-    void correctPositions() {
+    /// One pass of position correction; false if it moved no body.
+    bool correctPositions() {
+        bool moved = false;
         for (Contact& c : contacts_) {
             SolverBody& a = bodies_[c.ia];
             SolverBody& b = bodies_[c.ib];
@@ -433,7 +436,9 @@ private:
             const float moveB = correction * shareB;
             a.position[c.axis] += c.sign * moveA;
             b.position[c.axis] -= c.sign * moveB;
+            moved = true;
         }
+        return moved;
     }
 
     void remember() {
