@@ -72,8 +72,12 @@ public:
                 // What position correction moved the body is part of its separation.
                 Body& written = w_.slots[body.slot];
                 const Vec2 corrected{body.position[0], body.position[1]};
-                written.separation += corrected - written.position;
+                const Vec2 moved = corrected - written.position;
+                written.separation += moved;
                 written.position = corrected;
+                // Still being pushed out of an overlap: not at rest, whatever its speed.
+                if (length(moved) > kSleepSpeed * std::min(written.half.x, written.half.y) * dt_)
+                    written.sleepTime = 0.0f;
             }
         }
         remember();
@@ -140,8 +144,13 @@ private:
             const Vec2 normal = alongX ? Vec2{d.x < 0.0f ? -1.0f : 1.0f, 0.0f}
                                        : Vec2{0.0f, d.y < 0.0f ? -1.0f : 1.0f};
             const float approach = dot(a.velocity - b.velocity, normal);
-            // Apart, and not closing the gap within this step: no contact.
-            if (gap > 0.0f && gap + approach * dt_ > 0.0f)
+            // Apart, and neither moving fast enough towards the other to close the gap
+            // within this step: no contact. Each body's own speed counts, not only the
+            // pair's: two boxes falling together do not approach, but when the lower one
+            // lands the upper one must be stopped too, in this very step.
+            const float towardB = std::max(0.0f, -dot(a.velocity, normal));
+            const float towardA = std::max(0.0f, dot(b.velocity, normal));
+            if (gap > 0.0f && gap > (towardA + towardB) * dt_)
                 continue;
 
             Contact c;
@@ -252,6 +261,14 @@ private:
             const std::uint32_t la = levels_[c.ia];
             const std::uint32_t lb = levels_[c.ib];
             c.supporter = la < lb ? 1 : lb < la ? 2 : 0;
+            // A body holds the other up only from below: one reached through a sideways
+            // contact (a box leaning on a wall) is not a floor. Counting it as one, a box
+            // between two supporters would be pushed both ways by position correction,
+            // and stay squeezed. (Without gravity there is no below: levels alone decide.)
+            const float down = dot(c.normal(), w_.def.gravity); // > 0: a is below b
+            if (w_.def.gravity != Vec2{} && ((c.supporter == 1 && !(down > 0.0f)) ||
+                                             (c.supporter == 2 && !(down < 0.0f))))
+                c.supporter = 0;
             if (levelOf(c) != unsupported)
                 top = std::max(top, levelOf(c) + 1);
         }

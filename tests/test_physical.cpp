@@ -310,6 +310,47 @@ TEST(Stacks, AHeavyBoxDroppedOnALightOneNeitherSinksNorTunnels) {
     EXPECT_NEAR(world.position(heavy).y, -15.0f, 0.1f);
 }
 
+// Two boxes falling together do not approach each other; when the lower one lands, the
+// upper one must be stopped in the same step, or it travels a whole step's fall into it.
+TEST(Stacks, BoxesFallingTogetherLandWithoutSinkingIntoEachOther) {
+    World world = physicalWorld({0, 10});
+    world.createBody({.type = BodyType::Static, .x = 0, .y = 1, .hw = 10, .hh = 1});
+    // 0.3 above the floor and 0.25 apart, at 40 units/s: 0.67 a step, more than either gap.
+    BodyId lower = world.createBody({.x = 0, .y = -1.3f, .hw = 1, .hh = 1, .vy = 40});
+    BodyId upper = world.createBody({.x = 0, .y = -3.55f, .hw = 1, .hh = 1, .vy = 40});
+    for (int i = 0; i < 120; ++i) {
+        world.step(1.0f / 60.0f);
+        // Resting contact may overlap by up to twice the slop (0.01 × the half extent 1).
+        ASSERT_LE(overlapY(world, upper, lower), 0.02f + 1e-5f) << "step " << i;
+    }
+}
+
+// A small box squeezed between two wide ones, the upper of which also leans on a wall
+// (a sideways contact with a static body): the wall is not a floor, so the upper box
+// must not be held in place while the small one is pushed out of both.
+World squeezedBetweenTwo(bool sleeping, BodyId& below, BodyId& middle, BodyId& above) {
+    World world(WorldDef{.gravity = {0, 10}, .sleeping = sleeping});
+    world.createBody({.type = BodyType::Static, .x = 0, .y = 1, .hw = 10, .hh = 1});
+    world.createBody({.type = BodyType::Static, .x = 3, .y = -5, .hw = 1, .hh = 5});
+    // Each overlapping the next by 1.0 along y; the top one touches the wall's side.
+    below = world.createBody({.x = 0, .y = -1.5f, .hw = 2, .hh = 1.5f});
+    middle = world.createBody({.x = 0, .y = -3.2f, .hw = 0.75f, .hh = 1.2f});
+    above = world.createBody({.x = 0, .y = -4.7f, .hw = 2, .hh = 1.3f});
+    return world;
+}
+
+TEST(Stacks, ABoxSqueezedBetweenTwoIsPushedOutOfBoth) {
+    for (bool sleeping : {false, true}) {
+        BodyId below, middle, above;
+        World world = squeezedBetweenTwo(sleeping, below, middle, above);
+        for (int i = 0; i < 600; ++i)
+            world.step(1.0f / 60.0f);
+        // Twice the slop of the pair: 0.01 × the smaller half height, 1.2.
+        EXPECT_LE(overlapY(world, middle, below), 0.024f + 1e-5f) << "sleeping " << sleeping;
+        EXPECT_LE(overlapY(world, above, middle), 0.024f + 1e-5f) << "sleeping " << sleeping;
+    }
+}
+
 // --- Seams between boxes placed edge to edge ------------------------------------------
 
 TEST(Seams, SlidingAcrossFloorBoxesPlacedEdgeToEdgeLosesNothing) {
