@@ -3,7 +3,7 @@
 
 #include "catalog.hpp"
 #include "engine.hpp"
-#include "quality.hpp"
+#include "samples/quality.hpp"
 
 #include <string>
 
@@ -29,7 +29,7 @@ struct RunResult {
     int measuredSteps = 0;
     double msPerStep = 0.0; ///< median of the measured steps
     double bytesPerBody = 0.0;
-    Quality quality;
+    samples::Quality quality;
 };
 
 /// Builds the case's scene in `engine`, steps it `warmup` times, reads the heap, measures

@@ -99,7 +99,10 @@ Scene rain(int count) {
     const float n = static_cast<float>(count);
     const float width = std::max(20.0f, std::round(16.0f * std::sqrt(n)));
     const float pileHeight = n * kMeanArea / (width * kPacking);
-    const float wallHeight = std::ceil(1.2f * pileHeight + 4.0f);
+    const int columns = std::max(1, static_cast<int>(width / kColumn));
+    // The loose columns are taller than the pile will be: walls above both.
+    const float columnHeight = n / static_cast<float>(columns) * (2.5f + kGap);
+    const float wallHeight = std::ceil(1.2f * std::max(pileHeight, columnHeight) + 4.0f);
 
     Scene scene = emptyScene({0.0f, kGravity});
     scene.bodies.reserve(static_cast<std::size_t>(count) + 3);
@@ -109,11 +112,12 @@ Scene rain(int count) {
         add(scene,
             staticBox(side * (0.5f * width + kWall), -0.5f * wallHeight, kWall, 0.5f * wallHeight));
 
-    // Boxes in columns, each column a stack with kGap between boxes, starting 1 unit above
-    // the walls' top. Box i goes to column i % columns, so the columns fill evenly.
-    const int columns = std::max(1, static_cast<int>(width / kColumn));
+    // Boxes in columns inside the container, each column a stack with kGap between
+    // boxes, starting 1 unit above the floor: they land within a second or two and settle
+    // soon after, so a benchmark reaches the settled pile in a few hundred steps. Box i
+    // goes to column i % columns, so the columns fill evenly.
     const float left = -0.5f * static_cast<float>(columns) * kColumn;
-    std::vector<float> columnTop(static_cast<std::size_t>(columns), -wallHeight - 1.0f);
+    std::vector<float> columnTop(static_cast<std::size_t>(columns), -1.0f);
     Random random(0x5eed0001u);
     for (int i = 0; i < count; ++i) {
         const int column = i % columns;

@@ -38,11 +38,11 @@ Scene pyramid(int rows);
 /// count >= 1, rows >= 1.
 Scene manyPyramids(int count, int rows);
 
-/// `count` boxes of mixed sizes (half extents 0.5 to 2, not square), in columns above an
-/// open-top container of static boxes, falling into it. The container's floor is about
-/// 16 √count units wide, so the pile is about 30 boxes deep at 10,000 and 70 at 100,000;
-/// the boxes need about 4 s (10,000) to 8 s (100,000) to land, and a second more to
-/// settle. count >= 1.
+/// `count` boxes of mixed sizes (half extents 0.5 to 2, not square) dropped in loose
+/// columns (a quarter unit between boxes) into an open-top container of static boxes,
+/// whose floor is about 16 √count units wide. They land within 2 s (10,000) to 3 s
+/// (100,000) and settle into a pile about 30 (10,000) to 90 (100,000) boxes deep.
+/// count >= 1.
 Scene rain(int count);
 
 /// `count` unit boxes in a closed static box, no gravity, friction 0 and bounce 1 for
