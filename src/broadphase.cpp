@@ -47,6 +47,10 @@ void WorldState::wakeIsland(std::uint32_t slot) {
 }
 
 void WorldState::wakeTouching(const Bounds& bounds) {
+    // Nobody asleep, nobody to wake: and no need to bring the resting grid up to date,
+    // which would make creating n static bodies cost n rebuilds.
+    if (islands.size() == freeIslands.size())
+        return;
     refreshRestingGrid();
     std::vector<std::uint32_t> sleepers;
     restingGrid.query(bounds, [&](std::uint32_t i) {

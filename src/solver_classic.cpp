@@ -104,14 +104,21 @@ private:
     void buildGrids() {
         // Static bodies have their own grid in the world, rebuilt only when they change.
         w_.refreshRestingGrid();
-        // Kinematic bodies where they are now; dynamic bodies where they start the step,
-        // which is where the later ones still are when an earlier one meets them.
+        // Kinematic bodies over the step they have just made (where they are now, and
+        // for the ccd option's sweeps where they were); dynamic bodies where they start
+        // the step, which is where the later ones still are when an earlier one meets
+        // them.
         std::vector<Bounds> kinematic, dynamic;
         kinematicSlots_.clear();
         for (std::uint32_t s : statics_) {
-            if (w_.slots[s].type == BodyType::Kinematic) {
+            const Body& k = w_.slots[s];
+            if (k.type == BodyType::Kinematic) {
                 kinematicSlots_.push_back(s);
-                kinematic.push_back(w_.slots[s].bounds());
+                const Vec2 back = k.velocity * dt_;
+                kinematic.push_back({{std::min(k.position.x, k.position.x - back.x) - k.half.x,
+                                      std::min(k.position.y, k.position.y - back.y) - k.half.y},
+                                     {std::max(k.position.x, k.position.x - back.x) + k.half.x,
+                                      std::max(k.position.y, k.position.y - back.y) + k.half.y}});
             }
         }
         kinematicGrid_.build(kinematic);
@@ -219,39 +226,65 @@ private:
     // --- Continuous collision (the ccd option) -------------------------------------------
 
     /// Moves the body by v*dt, but stops it at the first static or kinematic body in its
-    /// way and responds there as solveCollision would, with that face's normal.
+    /// way and responds there as solveCollision would, with that face's normal; then goes
+    /// on with the rest of the step at the velocity the response left (sliding along a
+    /// floor, or bouncing off it), hitting what that meets in turn. After kMaxHits hits
+    /// in one step the body stays where the last one stopped it.
     Outcome sweepMove(std::uint32_t a) {
         refreshGrids();
-        Body& body = w_.slots[a];
-        const Vec2 motion = body.velocity * dt_;
+        float remaining = 1.0f; // of the step
+        for (int hits = 0; hits < kMaxHits && remaining > 0.0f; ++hits) {
+            Body& body = w_.slots[a];
+            const Vec2 motion = body.velocity * (dt_ * remaining);
+            const std::optional<std::pair<Hit, std::uint32_t>> first =
+                firstHit(a, motion, remaining);
+            if (!first) {
+                body.position += motion;
+                return Outcome::Kept;
+            }
+            const auto [hit, hitSlot] = *first;
+            body.position += motion * hit.time;
+            remaining *= 1.0f - hit.time;
+            const Vec2 va = body.velocity;
+            const Vec2 vb = w_.slots[hitSlot].velocity;
+            const float vx = va.x - vb.x;
+            const float vy = va.y - vb.y;
+            const float ps = vx * hit.normal.x + vy * hit.normal.y;
+            if (ps > 0.0f)
+                continue;
+            if (respond(a, hitSlot, hit.normal.x, hit.normal.y, vx, vy, ps, 0.0f) ==
+                Outcome::Destroyed)
+                return Outcome::Destroyed;
+        }
+        return Outcome::Kept;
+    }
+
+    /// The first static or kinematic body that `a` meets moving by `motion` over the last
+    /// `remaining` of the step. Kinematic bodies have already moved for the whole step:
+    /// each is swept back from where it was that much earlier, by its own velocity.
+    std::optional<std::pair<Hit, std::uint32_t>> firstHit(std::uint32_t a, Vec2 motion,
+                                                          float remaining) {
+        const Body& body = w_.slots[a];
         const Bounds swept{{std::min(body.position.x, body.position.x + motion.x) - body.half.x,
                             std::min(body.position.y, body.position.y + motion.y) - body.half.y},
                            {std::max(body.position.x, body.position.x + motion.x) + body.half.x,
                             std::max(body.position.y, body.position.y + motion.y) + body.half.y}};
+        // The kinematic grid holds each kinematic body's sweep over the step: whatever
+        // could cross the body's path is found.
         gatherStatics(swept, -1);
-        std::optional<Hit> first;
-        std::uint32_t hitSlot = 0;
+        std::optional<std::pair<Hit, std::uint32_t>> first;
         for (std::uint32_t s : candidates_) {
-            const std::optional<Hit> hit = sweepBox(body.box(), motion, w_.slots[s].box(), {});
-            if (hit && (!first || hit->time < first->time)) {
-                first = hit;
-                hitSlot = s;
-            }
+            const Body& obstacle = w_.slots[s];
+            const Vec2 obstacleMotion = obstacle.velocity * (dt_ * remaining);
+            const Box from{obstacle.position - obstacleMotion, obstacle.half};
+            const std::optional<Hit> hit = sweepBox(body.box(), motion - obstacleMotion, from, {});
+            if (hit && (!first || hit->time < first->first.time))
+                first = {{*hit, s}};
         }
-        if (!first) {
-            body.position += motion;
-            return Outcome::Kept;
-        }
-        body.position += motion * first->time;
-        const Vec2 va = body.velocity;
-        const Vec2 vb = w_.slots[hitSlot].velocity;
-        const float vx = va.x - vb.x;
-        const float vy = va.y - vb.y;
-        const float ps = vx * first->normal.x + vy * first->normal.y;
-        if (ps > 0.0f)
-            return Outcome::Kept;
-        return respond(a, hitSlot, first->normal.x, first->normal.y, vx, vy, ps, 0.0f);
+        return first;
     }
+
+    static constexpr int kMaxHits = 4;
 
     // --- The tutorial's checkCollision and solveCollision ---------------------------------
 

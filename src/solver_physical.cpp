@@ -266,8 +266,8 @@ private:
             // between two supporters would be pushed both ways by position correction,
             // and stay squeezed. (Without gravity there is no below: levels alone decide.)
             const float down = dot(c.normal(), w_.def.gravity); // > 0: a is below b
-            if (w_.def.gravity != Vec2{} && ((c.supporter == 1 && !(down > 0.0f)) ||
-                                             (c.supporter == 2 && !(down < 0.0f))))
+            if (w_.def.gravity != Vec2{} &&
+                ((c.supporter == 1 && !(down > 0.0f)) || (c.supporter == 2 && !(down < 0.0f))))
                 c.supporter = 0;
             if (levelOf(c) != unsupported)
                 top = std::max(top, levelOf(c) + 1);
@@ -370,14 +370,43 @@ private:
         }
     }
 
+    /// Sweeps the body along `motion`; at the first hit, moves it there and takes away
+    /// its velocity into the obstacle, then sweeps again along what is left of its
+    /// velocity (sliding along a floor into a wall, say). The step's own integration then
+    /// moves it by that velocity from there, a path just swept clear. If it still hits
+    /// something after kMaxHits sweeps, it stops where the last one left it.
     void sweep(std::uint32_t slot, Vec2 motion) {
         Body& body = w_.slots[slot];
+        for (int hits = 0; hits < kMaxHits; ++hits) {
+            const std::optional<std::pair<Hit, std::uint32_t>> first = firstHit(slot, motion);
+            if (!first)
+                return;
+            const auto [hit, hitSlot] = *first;
+            // Stop at the hit: move there now, and take away the part of the velocity that
+            // goes into the obstacle, so that the step's own motion starts from there.
+            // Where it touches the obstacle as the obstacle is now: the integration that
+            // follows moves both by their velocities, which the hit has made equal along
+            // the normal.
+            const Body& obstacle = w_.slots[hitSlot];
+            body.position += (motion - obstacle.velocity * dt_) * hit.time;
+            const float into = dot(body.velocity - obstacle.velocity, hit.normal);
+            if (into < 0.0f)
+                body.velocity -= hit.normal * into;
+            motion = body.velocity * dt_;
+        }
+        if (firstHit(slot, motion))
+            body.velocity = {};
+    }
+
+    /// The first body `slot` meets moving by `motion` this step: static and kinematic
+    /// ones, and dynamic ones too if it is a bullet.
+    std::optional<std::pair<Hit, std::uint32_t>> firstHit(std::uint32_t slot, Vec2 motion) {
+        const Body& body = w_.slots[slot];
         const Bounds swept{{std::min(body.position.x, body.position.x + motion.x) - body.half.x,
                             std::min(body.position.y, body.position.y + motion.y) - body.half.y},
                            {std::max(body.position.x, body.position.x + motion.x) + body.half.x,
                             std::max(body.position.y, body.position.y + motion.y) + body.half.y}};
-        std::optional<Hit> first;
-        std::uint32_t firstSlot = 0;
+        std::optional<std::pair<Hit, std::uint32_t>> first;
         auto consider = [&](std::uint32_t other) {
             const Body& obstacle = w_.slots[other];
             if (other == slot || !w_.isLive(other))
@@ -388,27 +417,22 @@ private:
             const Vec2 skin{skinOf(body.half.x, obstacle.half.x),
                             skinOf(body.half.y, obstacle.half.y)};
             const std::optional<Hit> hit = sweepBox(body.box(), relative, obstacle.box(), skin);
-            if (hit && (!first || hit->time < first->time)) {
-                first = hit;
-                firstSlot = other;
-            }
+            // Only what the body runs into: a kinematic body coming at it from behind is
+            // the contacts' business (they push it), not a reason to stop it.
+            if (!hit || dot(motion, hit->normal) >= 0.0f)
+                return;
+            if (!first || hit->time < first->first.time)
+                first = {{*hit, other}};
         };
         w_.restingGrid.query(swept, [&](std::uint32_t i) {
             if (w_.slots[w_.restingSlots[i]].type == BodyType::Static)
                 consider(w_.restingSlots[i]);
         });
         w_.movingGrid.query(swept, [&](std::uint32_t i) { consider(w_.movingSlots[i]); });
-        if (!first)
-            return;
-        // Stop at the first hit: move there now, and take away the part of the velocity
-        // that goes into the obstacle, so that the step's own motion starts from there.
-        const Body& obstacle = w_.slots[firstSlot];
-        const Vec2 relative = motion - obstacle.velocity * dt_;
-        body.position += relative * first->time;
-        const float into = dot(body.velocity - obstacle.velocity, first->normal);
-        if (into < 0.0f)
-            body.velocity -= first->normal * into;
+        return first;
     }
+
+    static constexpr int kMaxHits = 4;
 
     float skinOf(float halfA, float halfB) const {
         const float smaller = std::min(halfA, halfB);

@@ -318,7 +318,8 @@ bool World::isAwake(BodyId id) const {
 }
 
 void World::wake(BodyId id) {
-    lookUp(*state_, id, "wake").asleep = false;
+    lookUp(*state_, id, "wake");
+    state_->disturb(id.index); // its island, and the time it has been still, start over
 }
 
 void* World::userData(BodyId id) const {
@@ -343,8 +344,11 @@ void World::step(float dt) {
         fail("step", "dt must be a finite number > 0");
 
     StepScope scope(w);
+    // A sleeping body keeps the separation of its last awake step: what held it up
+    // still does ("grounded" stays true while it sleeps on the ground).
     for (BodyId id : w.order)
-        w.slots[id.index].separation = {};
+        if (!w.slots[id.index].asleep)
+            w.slots[id.index].separation = {};
     if (w.def.solver == Solver::Classic)
         stepClassic(w, dt);
     else

@@ -121,6 +121,28 @@ TEST(Sleeping, ABodyMovedByTheUserWakesWhatRestedOnIt) {
     EXPECT_NEAR(level.world.position(box).y, -5.0f, 0.1f); // fell to the floor
 }
 
+TEST(Sleeping, WakeWakesTheBodyForAWhile) {
+    Level level;
+    BodyId box = level.world.createBody({.x = 0, .y = -5, .hw = 5, .hh = 5});
+    level.run(2);
+    ASSERT_FALSE(level.world.isAwake(box));
+    level.world.wake(box);
+    EXPECT_TRUE(level.world.isAwake(box));
+    // Still at rest, it falls asleep again only after the half second of rest sleep needs.
+    level.run(0.25f);
+    EXPECT_TRUE(level.world.isAwake(box));
+}
+
+TEST(Sleeping, ASleepingBodyStillReadsAsGrounded) {
+    // separation() is how a game tells that a body stands on something; sleeping on the
+    // floor does not make it airborne.
+    Level level;
+    BodyId box = level.world.createBody({.x = 0, .y = -5, .hw = 5, .hh = 5});
+    level.run(3);
+    ASSERT_FALSE(level.world.isAwake(box));
+    EXPECT_LT(level.world.separation(box).y, 0.0f); // pushed up, out of the floor
+}
+
 TEST(Sleeping, CanBeTurnedOff) {
     World world{WorldDef{.gravity = {0, 800}, .sleeping = false}};
     world.createBody({.type = BodyType::Static, .x = 0, .y = 50, .hw = 1000, .hh = 50});
