@@ -26,7 +26,7 @@
 
 namespace jostle {
 
-/// How collisions are resolved (docs/models.md compares them).
+/// How collisions are resolved (docs/physical-model.md compares the two models).
 enum class Solver : std::uint8_t {
     /// The tutorial to the letter: each dynamic body, in creation order, moves and is
     /// pushed out of whatever it overlaps, one pair at a time.
@@ -96,7 +96,8 @@ struct WorldDef {
     ClassicOptions classic;
     PhysicalOptions physical;
     /// Bodies at rest for a while, and every body they touch, fall asleep together and
-    /// cost next to nothing until something wakes them (physical model only).
+    /// cost next to nothing (they are left out of the solver and the pair search) until
+    /// something wakes them (physical model only; docs/sleeping.md).
     bool sleeping = true;
 };
 
@@ -106,16 +107,21 @@ std::optional<FieldError> checkWorldDef(const WorldDef& def);
 /// A pair about to collide, as the solver sees it before it responds. The pre-solve
 /// callback may change bounce and friction, for this pair and this step only.
 struct Collision {
-    BodyId a;       ///< the body being resolved (classic: the dynamic body that moved)
-    BodyId b;       ///< the body it overlaps
-    Vec2 normal;    ///< unit normal, pointing from b towards a
-    float depth;    ///< how deep they overlap along the normal, > 0
+    BodyId a;    ///< classic: the dynamic body that moved; physical: the one created first
+    BodyId b;    ///< the other body
+    Vec2 normal; ///< unit normal, along x or y, pointing from b towards a
+    /// How deep they overlap along the normal. Negative for a pair still apart that will
+    /// meet within the step (the physical model's speculative contacts: -depth is the
+    /// gap); 0 where the classic ccd option's sweep stopped a body against another.
+    float depth;
     float bounce;   ///< max of the pair's bounce
-    float friction; ///< min of the pair's friction
+    float friction; ///< the pair's friction as the world mixes it (min, or geometric mean)
 };
 
-/// Called for every overlapping pair before it is resolved. Return false to let the pair
-/// pass through each other this time (a one-way platform, a ghost, a team mate).
+/// Called for every pair the solver is about to respond to (overlapping, touching, or
+/// in the physical model about to touch within the step) before it responds. Return
+/// false to let the pair pass through each other this time (a one-way platform, a ghost,
+/// a team mate).
 using PreSolveFn = std::function<bool(Collision&)>;
 
 class World {
@@ -184,10 +190,14 @@ public:
     bool isBullet(BodyId id) const;
     void setBullet(BodyId id, bool bullet);
     /// False while the body sleeps (see WorldDef::sleeping). Sleeping bodies wake when an
-    /// awake body touches them, when a setter changes them or a body they rest on, and
-    /// when such a body is destroyed.
+    /// awake body touches them; when a setter of their physics (type, position,
+    /// velocity, size, bounce, friction, mass, density, gravity scale, damping) changes
+    /// them or a body they rest on; when such a body is destroyed; and when the world's
+    /// gravity, model or sleeping setting changes. setBullet and setUserData wake nothing.
+    /// A sleeping body keeps the separation() of its last awake step.
     bool isAwake(BodyId id) const;
-    /// Wakes the body and everything it rests on or carries.
+    /// Wakes the body and everything it rests on or carries; it can fall asleep again
+    /// only after being at rest for the time sleep needs.
     void wake(BodyId id);
     void* userData(BodyId id) const;
     void setUserData(BodyId id, void* data);
