@@ -24,6 +24,11 @@ std::optional<BodyType> bodyTypeFromString(const std::string& name) {
     return std::nullopt;
 }
 
+bool isValidOneWay(Vec2 normal) {
+    const float ax = std::abs(normal.x), ay = std::abs(normal.y);
+    return (ax == 0.0f && ay == 0.0f) || (ax == 1.0f && ay == 0.0f) || (ax == 0.0f && ay == 1.0f);
+}
+
 std::optional<FieldError> checkBodyDef(const BodyDef& def) {
     if (def.type != BodyType::Static && def.type != BodyType::Kinematic &&
         def.type != BodyType::Dynamic)
@@ -44,6 +49,8 @@ std::optional<FieldError> checkBodyDef(const BodyDef& def) {
         {"density", def.density},
         {"gravityScale", def.gravityScale},
         {"damping", def.damping},
+        {"oneWay", def.oneWay.x},
+        {"oneWay", def.oneWay.y},
     };
     for (const auto& [field, value] : numbers)
         if (!std::isfinite(value))
@@ -63,6 +70,8 @@ std::optional<FieldError> checkBodyDef(const BodyDef& def) {
         return FieldError{"density", "must be > 0"};
     if (def.damping < 0.0f)
         return FieldError{"damping", "must be >= 0"};
+    if (!isValidOneWay(def.oneWay))
+        return FieldError{"oneWay", "must be [0, 0] or one of [1, 0], [-1, 0], [0, 1], [0, -1]"};
     // A body so large that its area overflows would get an infinite density mass.
     if (def.mass == 0.0f && !std::isfinite(4.0f * def.hw * def.hh * def.density))
         return FieldError{"density", "gives an infinite mass (density x area overflows)"};

@@ -38,7 +38,8 @@ struct Contact {
     float targetSpeed;
     float normalImpulse = 0.0f;
     float tangentImpulse = 0.0f;
-    float bounceSpeed = 0.0f; ///< to remember: bounce at this speed next step
+    float bounceSpeed = 0.0f;   ///< to remember: bounce at this speed next step
+    float approachSpeed = 0.0f; ///< how fast the pair closed when the step began (>= 0)
 
     Vec2 normal() const { return axis == 0 ? Vec2{sign, 0.0f} : Vec2{0.0f, sign}; }
 };

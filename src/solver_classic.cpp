@@ -57,6 +57,7 @@ public:
 
     void run() {
         w_.refreshRanks();
+        w_.events.beginStep(w_);
         // The tutorial keeps two lists, statics and dynamics, in creation order. Kinematic
         // bodies go with the statics: the dynamic bodies collide with them the same way.
         for (BodyId id : w_.order) {
@@ -289,12 +290,18 @@ private:
     // --- The tutorial's checkCollision and solveCollision ---------------------------------
 
     Outcome checkCollision(std::uint32_t ia, std::uint32_t ib) {
-        if (!w_.isLive(ib))
+        if (!w_.isLive(ib) || !canCollide(w_.slots[ia], w_.slots[ib]))
             return Outcome::Kept;
         const std::optional<Vec2> separation =
             shortestSeparation(w_.slots[ia].box(), w_.slots[ib].box());
         if (!separation)
             return Outcome::Kept;
+        // A sensor notes the overlap and pushes nothing.
+        if (w_.slots[ia].sensor || w_.slots[ib].sensor) {
+            if (w_.slots[ia].sensor != w_.slots[ib].sensor)
+                w_.slots[ia].sensor ? recordSensor(w_, ia, ib) : recordSensor(w_, ib, ia);
+            return Outcome::Kept;
+        }
         const float sx = separation->x;
         const float sy = separation->y;
 
@@ -336,6 +343,7 @@ private:
                 friction = std::clamp(c.friction, 0.0f, 1.0f);
         }
 
+        recordContact(w_, ia, ib, {nx, ny}, -ps);
         Body& ba = w_.slots[ia];
         Body& bb = w_.slots[ib];
         // separate the two objects: moveShape(a, sx, sy), with (sx, sy) = n * depth
@@ -395,6 +403,7 @@ private:
 
 void stepClassic(WorldState& world, float dt) {
     ClassicStep(world, dt).run();
+    world.events.publish(world);
 }
 
 } // namespace jostle

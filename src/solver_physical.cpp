@@ -42,10 +42,13 @@ public:
     PhysicalStep(WorldState& world, float dt) : w_(world), options_(world.def.physical), dt_(dt) {}
 
     void run() {
+        w_.events.beginStep(w_);
         for (BodyId id : w_.order) {
             Body& body = w_.slots[id.index];
-            if (body.isDynamic() && !body.asleep)
+            if (body.isDynamic() && !body.asleep) {
                 integrateVelocity(w_.def, body, dt_);
+                body.dropThroughTime = std::max(0.0f, body.dropThroughTime - dt_);
+            }
         }
         findPairs(w_, dt_, pairs_);
         solverIndex_.assign(w_.slots.size(), kNoSolverBody);
@@ -81,8 +84,10 @@ public:
             }
         }
         remember();
+        report();
         if (w_.def.sleeping)
             fallAsleep();
+        w_.events.publish(w_);
     }
 
 private:
@@ -122,15 +127,33 @@ private:
         return index;
     }
 
+    /// Whether one-way `platform` blocks `other`, which lies along `outward` from it (a
+    /// unit axis vector) with this gap between them at the start of the step: only on
+    /// its blocking face, only if `other` was wholly on that side (within the skin), and
+    /// not while `other` drops through on purpose.
+    static bool blocks(const Body& platform, const Body& other, Vec2 outward, float gap,
+                       float skin) {
+        return outward == platform.oneWay && gap >= -skin && other.dropThroughTime <= 0.0f;
+    }
+
     void buildContacts() {
         const float threshold = restitutionThreshold();
         contacts_.clear();
         contacts_.reserve(pairs_.size());
+        sensorPairs_.clear();
         for (const BodyPair& pair : pairs_) {
             if (!w_.isLive(pair.a) || !w_.isLive(pair.b))
                 continue; // destroyed by a callback earlier in this loop
             const Body& a = w_.slots[pair.a];
             const Body& b = w_.slots[pair.b];
+            if (!canCollide(a, b))
+                continue;
+            if (a.sensor || b.sensor) {
+                // Overlap is judged where the step leaves them (report()).
+                if (a.sensor != b.sensor)
+                    sensorPairs_.push_back(a.sensor ? pair : BodyPair{pair.b, pair.a});
+                continue;
+            }
             const Vec2 d = a.position - b.position;
             const float gapX = std::abs(d.x) - (a.half.x + b.half.x);
             const float gapY = std::abs(d.y) - (a.half.y + b.half.y);
@@ -152,8 +175,15 @@ private:
             const float towardA = std::max(0.0f, dot(b.velocity, normal));
             if (gap > 0.0f && gap > (towardA + towardB) * dt_)
                 continue;
+            // One-way platforms block only from their one side (the normal points from b
+            // towards a).
+            const float skin = alongX ? skinX : skinY;
+            if ((a.isOneWay() && !blocks(a, b, -normal, gap, skin)) ||
+                (b.isOneWay() && !blocks(b, a, normal, gap, skin)))
+                continue;
 
             Contact c;
+            c.approachSpeed = std::max(0.0f, -approach);
             c.axis = alongX ? 0 : 1;
             c.sign = alongX ? normal.x : normal.y;
             c.tangentSign = alongX ? normal.x : -normal.y;
@@ -411,7 +441,8 @@ private:
             const Body& obstacle = w_.slots[other];
             if (other == slot || !w_.isLive(other))
                 return;
-            if (obstacle.isDynamic() && !body.bullet)
+            if ((obstacle.isDynamic() && !body.bullet) || obstacle.sensor || body.sensor ||
+                !canCollide(body, obstacle))
                 return;
             const Vec2 relative = motion - obstacle.velocity * dt_;
             const Vec2 skin{skinOf(body.half.x, obstacle.half.x),
@@ -420,6 +451,11 @@ private:
             // Only what the body runs into: a kinematic body coming at it from behind is
             // the contacts' business (they push it), not a reason to stop it.
             if (!hit || dot(motion, hit->normal) >= 0.0f)
+                return;
+            // A one-way platform stops what meets its blocking face (having been on its
+            // side at the start of the sweep), unless it drops through on purpose.
+            if (obstacle.isOneWay() &&
+                (hit->normal != obstacle.oneWay || body.dropThroughTime > 0.0f))
                 return;
             if (!first || hit->time < first->first.time)
                 first = {{*hit, other}};
@@ -480,6 +516,78 @@ private:
             moved = true;
         }
         return moved;
+    }
+
+    /// Events of the step (docs/events.md): contacts that touch where the step leaves
+    /// them, sensor overlaps, bodies crushed by kinematic ones; touching flags.
+    void report() {
+        for (const Contact& c : contacts_) {
+            const std::uint32_t slotA = bodies_[c.ia].slot, slotB = bodies_[c.ib].slot;
+            const Body& a = w_.slots[slotA];
+            const Body& b = w_.slots[slotB];
+            const Vec2 d = a.position - b.position;
+            const float gap = c.sign * (c.axis == 0 ? d.x : d.y) - c.extent;
+            const float skin = std::max(2.0f * c.slop, kMinimumSkin * c.extent);
+            if (gap <= skin)
+                recordContact(w_, slotA, slotB, c.normal(), c.approachSpeed);
+            findCrush(c, slotA, slotB, -gap);
+        }
+        for (const BodyPair& pair : sensorPairs_) {
+            if (!w_.isLive(pair.a) || !w_.isLive(pair.b))
+                continue;
+            const Bounds sensor = w_.slots[pair.a].bounds();
+            const Bounds visitor = w_.slots[pair.b].bounds();
+            // Overlapping, not merely touching.
+            if (sensor.min.x < visitor.max.x && visitor.min.x < sensor.max.x &&
+                sensor.min.y < visitor.max.y && visitor.min.y < sensor.max.y)
+                recordSensor(w_, pair.a, pair.b);
+        }
+        reportCrushes();
+    }
+
+    /// A dynamic body that a kinematic body moving into it overlaps deeper than
+    /// kCrushDepth of its size: a candidate, crushed if something holds it on the other
+    /// side (reportCrushes).
+    void findCrush(const Contact& c, std::uint32_t slotA, std::uint32_t slotB, float overlap) {
+        const Body& a = w_.slots[slotA];
+        const Body& b = w_.slots[slotB];
+        const bool kinematicA = a.type == BodyType::Kinematic,
+                   kinematicB = b.type == BodyType::Kinematic;
+        if (kinematicA == kinematicB || (kinematicA ? !b.isDynamic() : !a.isDynamic()))
+            return;
+        const std::uint32_t body = kinematicA ? slotB : slotA;
+        const std::uint32_t by = kinematicA ? slotA : slotB;
+        // The direction from the kinematic body into the dynamic one.
+        const Vec2 into = kinematicA ? -c.normal() : c.normal();
+        const float half = c.axis == 0 ? w_.slots[body].half.x : w_.slots[body].half.y;
+        if (dot(w_.slots[by].velocity, into) > 0.0f && overlap > kCrushDepth * half)
+            crushCandidates_.push_back({body, by, into});
+    }
+
+    /// Each candidate with a contact on its far side, against something heavy (static,
+    /// kinematic, or resting on them: a supported body), is crushed.
+    void reportCrushes() {
+        if (crushCandidates_.empty())
+            return;
+        for (const CrushCandidate& candidate : crushCandidates_) {
+            for (const Contact& c : contacts_) {
+                const std::uint32_t slotA = bodies_[c.ia].slot, slotB = bodies_[c.ib].slot;
+                if (slotA != candidate.body && slotB != candidate.body)
+                    continue;
+                const std::uint32_t other = slotA == candidate.body ? slotB : slotA;
+                // The other body pushes back against the kinematic one's push.
+                const Vec2 push = slotA == candidate.body ? c.normal() : -c.normal();
+                if (other == candidate.by || dot(push, candidate.into) >= 0.0f)
+                    continue;
+                const bool heavy = !w_.slots[other].isDynamic() || c.supporter != 0;
+                if (heavy && c.normalImpulse > 0.0f) {
+                    w_.events.crushes.push_back(
+                        {w_.idOf(candidate.body), w_.idOf(candidate.by), w_.idOf(other)});
+                    break;
+                }
+            }
+        }
+        crushCandidates_.clear();
     }
 
     void remember() {
@@ -574,6 +682,17 @@ private:
             w_.restingDirty = true;
         }
     }
+
+    /// A body overlapped by a kinematic one deeper than this fraction of its half extent
+    /// is being crushed (if held on the other side): the solver could not push it out.
+    static constexpr float kCrushDepth = 0.1f;
+
+    struct CrushCandidate {
+        std::uint32_t body, by;
+        Vec2 into;
+    };
+    std::vector<CrushCandidate> crushCandidates_;
+    std::vector<BodyPair> sensorPairs_;
 
     /// Sleep when slower than this many half extents per second...
     static constexpr float kSleepSpeed = 0.05f;

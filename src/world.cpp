@@ -1,5 +1,5 @@
 // World: body storage, handles, argument checks and the step entry point.
-#include "world_state.hpp"
+#include "world_access.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -8,20 +8,6 @@
 namespace jostle {
 
 namespace {
-
-[[noreturn]] void fail(const char* function, const std::string& message) {
-    throw Error(std::string(function) + ": " + message);
-}
-
-void requireFinite(const char* function, const char* what, float value) {
-    if (!std::isfinite(value))
-        fail(function, std::string(what) + " must be a finite number");
-}
-
-void requireFinite(const char* function, const char* what, Vec2 value) {
-    if (!isFinite(value))
-        fail(function, std::string(what) + " must be finite numbers");
-}
 
 void requireUnit(const char* function, const char* what, float value) {
     if (!(value >= 0.0f && value <= 1.0f))
@@ -76,19 +62,6 @@ World& World::operator=(World&&) noexcept = default;
 
 // --- Handles ---------------------------------------------------------------------------
 
-namespace {
-
-Body& lookUp(WorldState& world, BodyId id, const char* function) {
-    if (id.isNull())
-        fail(function, "null BodyId");
-    if (id.index >= world.slots.size() || !world.slots[id.index].alive ||
-        world.slots[id.index].generation != id.generation)
-        fail(function, "stale or foreign BodyId (the body was destroyed or is not of this world)");
-    return world.slots[id.index];
-}
-
-} // namespace
-
 bool World::isValid(BodyId id) const {
     return !id.isNull() && id.index < state_->slots.size() && state_->slots[id.index].alive &&
            state_->slots[id.index].generation == id.generation;
@@ -128,8 +101,14 @@ BodyId World::createBody(const BodyDef& def) {
     body.damping = def.damping;
     body.userData = def.userData;
     body.bullet = def.bullet;
+    body.oneWay = def.oneWay;
+    body.category = def.category;
+    body.mask = def.mask;
+    body.sensor = def.sensor;
     updateMass(body);
 
+    if (slot < w.events.touching.size())
+        w.events.touching[slot] = 0; // the slot's last body's flags
     const BodyId id = w.idOf(slot);
     w.order.push_back(id);
     w.disturb(slot);
@@ -172,6 +151,10 @@ BodyDef World::bodyDef(BodyId id) const {
     def.gravityScale = b.gravityScale;
     def.damping = b.damping;
     def.bullet = b.bullet;
+    def.oneWay = b.oneWay;
+    def.category = b.category;
+    def.mask = b.mask;
+    def.sensor = b.sensor;
     def.userData = b.userData;
     return def;
 }
@@ -322,6 +305,53 @@ void World::wake(BodyId id) {
     state_->disturb(id.index); // its island, and the time it has been still, start over
 }
 
+Vec2 World::oneWay(BodyId id) const {
+    return lookUp(*state_, id, "oneWay").oneWay;
+}
+
+void World::setOneWay(BodyId id, Vec2 normal) {
+    Body& body = lookUp(*state_, id, "setOneWay");
+    if (!isValidOneWay(normal))
+        fail("setOneWay", "normal must be {0, 0} or one of {±1, 0}, {0, ±1}");
+    body.oneWay = normal;
+    state_->disturb(id.index);
+}
+
+void World::dropThrough(BodyId id, float seconds) {
+    Body& body = lookUp(*state_, id, "dropThrough");
+    if (!(seconds >= 0.0f) || !std::isfinite(seconds))
+        fail("dropThrough", "seconds must be a finite number >= 0");
+    body.dropThroughTime = seconds;
+    state_->disturb(id.index);
+}
+
+std::uint32_t World::category(BodyId id) const {
+    return lookUp(*state_, id, "category").category;
+}
+
+void World::setCategory(BodyId id, std::uint32_t bits) {
+    lookUp(*state_, id, "setCategory").category = bits;
+    state_->disturb(id.index);
+}
+
+std::uint32_t World::mask(BodyId id) const {
+    return lookUp(*state_, id, "mask").mask;
+}
+
+void World::setMask(BodyId id, std::uint32_t bits) {
+    lookUp(*state_, id, "setMask").mask = bits;
+    state_->disturb(id.index);
+}
+
+bool World::isSensor(BodyId id) const {
+    return lookUp(*state_, id, "isSensor").sensor;
+}
+
+void World::setSensor(BodyId id, bool sensor) {
+    lookUp(*state_, id, "setSensor").sensor = sensor;
+    state_->disturb(id.index);
+}
+
 void* World::userData(BodyId id) const {
     return lookUp(*state_, id, "userData").userData;
 }
@@ -332,6 +362,36 @@ void World::setUserData(BodyId id, void* data) {
 
 Vec2 World::separation(BodyId id) const {
     return lookUp(*state_, id, "separation").separation;
+}
+
+// --- Events ----------------------------------------------------------------------------
+
+std::span<const ContactEvent> World::contactBegins() const {
+    return state_->events.begins;
+}
+
+std::span<const ContactEvent> World::contactEnds() const {
+    return state_->events.ends;
+}
+
+std::span<const SensorEvent> World::sensorBegins() const {
+    return state_->events.sensorBegins;
+}
+
+std::span<const SensorEvent> World::sensorEnds() const {
+    return state_->events.sensorEnds;
+}
+
+std::span<const CrushEvent> World::crushes() const {
+    return state_->events.crushes;
+}
+
+Touching World::touching(BodyId id) const {
+    lookUp(*state_, id, "touching");
+    const std::vector<std::uint8_t>& flags = state_->events.touching;
+    const std::uint8_t bits = id.index < flags.size() ? flags[id.index] : 0;
+    return {(bits & kFloor) != 0, (bits & kCeiling) != 0, (bits & kWallLeft) != 0,
+            (bits & kWallRight) != 0};
 }
 
 // --- World settings and stepping -------------------------------------------------------
@@ -384,6 +444,7 @@ void World::setSolver(Solver solver) {
         fail("setSolver", "solver must be classic or physical");
     state_->def.solver = solver;
     state_->contactCache.clear();
+    state_->events.clear();
     wakeAll(*state_); // the classic model has no sleep
 }
 

@@ -3,6 +3,7 @@
 
 #include "box_grid.hpp"
 #include "collide.hpp"
+#include "events.hpp"
 #include "jostle/world.hpp"
 #include "physical_state.hpp"
 
@@ -29,7 +30,14 @@ struct Body {
     void* userData = nullptr;
     BodyType type = BodyType::Dynamic;
     bool bullet = false;
+    bool sensor = false;
     bool asleep = false;
+    /// One-way platform: outward normal of the blocking face, or {0, 0}.
+    Vec2 oneWay;
+    std::uint32_t category = 1;
+    std::uint32_t mask = 0xFFFFFFFF;
+    /// Seconds left during which this body falls through one-way platforms.
+    float dropThroughTime = 0.0f;
     /// Seconds this body has been slow enough to sleep.
     float sleepTime = 0.0f;
     /// While asleep: the index of its island in WorldState::islands.
@@ -40,9 +48,15 @@ struct Body {
     std::uint32_t generation = 1;
 
     bool isDynamic() const { return type == BodyType::Dynamic; }
+    bool isOneWay() const { return oneWay.x != 0.0f || oneWay.y != 0.0f; }
     Box box() const { return {position, half}; }
     Bounds bounds() const { return {position - half, position + half}; }
 };
+
+/// The filter rule: each one's category shares a bit with the other's mask.
+inline bool canCollide(const Body& a, const Body& b) {
+    return (a.category & b.mask) != 0 && (b.category & a.mask) != 0;
+}
 
 /// Two bodies that may touch: slot indices, `a` created before `b`.
 struct BodyPair {
@@ -96,7 +110,15 @@ struct WorldState {
     std::vector<std::vector<std::uint32_t>> islands;
     std::vector<std::uint32_t> freeIslands;
 
+    /// What the last step reported (docs/events.md).
+    StepEvents events;
+
     BodyId idOf(std::uint32_t slot) const { return {slot, slots[slot].generation}; }
+    /// True if `id` still names a live body (its slot not reused since).
+    bool isCurrent(BodyId id) const {
+        return id.index < slots.size() && slots[id.index].alive &&
+               slots[id.index].generation == id.generation;
+    }
     bool isLive(std::uint32_t slot) const { return slots[slot].alive; }
     bool isResting(const Body& body) const { return body.type == BodyType::Static || body.asleep; }
 

@@ -5,6 +5,8 @@
 // BodyId back: a small handle that the world checks on every use.
 #pragma once
 
+#include "jostle/math.hpp"
+
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -74,6 +76,20 @@ struct BodyDef {
     /// Every dynamic body is kept from passing through static and kinematic ones; a bullet
     /// is also swept against dynamic bodies, which costs more.
     bool bullet = false;
+    /// A one-way platform: the outward normal of its one blocking face, {0, -1} for a
+    /// jump-through platform in a y-down world (its top blocks). Others pass through it
+    /// from every other side, and land on the blocking face only if they were wholly on
+    /// its side when the step began. {0, 0} (the default): solid on every side. Must be
+    /// {0, 0} or one of {±1, 0}, {0, ±1}. docs/one-way-platforms.md.
+    Vec2 oneWay{};
+    /// Collision filtering: the category bits this body belongs to, and the categories
+    /// it collides with. Two bodies collide when each one's category shares a bit with
+    /// the other's mask. Queries filter with the same bits. docs/filtering.md.
+    std::uint32_t category = 1;
+    std::uint32_t mask = 0xFFFFFFFF;
+    /// A sensor detects overlaps and reports them (World::sensorBegins, sensorEnds),
+    /// but never pushes nor is pushed. docs/events.md.
+    bool sensor = false;
     /// Yours: jostle stores it and gives it back, nothing more.
     void* userData = nullptr;
 };
@@ -87,7 +103,10 @@ struct FieldError {
 
 /// The first problem with `def`, or nothing if World::createBody will accept it.
 /// The rules: every number finite; hw, hh, density > 0; mass, damping >= 0;
-/// bounce and friction in [0, 1].
+/// bounce and friction in [0, 1]; oneWay {0, 0} or a unit vector along x or y.
 std::optional<FieldError> checkBodyDef(const BodyDef& def);
+
+/// True if `normal` is acceptable as BodyDef::oneWay.
+bool isValidOneWay(Vec2 normal);
 
 } // namespace jostle

@@ -118,6 +118,38 @@ struct Collision {
     float friction; ///< the pair's friction as the world mixes it (min, or geometric mean)
 };
 
+/// Two bodies that started or stopped touching.
+struct ContactEvent {
+    BodyId a; ///< the body created first
+    BodyId b;
+    Vec2 normal; ///< unit, along x or y, pointing from b towards a
+    /// Begin: how fast they closed along the normal when they met (>= 0). End: 0.
+    float approachSpeed;
+};
+
+/// A body that started or stopped overlapping a sensor.
+struct SensorEvent {
+    BodyId sensor;
+    BodyId visitor;
+};
+
+/// A body squeezed between a kinematic body moving into it and something on the other
+/// side that would not give way (a static or kinematic body, or a pile resting on one).
+struct CrushEvent {
+    BodyId body;
+    BodyId by;      ///< the kinematic body pushing
+    BodyId against; ///< what is on the other side
+};
+
+/// What a body touched during the last step, relative to gravity: the floor is below,
+/// the direction gravity pulls (with no gravity: y grows downward, as on screen).
+struct Touching {
+    bool floor = false;
+    bool ceiling = false;
+    bool wallLeft = false;  ///< on the body's left, looking along gravity's "down"
+    bool wallRight = false; ///< on the body's right
+};
+
 /// Called for every pair the solver is about to respond to (overlapping, touching, or
 /// in the physical model about to touch within the step) before it responds. Return
 /// false to let the pair pass through each other this time (a one-way platform, a ghost,
@@ -202,10 +234,45 @@ public:
     void* userData(BodyId id) const;
     void setUserData(BodyId id, void* data);
 
+    /// See BodyDef::oneWay. Throws jostle::Error for a normal that is not {0, 0} or a
+    /// unit vector along x or y.
+    Vec2 oneWay(BodyId id) const;
+    void setOneWay(BodyId id, Vec2 normal);
+    /// Lets the body fall through every one-way platform for the next `seconds` (>= 0):
+    /// "down + jump" in a platformer. 0 ends it.
+    void dropThrough(BodyId id, float seconds);
+
+    /// See BodyDef::category and BodyDef::mask.
+    std::uint32_t category(BodyId id) const;
+    void setCategory(BodyId id, std::uint32_t bits);
+    std::uint32_t mask(BodyId id) const;
+    void setMask(BodyId id, std::uint32_t bits);
+    /// See BodyDef::sensor.
+    bool isSensor(BodyId id) const;
+    void setSensor(BodyId id, bool sensor);
+
     /// The sum of the separation vectors that pushed this body out of others during the
     /// last step. Pushed up by a floor in a y-down world means separation().y < 0: that
     /// is how a game tells that its character is standing on something.
     Vec2 separation(BodyId id) const;
+
+    // --- What the last step did (docs/events.md) --------------------------------------
+    //
+    // Each is an array filled by step() and kept until the next step(): read them after
+    // stepping. Pairs appear in a fixed order, the same run after run.
+
+    /// Pairs that started touching in the last step (sensors excluded).
+    std::span<const ContactEvent> contactBegins() const;
+    /// Pairs that stopped touching in the last step, or whose body was destroyed.
+    std::span<const ContactEvent> contactEnds() const;
+    /// A body started or stopped overlapping a sensor in the last step.
+    std::span<const SensorEvent> sensorBegins() const;
+    std::span<const SensorEvent> sensorEnds() const;
+    /// Bodies squeezed in the last step between a moving kinematic body and something
+    /// that would not give way (physical model): the game decides (crush, or rescue).
+    std::span<const CrushEvent> crushes() const;
+    /// What the body touched in the last step, relative to gravity (physical model).
+    Touching touching(BodyId id) const;
 
     // --- The world ---------------------------------------------------------------------
 
@@ -233,6 +300,7 @@ public:
     void setPreSolve(PreSolveFn callback);
 
 private:
+    friend struct WorldAccess; // the internals' way in (src/world_access.hpp)
     std::unique_ptr<struct WorldState> state_;
 };
 

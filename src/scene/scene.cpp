@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <functional>
 #include <limits>
@@ -213,6 +214,25 @@ float readFloat(const Json& value, const std::string& place) {
     return static_cast<float>(number);
 }
 
+Vec2 readVec2(const Json& value, const std::string& place) {
+    if (!value.is_array())
+        fail(place, "expected an array of 2 numbers" + got(value));
+    if (value.size() != 2)
+        fail(place, "expected an array of 2 numbers, got " + std::to_string(value.size()) +
+                        (value.size() == 1 ? " number" : " numbers"));
+    return {readFloat(value[0], element(place, 0)), readFloat(value[1], element(place, 1))};
+}
+
+/// Bit fields (category, mask): a whole number from 0 to 2^32 - 1.
+std::uint32_t readBits(const Json& value, const std::string& place) {
+    if (!value.is_number_integer())
+        fail(place, "expected a whole number from 0 to 4294967295" + got(value));
+    if (value.is_number_unsigned() ? value.get<std::uint64_t>() > 0xFFFFFFFFull
+                                   : value.get<std::int64_t>() < 0)
+        fail(place, "must be a whole number from 0 to 4294967295");
+    return static_cast<std::uint32_t>(value.get<std::uint64_t>());
+}
+
 bool readBool(const Json& value, const std::string& place) {
     if (!value.is_boolean())
         fail(place, "expected true or false" + got(value));
@@ -290,6 +310,14 @@ SceneBody readBody(const Json& value, const std::string& place, std::size_t inde
             body.def.*member = readFloat(fieldValue, at);
         } else if (name == "bullet") {
             body.def.bullet = readBool(fieldValue, at);
+        } else if (name == "sensor") {
+            body.def.sensor = readBool(fieldValue, at);
+        } else if (name == "oneWay") {
+            body.def.oneWay = readVec2(fieldValue, at);
+        } else if (name == "category") {
+            body.def.category = readBits(fieldValue, at);
+        } else if (name == "mask") {
+            body.def.mask = readBits(fieldValue, at);
         } else {
             fail(place, "unknown field " + quoteName(name));
         }
@@ -333,15 +361,6 @@ std::vector<SceneBody> readBodies(const Json& value, const std::string& place) {
 }
 
 // --- The scene -----------------------------------------------------------------------
-
-Vec2 readVec2(const Json& value, const std::string& place) {
-    if (!value.is_array())
-        fail(place, "expected an array of 2 numbers" + got(value));
-    if (value.size() != 2)
-        fail(place, "expected an array of 2 numbers, got " + std::to_string(value.size()) +
-                        (value.size() == 1 ? " number" : " numbers"));
-    return {readFloat(value[0], element(place, 0)), readFloat(value[1], element(place, 1))};
-}
 
 /// An int option: a whole number. Those beyond an int are kept as INT_MIN or INT_MAX,
 /// which every int option's range (checked by checkWorldDef) refuses.

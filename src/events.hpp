@@ -1,0 +1,64 @@
+// What a step reports: contact and sensor events, crushes, touching flags. The solver
+// lists what touches at the end of the step; publish() compares that with what touched
+// at the end of the step before, and fills the arrays World hands out.
+#pragma once
+
+#include "jostle/world.hpp"
+
+#include <cstdint>
+#include <vector>
+
+namespace jostle {
+
+struct WorldState;
+
+/// A pair touching (or, for sensors, overlapping) at the end of a step.
+struct TouchRecord {
+    BodyId a, b; ///< contacts: a created first; sensors: a is the sensor
+    Vec2 normal;
+    float approachSpeed = 0.0f;
+
+    std::uint64_t key() const { return std::uint64_t(a.index) << 32 | b.index; }
+};
+
+/// Touching bits, by slot.
+enum TouchingBit : std::uint8_t {
+    kFloor = 1,
+    kCeiling = 2,
+    kWallLeft = 4,
+    kWallRight = 8,
+};
+
+struct StepEvents {
+    std::vector<ContactEvent> begins, ends;
+    std::vector<SensorEvent> sensorBegins, sensorEnds;
+    std::vector<CrushEvent> crushes;
+    /// TouchingBit flags by slot, from the last step that evaluated the body.
+    std::vector<std::uint8_t> touching;
+
+    /// Filled by the solver during a step: what touches (overlaps) at its end.
+    std::vector<TouchRecord> contactsNow, sensorsNow;
+
+    /// Empties the outputs and the lists of the step about to run.
+    void beginStep(const WorldState& world);
+    /// Turns this step's lists into begin and end events against the last step's, and
+    /// keeps them for the next step. Pairs that were not looked at this step (neither
+    /// body an awake dynamic one: a sleeping pile on its floor) carry over unchanged.
+    void publish(const WorldState& world);
+    /// Forgets everything (the model changed).
+    void clear();
+
+private:
+    std::vector<TouchRecord> contactsBefore_, sensorsBefore_;
+};
+
+/// Records that two bodies touch at the end of this step: `normal` points from `other`
+/// towards `body`, `approachSpeed` is how fast they closed. Sets both bodies' touching
+/// flags.
+void recordContact(WorldState& world, std::uint32_t body, std::uint32_t other, Vec2 normal,
+                   float approachSpeed);
+
+/// Records that `visitor` overlaps `sensor` at the end of this step.
+void recordSensor(WorldState& world, std::uint32_t sensor, std::uint32_t visitor);
+
+} // namespace jostle

@@ -1,0 +1,49 @@
+// The way in to a World's state for the parts of the library that live outside world.cpp
+// (queries, tile maps): World keeps its state private, and befriends this alone.
+#pragma once
+
+#include "jostle/world.hpp"
+#include "world_state.hpp"
+
+#include <cmath>
+#include <string>
+
+namespace jostle {
+
+struct WorldAccess {
+    static WorldState& state(World& world) { return *world.state_; }
+    static const WorldState& state(const World& world) { return *world.state_; }
+};
+
+// --- Argument checks shared by every API function: misuse throws jostle::Error --------
+
+/// Throws jostle::Error("function: message").
+[[noreturn]] inline void fail(const char* function, const std::string& message) {
+    throw Error(std::string(function) + ": " + message);
+}
+
+inline void requireFinite(const char* function, const char* what, float value) {
+    if (!std::isfinite(value))
+        fail(function, std::string(what) + " must be a finite number");
+}
+
+inline void requireFinite(const char* function, const char* what, Vec2 value) {
+    if (!isFinite(value))
+        fail(function, std::string(what) + " must be finite numbers");
+}
+
+/// The live body `id` names, or jostle::Error (null, stale or foreign handle).
+inline Body& lookUp(WorldState& world, BodyId id, const char* function) {
+    if (id.isNull())
+        fail(function, "null BodyId");
+    if (id.index >= world.slots.size() || !world.slots[id.index].alive ||
+        world.slots[id.index].generation != id.generation)
+        fail(function, "stale or foreign BodyId (the body was destroyed or is not of this world)");
+    return world.slots[id.index];
+}
+
+inline const Body& lookUp(const WorldState& world, BodyId id, const char* function) {
+    return lookUp(const_cast<WorldState&>(world), id, function);
+}
+
+} // namespace jostle
