@@ -48,6 +48,9 @@ struct StepEvents {
     /// Forgets everything (the model changed).
     void clear();
 
+    /// The pairs that touched at the end of the last step.
+    const std::vector<TouchRecord>& touchingBefore() const { return contactsBefore_; }
+
 private:
     std::vector<TouchRecord> contactsBefore_, sensorsBefore_;
 };

@@ -43,6 +43,7 @@ public:
 
     void run() {
         w_.events.beginStep(w_);
+        carryRiders();
         for (BodyId id : w_.order) {
             Body& body = w_.slots[id.index];
             if (body.isDynamic() && !body.asleep) {
@@ -85,6 +86,11 @@ public:
         }
         remember();
         report();
+        for (BodyId id : w_.order) {
+            Body& body = w_.slots[id.index];
+            if (body.type == BodyType::Kinematic)
+                body.lastStepVelocity = body.velocity;
+        }
         if (w_.def.sleeping)
             fallAsleep();
         w_.events.publish(w_);
@@ -125,6 +131,38 @@ private:
                                slot});
         }
         return index;
+    }
+
+    /// A body standing on a kinematic body at the end of the last step gets whatever
+    /// velocity the kinematic body gained since (the game changed it): riders stay put
+    /// on a platform that starts, stops or turns, and do not lift off one that starts
+    /// down. Friction alone would let them slide until it caught up. Each rider follows
+    /// the first platform it stands on, in pair order.
+    void carryRiders() {
+        const Vec2 g = w_.def.gravity;
+        if (g == Vec2{})
+            return; // nothing stands on anything without gravity
+        carried_.assign(w_.slots.size(), 0);
+        for (const TouchRecord& record : w_.events.touchingBefore()) {
+            if (!w_.isCurrent(record.a) || !w_.isCurrent(record.b))
+                continue;
+            Body& a = w_.slots[record.a.index];
+            Body& b = w_.slots[record.b.index];
+            const bool aRides = a.isDynamic() && b.type == BodyType::Kinematic;
+            const bool bRides = b.isDynamic() && a.type == BodyType::Kinematic;
+            if (!aRides && !bRides)
+                continue;
+            Body& rider = aRides ? a : b;
+            const Body& platform = aRides ? b : a;
+            // The normal points from b towards a: the push the rider gets from below.
+            const Vec2 up = aRides ? record.normal : -record.normal;
+            const Vec2 change = platform.velocity - platform.lastStepVelocity;
+            const std::uint32_t riderSlot = aRides ? record.a.index : record.b.index;
+            if (dot(up, g) >= 0.0f || change == Vec2{} || carried_[riderSlot])
+                continue;
+            carried_[riderSlot] = 1;
+            rider.velocity += change;
+        }
     }
 
     /// Whether one-way `platform` blocks `other`, which lies along `outward` from it (a
@@ -693,6 +731,7 @@ private:
     };
     std::vector<CrushCandidate> crushCandidates_;
     std::vector<BodyPair> sensorPairs_;
+    std::vector<std::uint8_t> carried_; ///< by slot: already given its platform's change
 
     /// Sleep when slower than this many half extents per second...
     static constexpr float kSleepSpeed = 0.05f;

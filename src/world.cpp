@@ -102,6 +102,7 @@ BodyId World::createBody(const BodyDef& def) {
     body.userData = def.userData;
     body.bullet = def.bullet;
     body.oneWay = def.oneWay;
+    body.lastStepVelocity = body.velocity;
     body.category = def.category;
     body.mask = def.mask;
     body.sensor = def.sensor;
@@ -172,6 +173,7 @@ void World::setType(BodyId id, BodyType type) {
     b.type = type;
     if (type == BodyType::Static)
         b.velocity = {};
+    b.lastStepVelocity = b.velocity;
     updateMass(b);
     state_->disturb(id.index);
 }

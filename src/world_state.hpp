@@ -38,6 +38,9 @@ struct Body {
     std::uint32_t mask = 0xFFFFFFFF;
     /// Seconds left during which this body falls through one-way platforms.
     float dropThroughTime = 0.0f;
+    /// Kinematic bodies: the velocity they moved with in the last step, to hand what
+    /// changed since to their riders.
+    Vec2 lastStepVelocity;
     /// Seconds this body has been slow enough to sleep.
     float sleepTime = 0.0f;
     /// While asleep: the index of its island in WorldState::islands.
