@@ -276,6 +276,8 @@ private:
         std::optional<std::pair<Hit, std::uint32_t>> first;
         for (std::uint32_t s : candidates_) {
             const Body& obstacle = w_.slots[s];
+            if (obstacle.sensor || body.sensor || !canCollide(body, obstacle))
+                continue;
             const Vec2 obstacleMotion = obstacle.velocity * (dt_ * remaining);
             const Box from{obstacle.position - obstacleMotion, obstacle.half};
             const std::optional<Hit> hit = sweepBox(body.box(), motion - obstacleMotion, from, {});
