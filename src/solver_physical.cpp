@@ -560,15 +560,16 @@ private:
     /// them, sensor overlaps, bodies crushed by kinematic ones; touching flags.
     void report() {
         for (const Contact& c : contacts_) {
-            const std::uint32_t slotA = bodies_[c.ia].slot, slotB = bodies_[c.ib].slot;
-            const Body& a = w_.slots[slotA];
-            const Body& b = w_.slots[slotB];
-            const Vec2 d = a.position - b.position;
-            const float gap = c.sign * (c.axis == 0 ? d.x : d.y) - c.extent;
+            // The solver bodies hold where the step leaves every body of a contact.
+            const SolverBody& a = bodies_[c.ia];
+            const SolverBody& b = bodies_[c.ib];
+            const float gap = c.sign * (a.position[c.axis] - b.position[c.axis]) - c.extent;
             const float skin = std::max(2.0f * c.slop, kMinimumSkin * c.extent);
             if (gap <= skin)
-                recordContact(w_, slotA, slotB, c.normal(), c.approachSpeed);
-            findCrush(c, slotA, slotB, -gap);
+                recordContact(w_, a.slot, b.slot, c.normal(), c.approachSpeed);
+            // Only a dynamic body against an infinitely heavy one can be crushed.
+            if ((c.invMassA == 0.0f) != (c.invMassB == 0.0f))
+                findCrush(c, a.slot, b.slot, -gap);
         }
         for (const BodyPair& pair : sensorPairs_) {
             if (!w_.isLive(pair.a) || !w_.isLive(pair.b))

@@ -7,37 +7,47 @@
 #include "jostle/world.hpp"
 #include "physical_state.hpp"
 
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
 namespace jostle {
 
-/// One body as the solvers see it.
-struct Body {
+/// One body as the solvers see it. What finding and building contacts reads comes first
+/// and fills one cache line (the struct is aligned to it): a step visits bodies in pair
+/// order, not in memory order, and each visit should cost one line, not two.
+struct alignas(64) Body {
+    // --- Read for every pair ---
     Vec2 position;
     Vec2 velocity;
     Vec2 half;
-    /// Sum of the separation vectors applied to this body during the last step.
-    Vec2 separation;
     /// 0 for static and kinematic bodies: infinitely heavy.
     float invMass = 0.0f;
     float bounce = 0.0f;
     float friction = 0.0f;
+    std::uint32_t category = 1;
+    std::uint32_t mask = 0xFFFFFFFF;
+    /// One-way platform: outward normal of the blocking face, or {0, 0}.
+    Vec2 oneWay;
+    /// Counts the slot's reuses; a BodyId matches only the generation it was made with.
+    std::uint32_t generation = 1;
+    /// Seconds left during which this body falls through one-way platforms.
+    float dropThroughTime = 0.0f;
+    BodyType type = BodyType::Dynamic;
+    /// The slot holds a live body. Cleared at once by destroyBody, even mid-step.
+    bool alive = false;
+    bool sensor = false;
+    bool asleep = false;
+
+    // --- Read once a step, or less ---
+    bool bullet = false;
+    /// Sum of the separation vectors applied to this body during the last step.
+    Vec2 separation;
     float mass = 0.0f; ///< explicit mass, or 0 for density × area
     float density = 1.0f;
     float gravityScale = 1.0f;
     float damping = 0.0f;
     void* userData = nullptr;
-    BodyType type = BodyType::Dynamic;
-    bool bullet = false;
-    bool sensor = false;
-    bool asleep = false;
-    /// One-way platform: outward normal of the blocking face, or {0, 0}.
-    Vec2 oneWay;
-    std::uint32_t category = 1;
-    std::uint32_t mask = 0xFFFFFFFF;
-    /// Seconds left during which this body falls through one-way platforms.
-    float dropThroughTime = 0.0f;
     /// Kinematic bodies: the velocity they moved with in the last step, to hand what
     /// changed since to their riders.
     Vec2 lastStepVelocity;
@@ -45,16 +55,14 @@ struct Body {
     float sleepTime = 0.0f;
     /// While asleep: the index of its island in WorldState::islands.
     std::uint32_t island = 0;
-    /// The slot holds a live body. Cleared at once by destroyBody, even mid-step.
-    bool alive = false;
-    /// Counts the slot's reuses; a BodyId matches only the generation it was made with.
-    std::uint32_t generation = 1;
 
     bool isDynamic() const { return type == BodyType::Dynamic; }
     bool isOneWay() const { return oneWay.x != 0.0f || oneWay.y != 0.0f; }
     Box box() const { return {position, half}; }
     Bounds bounds() const { return {position - half, position + half}; }
 };
+
+static_assert(offsetof(Body, asleep) < 64, "the hot part of Body fits one cache line");
 
 /// The filter rule: each one's category shares a bit with the other's mask.
 inline bool canCollide(const Body& a, const Body& b) {
