@@ -83,6 +83,27 @@ void BoxGrid::run(int levelIndex, std::int64_t x, std::int64_t y, std::uint32_t&
     }
 }
 
+int BoxGrid::mergedLevels(double base) const {
+    // How many boxes each of the first levels would hold; the last count, all the rest.
+    std::size_t counts[kMaxMerged + 2] = {};
+    for (const Bounds& box : boxes_) {
+        int level = 0;
+        for (double size = base; level <= kMaxMerged && size < double(sizeOf(box)); size *= 2.0)
+            ++level;
+        ++counts[level];
+    }
+    // Merge the first levels into one when together they hold most boxes: a world of
+    // boxes of nearly one size (grown by their motion, some cross a doubling) then has
+    // one level, and no box looks into another level for its neighbours.
+    std::size_t held = 0;
+    for (int merged = 0; merged <= kMaxMerged; ++merged) {
+        held += counts[merged];
+        if (double(held) >= kMergedShare * double(boxes_.size()))
+            return merged;
+    }
+    return 0; // sizes spread out: the levels as they are
+}
+
 void BoxGrid::build(const std::vector<Bounds>& boxes) {
     boxes_ = boxes;
     const std::size_t n = boxes_.size();
@@ -106,6 +127,7 @@ void BoxGrid::build(const std::vector<Bounds>& boxes) {
     const double tiny = double(std::numeric_limits<float>::min());
     double base = std::max(double(smallest), tiny) * 1.25;
     base = std::max(base, std::ldexp(std::max(double(largest), tiny), -(kLevels - 2)));
+    base = std::ldexp(base, mergedLevels(base));
     for (int k = 0; k < kLevels; ++k) {
         levels_[k].size = std::ldexp(base, k);
         levels_[k].inverse = 1.0 / levels_[k].size;
