@@ -6,6 +6,7 @@
 #include "events.hpp"
 #include "jostle/world.hpp"
 #include "physical_state.hpp"
+#include "tilemap.hpp"
 
 #include <cstddef>
 #include <cstdint>
@@ -123,6 +124,9 @@ struct WorldState {
 
     /// What the last step reported (docs/events.md).
     StepEvents events;
+
+    /// The tile maps and the bodies they are made of (jostle/tilemap.hpp).
+    TileMaps tileMaps;
 
     BodyId idOf(std::uint32_t slot) const { return {slot, slots[slot].generation}; }
     /// True if `id` still names a live body (its slot not reused since).

@@ -1,0 +1,427 @@
+// Tile maps: solid tiles merged into few static boxes, and rebuilt around a tile when it
+// changes (docs/tilemaps.md). The boxes are made and unmade through World's API, so a
+// tile map's bodies are ordinary static bodies to everything else in the library.
+#include "tilemap.hpp"
+
+#include "world_access.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+
+namespace jostle {
+
+namespace {
+
+/// Columns [begin, end) of one row.
+struct Run {
+    int begin;
+    int end;
+    int width() const { return end - begin; }
+};
+
+std::string describe(int column, int row) {
+    return "column " + std::to_string(column) + ", row " + std::to_string(row);
+}
+
+/// A character as a message shows it: 'x' if printable ASCII, else its byte in hex (a
+/// tab, or the first byte of a UTF-8 sequence).
+std::string describeChar(char c) {
+    const auto byte = static_cast<unsigned char>(c);
+    if (byte >= 0x20 && byte < 0x7F)
+        return std::string("'") + c + "'";
+    const char* digits = "0123456789ABCDEF";
+    return std::string("byte 0x") + digits[byte >> 4] + digits[byte & 0xF];
+}
+
+TileMapData& lookUp(WorldState& world, TileMapId id, const char* function) {
+    if (id.isNull())
+        fail(function, "null TileMapId");
+    std::vector<TileMapData>& maps = world.tileMaps.maps;
+    if (id.index >= maps.size() || !maps[id.index].alive ||
+        maps[id.index].generation != id.generation)
+        fail(function,
+             "stale or foreign TileMapId (the map was destroyed or is not of this world)");
+    return maps[id.index];
+}
+
+const TileMapData& lookUp(const WorldState& world, TileMapId id, const char* function) {
+    return lookUp(const_cast<WorldState&>(world), id, function);
+}
+
+/// The run of `row` through `column`, a solid tile.
+Run runThrough(const TileMapData& map, int column, int row) {
+    Run run{column, column + 1};
+    while (run.begin > 0 && map.isSolid(run.begin - 1, row))
+        --run.begin;
+    while (run.end < map.columns && map.isSolid(run.end, row))
+        ++run.end;
+    return run;
+}
+
+/// True if `row` exists and `run` is one of its runs, exactly.
+bool hasRun(const TileMapData& map, int row, Run run) {
+    if (row < 0 || row >= map.rows)
+        return false;
+    for (int column = run.begin; column < run.end; ++column)
+        if (!map.isSolid(column, row))
+            return false;
+    return (run.begin == 0 || !map.isSolid(run.begin - 1, row)) &&
+           (run.end == map.columns || !map.isSolid(run.end, row));
+}
+
+/// Makes and unmakes the boxes of one map, keeping its bookkeeping (boxAt, bodies, the
+/// world's owners table) in step with the world's bodies.
+class Boxes {
+public:
+    Boxes(World& world, TileMapId id)
+        : world_(world), state_(WorldAccess::state(world)), map_(state_.tileMaps.maps[id.index]),
+          id_(id) {}
+
+    void add(TileBox box) {
+        box.body = world_.createBody(bodyDefOf(box));
+        std::int32_t slot;
+        if (!map_.freeBoxes.empty()) {
+            slot = map_.freeBoxes.back();
+            map_.freeBoxes.pop_back();
+        } else {
+            slot = static_cast<std::int32_t>(map_.boxes.size());
+            map_.boxes.emplace_back();
+        }
+        map_.boxes[static_cast<std::size_t>(slot)] = box;
+        label(box, slot);
+        map_.bodies.push_back(box.body);
+        state_.tileMaps.owners[box.body.index] = {box.body, id_};
+    }
+
+    /// Removes the box holding the solid tile (column, row); returns what it was.
+    TileBox remove(int column, int row) {
+        const std::int32_t slot = map_.boxAt[map_.at(column, row)];
+        const TileBox box = map_.boxes[static_cast<std::size_t>(slot)];
+        label(box, TileMapData::kNoBox);
+        map_.freeBoxes.push_back(slot);
+        forget(box.body);
+        return box;
+    }
+
+    /// The box holding (column, row) if that tile is solid and its box has exactly the
+    /// columns of `run`.
+    std::optional<TileBox> boxOf(int column, int row, Run run) const {
+        if (row < 0 || row >= map_.rows)
+            return std::nullopt;
+        const std::int32_t slot = map_.boxAt[map_.at(column, row)];
+        if (slot == TileMapData::kNoBox)
+            return std::nullopt;
+        const TileBox& box = map_.boxes[static_cast<std::size_t>(slot)];
+        if (box.column != run.begin || box.columns != run.width())
+            return std::nullopt;
+        return box;
+    }
+
+    /// Destroys every box's body, in creation order.
+    void removeAll() {
+        for (BodyId body : std::vector<BodyId>(map_.bodies))
+            forget(body);
+    }
+
+private:
+    BodyDef bodyDefOf(const TileBox& box) const {
+        // Edges in double, from the tile counts, so that boxes of different rows that
+        // share an edge get the very same float for it wherever floats allow.
+        const TileMapDef& s = map_.settings;
+        const double tile = static_cast<double>(s.tile);
+        const double left = static_cast<double>(s.x) + box.column * tile;
+        const double right = static_cast<double>(s.x) + (box.column + box.columns) * tile;
+        const double top = static_cast<double>(s.y) + box.row * tile;
+        const double bottom = static_cast<double>(s.y) + (box.row + box.rows) * tile;
+        return BodyDef{.type = BodyType::Static,
+                       .x = static_cast<float>((left + right) / 2),
+                       .y = static_cast<float>((top + bottom) / 2),
+                       .hw = static_cast<float>((right - left) / 2),
+                       .hh = static_cast<float>((bottom - top) / 2),
+                       .bounce = s.bounce,
+                       .friction = s.friction,
+                       .oneWay = s.oneWay,
+                       .category = s.category,
+                       .mask = s.mask,
+                       .sensor = s.sensor,
+                       .userData = s.userData};
+    }
+
+    void label(const TileBox& box, std::int32_t slot) {
+        for (int row = box.row; row < box.row + box.rows; ++row)
+            std::fill_n(map_.boxAt.begin() + static_cast<std::ptrdiff_t>(map_.at(box.column, row)),
+                        box.columns, slot);
+    }
+
+    /// Destroys the body (unless the game already did) and drops it from the records.
+    void forget(BodyId body) {
+        if (world_.isValid(body))
+            world_.destroyBody(body);
+        map_.bodies.erase(std::find(map_.bodies.begin(), map_.bodies.end(), body));
+        const auto owner = state_.tileMaps.owners.find(body.index);
+        if (owner != state_.tileMaps.owners.end() && owner->second.body == body)
+            state_.tileMaps.owners.erase(owner);
+    }
+
+    World& world_;
+    WorldState& state_;
+    TileMapData& map_;
+    TileMapId id_;
+};
+
+/// The canonical decomposition of the whole map, top row first, left to right.
+void buildAll(World& world, TileMapId id) {
+    const TileMapData& map = WorldAccess::state(world).tileMaps.maps[id.index];
+    Boxes boxes(world, id);
+    for (int row = 0; row < map.rows; ++row) {
+        int column = 0;
+        while (column < map.columns) {
+            if (!map.isSolid(column, row)) {
+                ++column;
+                continue;
+            }
+            const Run run = runThrough(map, column, row);
+            // A run already labelled belongs to a stack begun in a row above.
+            if (map.boxAt[map.at(column, row)] == TileMapData::kNoBox) {
+                int bottom = row;
+                while (hasRun(map, bottom + 1, run))
+                    ++bottom;
+                boxes.add({run.begin, row, run.width(), bottom - row + 1, {}});
+            }
+            column = run.end;
+        }
+    }
+}
+
+} // namespace
+
+// --- Definitions -------------------------------------------------------------------------
+
+std::optional<FieldError> checkTileMapDef(const TileMapDef& def) {
+    const std::pair<const char*, float> numbers[] = {
+        {"x", def.x},
+        {"y", def.y},
+        {"tile", def.tile},
+        {"friction", def.friction},
+        {"bounce", def.bounce},
+        {"oneWay", def.oneWay.x},
+        {"oneWay", def.oneWay.y},
+    };
+    for (const auto& [field, value] : numbers)
+        if (!std::isfinite(value))
+            return FieldError{field, "must be a finite number"};
+    // Half a tile is the smallest half extent a box gets: it must be > 0 as a float.
+    if (!(def.tile > 0.0f) || !(def.tile / 2.0f > 0.0f))
+        return FieldError{"tile", "must be > 0"};
+
+    if (def.rows.empty())
+        return FieldError{"rows", "must have at least one row"};
+    if (def.rows.size() > static_cast<std::size_t>(std::numeric_limits<int>::max()))
+        return FieldError{"rows", "too many rows"};
+    const std::size_t columns = def.rows[0].size();
+    if (columns == 0)
+        return FieldError{"rows[0]", "must have at least one column"};
+    if (columns > static_cast<std::size_t>(std::numeric_limits<int>::max()))
+        return FieldError{"rows[0]", "too many columns"};
+    for (std::size_t row = 0; row < def.rows.size(); ++row) {
+        const std::string& text = def.rows[row];
+        const std::string place = "rows[" + std::to_string(row) + "]";
+        for (std::size_t column = 0; column < text.size(); ++column)
+            if (text[column] != '#' && text[column] != '.')
+                return FieldError{place + "[" + std::to_string(column) + "]",
+                                  "expected '#' or '.', got " + describeChar(text[column])};
+        if (text.size() != columns)
+            return FieldError{place, "has " + std::to_string(text.size()) +
+                                         " columns, rows[0] has " + std::to_string(columns)};
+    }
+
+    // The far corner, and the area of the largest box (World::createBody refuses a body
+    // whose area overflows), must be finite floats.
+    const double width = static_cast<double>(columns) * static_cast<double>(def.tile);
+    const double height = static_cast<double>(def.rows.size()) * static_cast<double>(def.tile);
+    constexpr double kLargest = static_cast<double>(std::numeric_limits<float>::max());
+    if (!(std::fabs(static_cast<double>(def.x) + width) <= kLargest &&
+          std::fabs(static_cast<double>(def.y) + height) <= kLargest && width * height <= kLargest))
+        return FieldError{"tile", "makes the map too large for floats"};
+
+    if (def.friction < 0.0f || def.friction > 1.0f)
+        return FieldError{"friction", "must be in [0, 1]"};
+    if (def.bounce < 0.0f || def.bounce > 1.0f)
+        return FieldError{"bounce", "must be in [0, 1]"};
+    if (!isValidOneWay(def.oneWay))
+        return FieldError{"oneWay", "must be [0, 0] or one of [1, 0], [-1, 0], [0, 1], [0, -1]"};
+    return std::nullopt;
+}
+
+// --- Maps --------------------------------------------------------------------------------
+
+TileMapId createTileMap(World& world, const TileMapDef& def) {
+    if (auto problem = checkTileMapDef(def))
+        fail("createTileMap", "TileMapDef." + problem->field + ": " + problem->problem);
+
+    TileMaps& maps = WorldAccess::state(world).tileMaps;
+    std::uint32_t index;
+    if (!maps.freeMaps.empty()) {
+        index = maps.freeMaps.back();
+        maps.freeMaps.pop_back();
+    } else {
+        if (maps.maps.size() >= UINT32_MAX)
+            fail("createTileMap", "too many tile maps");
+        index = static_cast<std::uint32_t>(maps.maps.size());
+        maps.maps.emplace_back();
+    }
+    TileMapData& map = maps.maps[index];
+    const std::uint32_t generation = map.generation;
+    map = TileMapData{};
+    map.generation = generation;
+    map.alive = true;
+    map.settings = def;
+    map.settings.rows.clear();
+    map.columns = static_cast<int>(def.rows[0].size());
+    map.rows = static_cast<int>(def.rows.size());
+    map.solid.reserve(static_cast<std::size_t>(map.columns) * def.rows.size());
+    for (const std::string& row : def.rows)
+        for (char tile : row)
+            map.solid.push_back(tile == '#' ? 1 : 0);
+    map.boxAt.assign(map.solid.size(), TileMapData::kNoBox);
+
+    const TileMapId id{index, generation};
+    buildAll(world, id);
+    return id;
+}
+
+void destroyTileMap(World& world, TileMapId id) {
+    TileMapData& map = lookUp(WorldAccess::state(world), id, "destroyTileMap");
+    Boxes(world, id).removeAll();
+    const std::uint32_t generation = map.generation;
+    map = TileMapData{};
+    // Skip 0 on wrap-around: generation 0 is the null handle's.
+    map.generation = generation == UINT32_MAX ? 1 : generation + 1;
+    WorldAccess::state(world).tileMaps.freeMaps.push_back(id.index);
+}
+
+bool isValid(const World& world, TileMapId id) {
+    const std::vector<TileMapData>& maps = WorldAccess::state(world).tileMaps.maps;
+    return !id.isNull() && id.index < maps.size() && maps[id.index].alive &&
+           maps[id.index].generation == id.generation;
+}
+
+// --- Tiles -------------------------------------------------------------------------------
+
+void setTile(World& world, TileMapId id, int column, int row, bool solid) {
+    TileMapData& map = lookUp(WorldAccess::state(world), id, "setTile");
+    if (column < 0 || column >= map.columns || row < 0 || row >= map.rows)
+        fail("setTile", describe(column, row) + " is outside the map (" +
+                            std::to_string(map.columns) + " columns, " + std::to_string(map.rows) +
+                            " rows)");
+    if (map.isSolid(column, row) == solid)
+        return;
+
+    // Only `row`'s runs change, and only around `column`: the runs that go and the runs
+    // that come. Every other run keeps its box, unless a new run joins it.
+    Run gone[2];
+    Run come[2];
+    int goneCount = 0;
+    int comeCount = 0;
+    if (solid) {
+        if (column > 0 && map.isSolid(column - 1, row))
+            gone[goneCount++] = runThrough(map, column - 1, row);
+        if (column + 1 < map.columns && map.isSolid(column + 1, row))
+            gone[goneCount++] = runThrough(map, column + 1, row);
+        map.solid[map.at(column, row)] = 1;
+        come[comeCount++] = runThrough(map, column, row);
+    } else {
+        const Run run = runThrough(map, column, row);
+        gone[goneCount++] = run;
+        map.solid[map.at(column, row)] = 0;
+        if (run.begin < column)
+            come[comeCount++] = {run.begin, column};
+        if (column + 1 < run.end)
+            come[comeCount++] = {column + 1, run.end};
+    }
+
+    Boxes boxes(world, id);
+    // A box holding a run that goes is cut at `row`: its parts above and below stay.
+    // They keep their extent, which no run that comes has, so they join nothing.
+    for (int i = 0; i < goneCount; ++i) {
+        const TileBox box = boxes.remove(gone[i].begin, row);
+        const int last = box.row + box.rows - 1;
+        if (box.row < row)
+            boxes.add({box.column, box.row, box.columns, row - box.row, {}});
+        if (last > row)
+            boxes.add({box.column, row + 1, box.columns, last - row, {}});
+    }
+    // A run that comes joins the stacks of the same extent just above and just below.
+    for (int i = 0; i < comeCount; ++i) {
+        const Run run = come[i];
+        int top = row;
+        int bottom = row;
+        if (std::optional<TileBox> above = boxes.boxOf(run.begin, row - 1, run)) {
+            top = above->row;
+            boxes.remove(run.begin, row - 1);
+        }
+        if (std::optional<TileBox> below = boxes.boxOf(run.begin, row + 1, run)) {
+            bottom = below->row + below->rows - 1;
+            boxes.remove(run.begin, row + 1);
+        }
+        boxes.add({run.begin, top, run.width(), bottom - top + 1, {}});
+    }
+}
+
+bool isSolid(const World& world, TileMapId id, int column, int row) {
+    const TileMapData& map = lookUp(WorldAccess::state(world), id, "isSolid");
+    if (column < 0 || column >= map.columns || row < 0 || row >= map.rows)
+        return false;
+    return map.isSolid(column, row);
+}
+
+std::optional<TileCoord> tileAt(const World& world, TileMapId id, Vec2 point) {
+    const TileMapData& map = lookUp(WorldAccess::state(world), id, "tileAt");
+    requireFinite("tileAt", "point", point);
+    const double tile = static_cast<double>(map.settings.tile);
+    const double column =
+        std::floor((static_cast<double>(point.x) - static_cast<double>(map.settings.x)) / tile);
+    const double row =
+        std::floor((static_cast<double>(point.y) - static_cast<double>(map.settings.y)) / tile);
+    if (column < 0 || column >= map.columns || row < 0 || row >= map.rows)
+        return std::nullopt;
+    return TileCoord{static_cast<int>(column), static_cast<int>(row)};
+}
+
+int tileMapColumns(const World& world, TileMapId id) {
+    return lookUp(WorldAccess::state(world), id, "tileMapColumns").columns;
+}
+
+int tileMapRows(const World& world, TileMapId id) {
+    return lookUp(WorldAccess::state(world), id, "tileMapRows").rows;
+}
+
+TileMapDef tileMapDef(const World& world, TileMapId id) {
+    const TileMapData& map = lookUp(WorldAccess::state(world), id, "tileMapDef");
+    TileMapDef def = map.settings;
+    def.rows.reserve(static_cast<std::size_t>(map.rows));
+    for (int row = 0; row < map.rows; ++row) {
+        std::string& text = def.rows.emplace_back(static_cast<std::size_t>(map.columns), '.');
+        for (int column = 0; column < map.columns; ++column)
+            if (map.isSolid(column, row))
+                text[static_cast<std::size_t>(column)] = '#';
+    }
+    return def;
+}
+
+std::span<const BodyId> tileMapBodies(const World& world, TileMapId id) {
+    return lookUp(WorldAccess::state(world), id, "tileMapBodies").bodies;
+}
+
+TileMapId tileMapOf(const World& world, BodyId body) {
+    const WorldState& state = WorldAccess::state(world);
+    lookUp(state, body, "tileMapOf");
+    const auto owner = state.tileMaps.owners.find(body.index);
+    if (owner == state.tileMaps.owners.end() || owner->second.body != body)
+        return {};
+    return owner->second.map;
+}
+
+} // namespace jostle
