@@ -5,10 +5,12 @@
 //
 //     jostle::Scene scene = jostle::loadScene("examples/scenes/tutorial.json");
 //     jostle::World world(scene.world);
+//     jostle::addTileMaps(world, scene);
 //     std::vector<jostle::BodyId> ids = jostle::addBodies(world, scene);
 //     world.step(scene.dt);
 #pragma once
 
+#include "jostle/tilemap.hpp"
 #include "jostle/world.hpp"
 
 #include <stdexcept>
@@ -28,10 +30,13 @@ struct Scene {
     WorldDef world;
     float dt = 1.0f / 60.0f; ///< the time step the scene is meant to run at
     std::vector<SceneBody> bodies;
+    /// "tilemap" (one) or "tilemaps" (several) in the file, in file order.
+    std::vector<TileMapDef> tileMaps;
 };
 
 /// A scene file that cannot be used. what() names the place and the rule, e.g.
-/// "bodies[3].hw: must be > 0" or "gravity: expected an array of 2 numbers".
+/// "bodies[3].hw: must be > 0", "tilemap.rows[2][5]: expected '#' or '.', got 'x'" or
+/// "gravity: expected an array of 2 numbers".
 class SceneError : public std::runtime_error {
 public:
     using std::runtime_error::runtime_error;
@@ -45,5 +50,10 @@ Scene loadScene(const std::string& path);
 
 /// Creates the scene's bodies in `world`, in file order; returns their handles.
 std::vector<BodyId> addBodies(World& world, const Scene& scene);
+
+/// Creates the scene's tile maps in `world`, in file order; returns their handles.
+/// Checks every map before creating any, so that a bad one (in a Scene built in code)
+/// throws jostle::Error and leaves the world as it was.
+std::vector<TileMapId> addTileMaps(World& world, const Scene& scene);
 
 } // namespace jostle

@@ -31,8 +31,8 @@ namespace {
 // one a reader meets in the file, not the first in alphabetical order.
 using Json = nlohmann::ordered_json;
 
-// The format needs three levels (scene, bodies, body); anything much deeper is not a
-// scene, and refusing it early bounds the memory spent on hostile input.
+// The format needs four levels (scene, tilemaps, tile map, rows); anything much deeper is
+// not a scene, and refusing it early bounds the memory spent on hostile input.
 constexpr int kMaxDepth = 32;
 
 // Error messages quote what they cite, at most this many bytes of it.
@@ -360,6 +360,48 @@ std::vector<SceneBody> readBodies(const Json& value, const std::string& place) {
     return bodies;
 }
 
+// --- Tile maps -----------------------------------------------------------------------
+
+TileMapDef readTileMap(const Json& value, const std::string& place) {
+    TileMapDef def;
+    for (const auto& [name, fieldValue] : readObject(value, place)) {
+        const std::string at = field(place, name);
+        if (name == "x") {
+            def.x = readFloat(fieldValue, at);
+        } else if (name == "y") {
+            def.y = readFloat(fieldValue, at);
+        } else if (name == "tile") {
+            def.tile = readFloat(fieldValue, at);
+        } else if (name == "rows") {
+            const Json::array_t& rows = readArray(fieldValue, at);
+            def.rows.reserve(rows.size());
+            for (std::size_t i = 0; i < rows.size(); ++i)
+                def.rows.push_back(readString(rows[i], element(at, i)));
+        } else if (name == "friction") {
+            def.friction = readFloat(fieldValue, at);
+        } else if (name == "bounce") {
+            def.bounce = readFloat(fieldValue, at);
+        } else if (name == "category") {
+            def.category = readBits(fieldValue, at);
+        } else if (name == "mask") {
+            def.mask = readBits(fieldValue, at);
+        } else if (name == "oneWay") {
+            def.oneWay = readVec2(fieldValue, at);
+        } else if (name == "sensor") {
+            def.sensor = readBool(fieldValue, at);
+        } else {
+            fail(place, "unknown field " + quoteName(name));
+        }
+    }
+    // A map has no sensible default tile size, nor default tiles.
+    for (const char* required : {"tile", "rows"})
+        if (!value.contains(required))
+            fail(place, std::string("missing field \"") + required + "\"");
+    if (auto problem = checkTileMapDef(def))
+        fail(field(place, problem->field), problem->problem);
+    return def;
+}
+
 // --- The scene -----------------------------------------------------------------------
 
 /// An int option: a whole number. Those beyond an int are kept as INT_MIN or INT_MAX,
@@ -445,6 +487,17 @@ Scene readScene(const Json& root) {
             scene.world.sleeping = readBool(value, name);
         } else if (name == "bodies") {
             scene.bodies = readBodies(value, name);
+        } else if (name == "tilemap" || name == "tilemaps") {
+            // One map or several: two ways to say it, never both in one file.
+            if (root.contains("tilemap") && root.contains("tilemaps"))
+                fail("", R"(give "tilemap" or "tilemaps", not both)");
+            if (name == "tilemap") {
+                scene.tileMaps.push_back(readTileMap(value, name));
+            } else {
+                const Json::array_t& maps = readArray(value, name);
+                for (std::size_t i = 0; i < maps.size(); ++i)
+                    scene.tileMaps.push_back(readTileMap(maps[i], element(name, i)));
+            }
         } else {
             fail("", "unknown field " + quoteName(name));
         }
@@ -511,6 +564,19 @@ std::vector<BodyId> addBodies(World& world, const Scene& scene) {
     ids.reserve(scene.bodies.size());
     for (const SceneBody& body : scene.bodies)
         ids.push_back(world.createBody(body.def));
+    return ids;
+}
+
+std::vector<TileMapId> addTileMaps(World& world, const Scene& scene) {
+    // Check every map before creating any, so that a bad one leaves the world as it was.
+    for (std::size_t i = 0; i < scene.tileMaps.size(); ++i)
+        if (auto problem = checkTileMapDef(scene.tileMaps[i]))
+            throw Error("addTileMaps: " + element("tileMaps", i) + "." + problem->field + ": " +
+                        problem->problem);
+    std::vector<TileMapId> ids;
+    ids.reserve(scene.tileMaps.size());
+    for (const TileMapDef& map : scene.tileMaps)
+        ids.push_back(createTileMap(world, map));
     return ids;
 }
 

@@ -263,6 +263,20 @@ TEST_F(Cli, TheTutorialExampleRuns) {
     EXPECT_THAT(r.out, HasSubstr("classic"));
 }
 
+TEST_F(Cli, TileMapsAreTakenIntoTheWorld) {
+    const std::string scene = write("tiles.json", R"({"gravity": [0, 800],
+        "tilemap": {"x": 0, "y": 100, "tile": 16, "rows": ["....", "####"]},
+        "bodies": [{"id": "box", "x": 32, "y": 0, "hw": 8, "hh": 8}]})");
+    const Result r = run("run " + quote(scene) + " --steps 120 --every 120 --trace -");
+    EXPECT_EQ(r.status, 0);
+    EXPECT_EQ(r.err, "");
+    const std::vector<Row> rows = rowsOf(r.out);
+    ASSERT_EQ(rows.size(), 1u);
+    // Resting on the map's floor, whose top is at y = 116, within the slop (0.01 × 8).
+    EXPECT_EQ(rows[0].id, "box");
+    EXPECT_NEAR(rows[0].y, 116.0f - 8.0f, 0.08f);
+}
+
 // --- Bad input: exit status 2 and a message naming the place -----------------------
 
 TEST_F(Cli, BadSceneNamesFileAndPlace) {
@@ -272,6 +286,16 @@ TEST_F(Cli, BadSceneNamesFileAndPlace) {
     EXPECT_EQ(r.status, 2);
     EXPECT_EQ(r.err, "jostle: error: " + scene + ": bodies[1].hw: must be > 0\n");
     EXPECT_EQ(r.out, ""); // not even the header
+}
+
+TEST_F(Cli, BadTileMapNamesFileAndPlace) {
+    const std::string scene = write("bad.json", R"({"bodies": [],
+        "tilemap": {"tile": 16, "rows": ["....", "####", "##.#.x"]}})");
+    const Result r = run("run " + quote(scene) + " --steps 1");
+    EXPECT_EQ(r.status, 2);
+    EXPECT_EQ(r.err,
+              "jostle: error: " + scene + ": tilemap.rows[2][5]: expected '#' or '.', got 'x'\n");
+    EXPECT_EQ(r.out, "");
 }
 
 TEST_F(Cli, InvalidJsonNamesFileAndLine) {

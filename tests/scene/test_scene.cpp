@@ -442,6 +442,99 @@ TEST(SceneErrors, OddNamesAreQuotedAsJson) {
     EXPECT_EQ(errorOf(withTop(R"("a\"b\n": 1)")), R"(unknown field "a\"b\n")");
 }
 
+// --- Tile maps -------------------------------------------------------------------------
+
+TEST(SceneTileMaps, EveryFieldIsReadAsWritten) {
+    const Scene scene = parseScene(withTop(R"("tilemap": {
+        "x": -8, "y": 4.5, "tile": 16, "rows": ["#..#", "####"], "friction": 0.25,
+        "bounce": 0.5, "category": 2, "mask": 6, "oneWay": [0, -1], "sensor": true})"));
+    ASSERT_EQ(scene.tileMaps.size(), 1u);
+    const TileMapDef& map = scene.tileMaps[0];
+    EXPECT_EQ(map.x, -8.0f);
+    EXPECT_EQ(map.y, 4.5f);
+    EXPECT_EQ(map.tile, 16.0f);
+    EXPECT_EQ(map.rows, (std::vector<std::string>{"#..#", "####"}));
+    EXPECT_EQ(map.friction, 0.25f);
+    EXPECT_EQ(map.bounce, 0.5f);
+    EXPECT_EQ(map.category, 2u);
+    EXPECT_EQ(map.mask, 6u);
+    EXPECT_EQ(map.oneWay, (Vec2{0.0f, -1.0f}));
+    EXPECT_TRUE(map.sensor);
+}
+
+TEST(SceneTileMaps, DefaultsAreThoseOfTileMapDef) {
+    const Scene scene = parseScene(withTop(R"("tilemap": {"tile": 8, "rows": ["#"]})"));
+    ASSERT_EQ(scene.tileMaps.size(), 1u);
+    const TileMapDef& map = scene.tileMaps[0];
+    const TileMapDef defaults;
+    EXPECT_EQ(map.x, 0.0f);
+    EXPECT_EQ(map.y, 0.0f);
+    EXPECT_EQ(map.friction, defaults.friction);
+    EXPECT_EQ(map.bounce, defaults.bounce);
+    EXPECT_EQ(map.category, defaults.category);
+    EXPECT_EQ(map.mask, defaults.mask);
+    EXPECT_EQ(map.oneWay, defaults.oneWay);
+    EXPECT_FALSE(map.sensor);
+    EXPECT_TRUE(parseScene(withTop(R"("gravity": [0, 1])")).tileMaps.empty());
+}
+
+TEST(SceneTileMaps, SeveralMapsInFileOrder) {
+    const Scene scene = parseScene(withTop(R"("tilemaps": [
+        {"tile": 8, "rows": ["#"]}, {"tile": 4, "rows": [".#"], "y": 100}])"));
+    ASSERT_EQ(scene.tileMaps.size(), 2u);
+    EXPECT_EQ(scene.tileMaps[0].tile, 8.0f);
+    EXPECT_EQ(scene.tileMaps[1].tile, 4.0f);
+    EXPECT_EQ(scene.tileMaps[1].rows, (std::vector<std::string>{".#"}));
+    EXPECT_TRUE(parseScene(withTop(R"("tilemaps": [])")).tileMaps.empty());
+}
+
+TEST(SceneErrors, TileMaps) {
+    const auto map = [](const std::string& fields) {
+        return errorOf(withTop(R"("tilemap": {)" + fields + "}"));
+    };
+    EXPECT_EQ(map(R"("tile": 16, "rows": ["#.", "..", "#.#..."])"),
+              "tilemap.rows[2]: has 6 columns, rows[0] has 2");
+    EXPECT_EQ(map(R"("tile": 16, "rows": ["....", "####", "##.#.x"])"),
+              "tilemap.rows[2][5]: expected '#' or '.', got 'x'");
+    EXPECT_EQ(map(R"("tile": 16, "rows": ["# "])"),
+              "tilemap.rows[0][1]: expected '#' or '.', got ' '");
+    EXPECT_EQ(map(R"("tile": 16, "rows": [])"), "tilemap.rows: must have at least one row");
+    EXPECT_EQ(map(R"("tile": 16, "rows": [""])"), "tilemap.rows[0]: must have at least one column");
+    EXPECT_EQ(map(R"("tile": 16, "rows": "##")"), "tilemap.rows: expected an array, got string");
+    EXPECT_EQ(map(R"("tile": 16, "rows": ["#", 1])"),
+              "tilemap.rows[1]: expected a string, got number");
+    EXPECT_EQ(map(R"("rows": ["#"])"), R"(tilemap: missing field "tile")");
+    EXPECT_EQ(map(R"("tile": 16)"), R"(tilemap: missing field "rows")");
+    EXPECT_EQ(map(R"("tile": 0, "rows": ["#"])"), "tilemap.tile: must be > 0");
+    EXPECT_EQ(map(R"("tile": "big", "rows": ["#"])"),
+              "tilemap.tile: expected a number, got string");
+    EXPECT_EQ(map(R"("tile": 1e30, "rows": ["##########"])"),
+              "tilemap.tile: makes the map too large for floats");
+    EXPECT_EQ(map(R"("tile": 16, "x": 1e39, "rows": ["#"])"), "tilemap.x: must be a finite number");
+    EXPECT_EQ(map(R"("tile": 16, "rows": ["#"], "friction": 2)"),
+              "tilemap.friction: must be in [0, 1]");
+    EXPECT_EQ(map(R"("tile": 16, "rows": ["#"], "bounce": -1)"),
+              "tilemap.bounce: must be in [0, 1]");
+    EXPECT_EQ(map(R"("tile": 16, "rows": ["#"], "oneWay": [1, 1])"),
+              "tilemap.oneWay: must be [0, 0] or one of [1, 0], [-1, 0], [0, 1], [0, -1]");
+    EXPECT_EQ(map(R"("tile": 16, "rows": ["#"], "mask": -1)"),
+              "tilemap.mask: must be a whole number from 0 to 4294967295");
+    EXPECT_EQ(map(R"("tile": 16, "rows": ["#"], "sensor": 1)"),
+              "tilemap.sensor: expected true or false, got number");
+    EXPECT_EQ(map(R"("tile": 16, "rows": ["#"], "colour": "red")"),
+              R"(tilemap: unknown field "colour")");
+    EXPECT_EQ(map(R"("tile": 16, "tile": 8, "rows": ["#"])"), R"(tilemap: duplicate field "tile")");
+
+    EXPECT_EQ(errorOf(withTop(R"("tilemap": [])")), "tilemap: expected an object, got array");
+    EXPECT_EQ(errorOf(withTop(R"("tilemaps": {})")), "tilemaps: expected an array, got object");
+    EXPECT_EQ(errorOf(withTop(R"("tilemaps": [{"tile": 1, "rows": ["#"]},
+                                              {"tile": 1, "rows": ["#", "?"]}])")),
+              "tilemaps[1].rows[1][0]: expected '#' or '.', got '?'");
+    EXPECT_EQ(errorOf(withTop(R"("tilemap": {"tile": 1, "rows": ["#"]},
+                                 "tilemaps": [])")),
+              R"(give "tilemap" or "tilemaps", not both)");
+}
+
 // --- Files -----------------------------------------------------------------------------
 
 class SceneFiles : public ::testing::Test {
@@ -532,6 +625,59 @@ TEST(AddBodies, ABadBodyLeavesTheWorldUntouched) {
         EXPECT_THAT(std::string(error.what()), HasSubstr("bodies[1].hh: must be > 0"));
     }
     EXPECT_EQ(world.bodyCount(), 0u);
+}
+
+// --- addTileMaps ------------------------------------------------------------------------
+
+TEST(AddTileMaps, CreatesTheMapsInFileOrder) {
+    const Scene scene = parseScene(R"({"bodies": [], "tilemaps": [
+        {"tile": 10, "rows": ["##", ".#"], "friction": 0.25},
+        {"x": 100, "tile": 2, "rows": ["#.#"]}]})");
+    World world(scene.world);
+    const std::vector<TileMapId> maps = addTileMaps(world, scene);
+    ASSERT_EQ(maps.size(), 2u);
+    EXPECT_EQ(tileMapDef(world, maps[0]).rows, scene.tileMaps[0].rows);
+    EXPECT_EQ(tileMapDef(world, maps[1]).rows, scene.tileMaps[1].rows);
+    // "##" over ".#": the run of row 0, then the single tile of row 1; then two tiles.
+    ASSERT_EQ(world.bodyCount(), 4u);
+    EXPECT_EQ(tileMapOf(world, world.bodies()[0]), maps[0]);
+    EXPECT_EQ(world.position(world.bodies()[0]), (Vec2{10.0f, 5.0f}));
+    EXPECT_EQ(world.halfExtents(world.bodies()[0]), (Vec2{10.0f, 5.0f}));
+    EXPECT_EQ(world.friction(world.bodies()[0]), 0.25f);
+    EXPECT_EQ(tileMapOf(world, world.bodies()[3]), maps[1]);
+    EXPECT_EQ(world.position(world.bodies()[3]), (Vec2{105.0f, 1.0f}));
+}
+
+TEST(AddTileMaps, ABadMapLeavesTheWorldUntouched) {
+    Scene scene;
+    TileMapDef good;
+    good.tile = 1;
+    good.rows = {"#"};
+    TileMapDef bad = good;
+    bad.rows = {"#", "x"};
+    scene.tileMaps = {good, bad};
+    World world(scene.world);
+    try {
+        addTileMaps(world, scene);
+        FAIL() << "no jostle::Error";
+    } catch (const Error& error) {
+        EXPECT_EQ(std::string(error.what()),
+                  "addTileMaps: tileMaps[1].rows[1][0]: expected '#' or '.', got 'x'");
+    }
+    EXPECT_EQ(world.bodyCount(), 0u);
+}
+
+TEST(AddTileMaps, ABoxLandsOnATileFloor) {
+    const Scene scene = parseScene(R"({"gravity": [0, 800],
+        "tilemap": {"x": 0, "y": 100, "tile": 16, "rows": ["....", "####"]},
+        "bodies": [{"x": 32, "y": 0, "hw": 8, "hh": 8}]})");
+    World world(scene.world);
+    addTileMaps(world, scene);
+    const std::vector<BodyId> ids = addBodies(world, scene);
+    for (int i = 0; i < 120; ++i)
+        world.step(scene.dt);
+    // The floor's top is row 1's: y = 100 + 16. Within the slop, 0.01 × 8.
+    EXPECT_NEAR(world.position(ids[0]).y, 116.0f - 8.0f, 0.08f);
 }
 
 // --- The example scenes ----------------------------------------------------------------

@@ -93,6 +93,7 @@ private:
 int run(const RunOptions& options) {
     const jostle::Scene scene = jostle::loadScene(options.scene);
     jostle::World world(scene.world);
+    jostle::addTileMaps(world, scene); // the level first, then what moves in it
     const std::vector<jostle::BodyId> ids = jostle::addBodies(world, scene);
 
     TraceOutput trace;
