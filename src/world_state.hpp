@@ -6,6 +6,7 @@
 #include "events.hpp"
 #include "jostle/world.hpp"
 #include "physical_state.hpp"
+#include "query_index.hpp"
 #include "tilemap.hpp"
 
 #include <cstddef>
@@ -127,6 +128,10 @@ struct WorldState {
 
     /// The tile maps and the bodies they are made of (jostle/tilemap.hpp).
     TileMaps tileMaps;
+
+    /// What queries keep between calls (jostle/query.hpp); mutable: queries take a
+    /// const World.
+    mutable QueryIndex queries;
 
     BodyId idOf(std::uint32_t slot) const { return {slot, slots[slot].generation}; }
     /// True if `id` still names a live body (its slot not reused since).

@@ -1,0 +1,199 @@
+// jostle/query.hpp: asking the world what is where.
+//
+//     // What is under the mouse?
+//     std::vector<jostle::BodyId> picked = jostle::queryPoint(world, mouse);
+//
+//     // Can the guard see the player? Only the level blocks the view.
+//     jostle::QueryFilter sight{.mask = kLevel, .ignore = guard};
+//     bool seen = !jostle::rayCast(world, eye, world.position(player), sight);
+//
+//     // Move a character by hand, sliding along floors and walls, as bump.lua does.
+//     jostle::MoveResult moved = jostle::moveAndSlide(world, centre, half, velocity * dt,
+//                                                     {.ignore = player});
+//
+// Queries look at every body where it is now: after step(), after setPosition, while
+// asleep. They change nothing in the world, and they filter bodies as collisions do
+// (QueryFilter). docs/queries.md is the guide; this header is the reference.
+//
+// Results come in a fixed order, the same run after run: bodies in creation order, hits
+// by distance along the query and, at equal distance, in creation order.
+//
+// Misuse throws jostle::Error (error.hpp): a NaN or infinite number anywhere, sizes that
+// break the rule given with each function, a stale QueryFilter::ignore.
+//
+// Cost: static and sleeping bodies are found through the grid the broadphase keeps of
+// them, so in a big level a query looks only at the bodies near it (a long ray, piece by
+// piece along its path). Awake bodies (dynamic and kinematic ones not asleep) are each
+// tested by every query: a world's awake bodies are usually few next to its level. The
+// first query after bodies were created or destroyed spends time proportional to the
+// number of bodies re-indexing them; the first after a static body changed, or bodies
+// fell asleep or woke, rebuilds the grid (which the next step would otherwise do).
+//
+// Threads: queries may run on several threads at once on the same world, as long as
+// nothing changes the world meanwhile (they share the index update through a lock). A
+// query may be made from a callback during step(): it sees the bodies where the step has
+// got them to. If a static body changed or bodies woke during that step, the grid cannot
+// be rebuilt under the step's feet, and the query tests every body.
+#pragma once
+
+#include "jostle/body.hpp"
+#include "jostle/math.hpp"
+#include "jostle/world.hpp"
+
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+namespace jostle {
+
+/// Which bodies a query reports. The defaults report every body except sensors.
+///
+/// A body is reported when, as in a collision between the body and the query,
+///
+///     (body.category & filter.mask) != 0 && (filter.category & body.mask) != 0
+///
+/// and it is not a sensor (unless includeSensors) and not `ignore`. A body whose mask is
+/// 0 collides with nothing, and no query sees it either.
+struct QueryFilter {
+    /// The categories to report.
+    std::uint32_t mask = 0xFFFFFFFF;
+    /// The category the query belongs to, as the bodies' masks see it: a query with
+    /// `category = kPlayer` sees what a player would collide with.
+    std::uint32_t category = 0xFFFFFFFF;
+    /// Report sensors too. Off by default: a sensor is an area, not a thing, so it does
+    /// not block a line of sight nor stop a cast. Turn it on to ask "which trigger zones
+    /// is this point in?". moveAndSlide never stops at a sensor, whatever this says.
+    bool includeSensors = false;
+    /// A body never reported: the character doing the query. The null handle (the
+    /// default) ignores nothing. A stale handle throws jostle::Error: the caller holds a
+    /// dead character's handle, which is a bug worth hearing about.
+    BodyId ignore{};
+};
+
+// --- What is here? ---------------------------------------------------------------------
+
+/// The bodies whose box contains `point`, in creation order. A point on an edge is on the
+/// box (a click on the seam between two tiles picks both).
+std::vector<BodyId> queryPoint(const World& world, Vec2 point, const QueryFilter& filter = {});
+
+/// The bodies that overlap the box of centre `centre` and half extents `half` (each >= 0),
+/// in creation order. Overlap means sharing some area: a body merely touching the box
+/// edge to edge is not reported, so a box resting on a floor does not overlap the floor,
+/// and "is there room to stand up here?" is answered with the standing box.
+std::vector<BodyId> queryBox(const World& world, Vec2 centre, Vec2 half,
+                             const QueryFilter& filter = {});
+
+/// queryBox by corners: the box from `min` to `max` (min <= max on both axes).
+std::vector<BodyId> queryRect(const World& world, Vec2 min, Vec2 max,
+                              const QueryFilter& filter = {});
+
+/// The same three, filling `out` (cleared first) so that its memory serves frame after
+/// frame.
+void queryPoint(const World& world, Vec2 point, const QueryFilter& filter,
+                std::vector<BodyId>& out);
+void queryBox(const World& world, Vec2 centre, Vec2 half, const QueryFilter& filter,
+              std::vector<BodyId>& out);
+void queryRect(const World& world, Vec2 min, Vec2 max, const QueryFilter& filter,
+               std::vector<BodyId>& out);
+
+// --- Rays --------------------------------------------------------------------------------
+
+/// Where a ray meets a body.
+struct RayHit {
+    BodyId body;
+    /// from + (to - from) × fraction, placed exactly on the face it meets.
+    Vec2 point;
+    /// The outward normal of the face the ray meets: unit, along x or y, against the ray.
+    Vec2 normal;
+    /// How far along from → to, in [0, 1].
+    float fraction = 0.0f;
+};
+
+/// The first body on the segment from `from` to `to`, if any.
+///
+/// The rules, each a regression test:
+/// - Touching counts: a ray that grazes a corner hits it there, and a ray that runs
+///   exactly along a face hits the box where it reaches the face. So a ray cast straight
+///   down the seam between two floor tiles hits the floor, never slips through.
+/// - A ray that starts inside a box, or on its edge heading in or along it, hits it at
+///   fraction 0, at `from`. The normal is the face it heads into if it starts on one,
+///   else the one facing its main direction (the axis along which it moves more; y if
+///   equal). A ground probe that starts a little inside the floor reports the floor.
+/// - A ray that starts on a box's edge and heads away from it does not hit it.
+/// - A one-way platform (BodyDef::oneWay) is hit only through its blocking face, from
+///   outside; a ray starting inside it passes.
+/// - A zero-length ray (from == to) hits nothing: use queryPoint.
+/// - Equal fractions: the body created first wins.
+std::optional<RayHit> rayCast(const World& world, Vec2 from, Vec2 to,
+                              const QueryFilter& filter = {});
+
+/// Every body on the segment, by fraction (equal fractions in creation order), each once,
+/// by the rules of rayCast.
+std::vector<RayHit> rayCastAll(const World& world, Vec2 from, Vec2 to,
+                               const QueryFilter& filter = {});
+void rayCastAll(const World& world, Vec2 from, Vec2 to, const QueryFilter& filter,
+                std::vector<RayHit>& out);
+
+// --- Moving boxes ------------------------------------------------------------------------
+
+/// Where a box swept along a translation first touches a body.
+struct BoxCastHit {
+    BodyId body;
+    /// Where the box's centre stops: touching the body. Along the normal's axis it is
+    /// placed exactly so (centre = the body's face + the half extent).
+    Vec2 centre;
+    /// Unit, along x or y, pointing from the body towards the box.
+    Vec2 normal;
+    /// The time of impact: the fraction of the translation travelled, in [0, 1].
+    float fraction = 0.0f;
+};
+
+/// Sweeps the box of centre `centre` and half extents `half` (each > 0) along
+/// `translation`, and returns the first body it runs into, if any.
+///
+/// The rules are those of a solid body moving through the world (the continuous-collision
+/// sweep's, docs/continuous-collision.md):
+/// - Touching is not running into. A body that the box touches at the start, or overlaps
+///   by no more than the contact skin (twice the world's slop times the smaller half
+///   extent, as the physical model counts a resting contact), stops the box only if the
+///   box moves into it; moving along it (a box on a floor moving sideways, a box sliding
+///   along a wall made of separate boxes, across their seams) is free.
+/// - The box stops touching the body, not inside it: a motion that would end inside a
+///   body, or within the skin of it, stops at its face.
+/// - A body that the box already overlaps by more than the skin on both axes does not
+///   stop it: the box is inside and free to leave (queryBox tells that it is there).
+/// - A one-way platform stops the box only on its blocking face, and only if the box
+///   starts wholly on that side of it (within the skin), as in the physical model.
+/// - A zero translation hits nothing. Equal fractions: the body created first wins.
+std::optional<BoxCastHit> boxCast(const World& world, Vec2 centre, Vec2 half, Vec2 translation,
+                                  const QueryFilter& filter = {});
+
+/// A body met by moveAndSlide.
+struct MoveHit {
+    BodyId body;
+    Vec2 normal; ///< unit, along x or y, pointing from the body towards the box
+};
+
+/// Where moveAndSlide left the box, and what it met on the way.
+struct MoveResult {
+    Vec2 centre;
+    /// In the order met; bodies met at the same moment in creation order.
+    std::vector<MoveHit> hits;
+};
+
+/// Moves a box by `translation` the way bump.lua moves its items: the box goes until it
+/// runs into a body (the rules of boxCast), then slides along it for the rest of the
+/// translation (the part into the body is dropped), and so on. Every body met at the
+/// moment of a stop is reported; one met on its side along x and one on its top along y
+/// together stop the box. Axis-aligned faces take away one axis each, so the box stops at
+/// most twice.
+///
+/// This is the tool to move a character by hand. Nothing in the world moves: use the
+/// result (setPosition of the character's own body, which `filter.ignore` should name,
+/// or your own variable). A hit with normal.y < 0 in a y-down world is the floor: the
+/// character is grounded. Sensors never stop the box; one-way platforms stop it only on
+/// their blocking face.
+MoveResult moveAndSlide(const World& world, Vec2 centre, Vec2 half, Vec2 translation,
+                        const QueryFilter& filter = {});
+
+} // namespace jostle

@@ -1,0 +1,483 @@
+// Queries: what is at a point, in a box, on a ray, in the way of a moving box.
+//
+// The geometry is in query_geometry.hpp. This file finds the candidates and applies the
+// filters. Static and sleeping bodies come from the world's resting grid, which is exact
+// whenever it is not marked dirty: they do not move, and whatever changes one of them
+// marks it. Awake bodies move every step without telling anyone, so every query tests
+// each of them; a world's awake bodies are usually few next to its level.
+#include "jostle/query.hpp"
+
+#include "query_geometry.hpp"
+#include "world_access.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <mutex>
+
+namespace jostle {
+
+namespace {
+
+/// A long ray or cast is looked up in the grid in at most this many pieces.
+constexpr int kMaxPieces = 64;
+/// Pieces are this many typical bodies long.
+constexpr float kPieceBodies = 4.0f;
+/// The typical body size is the median of a sample of at most this many bodies.
+constexpr std::size_t kSizeSample = 63;
+
+bool orderChanged(const WorldState& w, const QueryIndex& index) {
+    return !index.built || index.bodyCount != w.order.size() ||
+           (!w.order.empty() && index.lastBody != w.order.back());
+}
+
+void rebuild(const WorldState& w, QueryIndex& index) {
+    index.rank.resize(w.slots.size());
+    index.mobile.clear();
+    for (std::uint32_t r = 0; r < w.order.size(); ++r) {
+        const std::uint32_t slot = w.order[r].index;
+        index.rank[slot] = r;
+        if (w.slots[slot].type != BodyType::Static)
+            index.mobile.push_back(slot);
+    }
+    // The median, not the mean: one floor as wide as the level must not make every
+    // piece as long as the level. A sample is enough for a length that only tunes speed.
+    index.sizes.clear();
+    const std::size_t stride = w.order.size() / kSizeSample + 1;
+    for (std::size_t r = 0; r < w.order.size(); r += stride) {
+        const Body& body = w.slots[w.order[r].index];
+        index.sizes.push_back(2.0f * std::max(body.half.x, body.half.y));
+    }
+    float typical = 1.0f;
+    if (!index.sizes.empty()) {
+        auto middle = index.sizes.begin() + std::ptrdiff_t(index.sizes.size() / 2);
+        std::nth_element(index.sizes.begin(), middle, index.sizes.end());
+        typical = *middle;
+    }
+    index.pieceLength = kPieceBodies * typical;
+    index.bodyCount = w.order.size();
+    index.lastBody = w.order.empty() ? BodyId{} : w.order.back();
+    index.built = true;
+}
+
+/// The bodies one query looks at: those of the resting grid near where it looks, and
+/// every body outside the grid.
+class Candidates {
+public:
+    explicit Candidates(const WorldState& world) : w_(world), index_(world.queries) {
+        std::lock_guard<std::mutex> lock(index_.mutex);
+        if (orderChanged(w_, index_))
+            rebuild(w_, index_);
+        // Never during a step: the step may be using the grid (a query from a callback).
+        // Outside a step, bringing it up to date is what the next step would do first.
+        // The state is not const, only the access to it (WorldAccess).
+        if (w_.restingDirty && !w_.stepping)
+            const_cast<WorldState&>(w_).refreshRestingGrid();
+        gridUsable_ = !w_.restingDirty;
+        if (!gridUsable_)
+            return;
+        listAwake();
+        // Every body is in the grid (static or asleep) or awake. If some are neither, a
+        // static body was made dynamic or kinematic since the index was built.
+        if (w_.restingSlots.size() + awake_.size() != w_.order.size()) {
+            rebuild(w_, index_);
+            listAwake();
+        }
+    }
+
+    /// Calls visit(slot) for each body of the resting grid that touches `region`.
+    template <class Visit> void inGrid(const Bounds& region, Visit&& visit) const {
+        if (gridUsable_)
+            w_.restingGrid.query(region, [&](std::uint32_t i) { visit(w_.restingSlots[i]); });
+    }
+
+    /// Calls visit(slot) for each body not in the resting grid: the awake ones, or every
+    /// body when the grid is out of date (during a step, after something changed).
+    template <class Visit> void outsideGrid(Visit&& visit) const {
+        if (!gridUsable_) {
+            for (BodyId id : w_.order)
+                visit(id.index);
+            return;
+        }
+        for (std::uint32_t slot : awake_)
+            visit(slot);
+    }
+
+    std::uint32_t rank(std::uint32_t slot) const { return index_.rank[slot]; }
+    float pieceLength() const { return index_.pieceLength; }
+
+private:
+    void listAwake() {
+        awake_.clear();
+        for (std::uint32_t slot : index_.mobile)
+            if (!w_.isResting(w_.slots[slot]))
+                awake_.push_back(slot);
+    }
+
+    const WorldState& w_;
+    QueryIndex& index_;
+    bool gridUsable_ = false;
+    std::vector<std::uint32_t> awake_; ///< slots, in creation order
+};
+
+/// Walks the path of a box of half extents `half` (zero: a ray) from `from` along
+/// `delta` through the resting grid, piece by piece: visit(slot) for each body near each
+/// piece (a body near two pieces is visited twice), then stop(end of the piece, as a
+/// fraction of the path); a true stop ends the walk.
+template <class Visit, class Stop>
+void walkPath(const Candidates& candidates, Vec2 from, Vec2 delta, Vec2 half, Visit&& visit,
+              Stop&& stop) {
+    const float longest = std::max(std::abs(delta.x), std::abs(delta.y));
+    const float wanted = std::ceil(longest / candidates.pieceLength());
+    const int pieces = wanted >= float(kMaxPieces) ? kMaxPieces : std::max(1, int(wanted));
+    // Each piece's box is grown by far more than the rounding of its ends and of the
+    // hit tests, so that a body touching the path is near one of the pieces it touches.
+    const Vec2 to = from + delta;
+    const float magnitude = std::max({std::abs(from.x), std::abs(from.y), std::abs(to.x),
+                                      std::abs(to.y), half.x, half.y, longest});
+    const float slack = std::ldexp(magnitude, -18);
+    const Vec2 grow{half.x + slack, half.y + slack};
+    Vec2 a = from;
+    for (int piece = 1; piece <= pieces; ++piece) {
+        const float end = piece == pieces ? 1.0f : float(piece) / float(pieces);
+        const Vec2 b = piece == pieces ? to : from + delta * end;
+        const Bounds region{Vec2{std::min(a.x, b.x), std::min(a.y, b.y)} - grow,
+                            Vec2{std::max(a.x, b.x), std::max(a.y, b.y)} + grow};
+        candidates.inGrid(region, visit);
+        if (stop(end))
+            return;
+        a = b;
+    }
+}
+
+bool passes(const WorldState& w, std::uint32_t slot, const QueryFilter& filter) {
+    const Body& body = w.slots[slot];
+    return (body.category & filter.mask) != 0 && (filter.category & body.mask) != 0 &&
+           (filter.includeSensors || !body.sensor) && w.idOf(slot) != filter.ignore;
+}
+
+// --- Argument checks ---------------------------------------------------------------------
+
+void checkFilter(const WorldState& w, const QueryFilter& filter, const char* function) {
+    if (!filter.ignore.isNull() && !w.isCurrent(filter.ignore))
+        fail(function, "QueryFilter.ignore: stale or foreign BodyId (the body was destroyed "
+                       "or is not of this world)");
+}
+
+void checkBox(const char* function, Vec2 centre, Vec2 half, bool sizeZeroAllowed) {
+    requireFinite(function, "centre", centre);
+    requireFinite(function, "half", half);
+    if (sizeZeroAllowed ? (half.x < 0.0f || half.y < 0.0f) : (half.x <= 0.0f || half.y <= 0.0f))
+        fail(function, sizeZeroAllowed ? "half must be >= 0" : "half must be > 0");
+    if (!isFinite(centre - half) || !isFinite(centre + half))
+        fail(function, "the box's corners must be finite numbers (centre ± half overflows)");
+}
+
+void checkTranslation(const char* function, Vec2 centre, Vec2 translation) {
+    requireFinite(function, "translation", translation);
+    if (!isFinite(centre + translation))
+        fail(function, "centre + translation must be finite numbers");
+}
+
+// --- What is here? -----------------------------------------------------------------------
+
+/// Fills `out` with the bodies that pass the filter and for which inside(body) holds,
+/// among those touching `region`, in creation order.
+template <class Inside>
+void collect(const WorldState& w, const Bounds& region, const QueryFilter& filter, Inside&& inside,
+             std::vector<BodyId>& out) {
+    out.clear();
+    const Candidates candidates(w);
+    auto consider = [&](std::uint32_t slot) {
+        if (inside(w.slots[slot].bounds()) && passes(w, slot, filter))
+            out.push_back(w.idOf(slot));
+    };
+    candidates.inGrid(region, consider);
+    candidates.outsideGrid(consider);
+    std::sort(out.begin(), out.end(), [&](BodyId p, BodyId q) {
+        return candidates.rank(p.index) < candidates.rank(q.index);
+    });
+}
+
+void overlapping(const WorldState& w, Bounds box, const QueryFilter& filter,
+                 std::vector<BodyId>& out) {
+    // Sharing area: touching edge to edge is not overlapping.
+    collect(
+        w, box, filter,
+        [&](const Bounds& body) {
+            return body.min.x < box.max.x && box.min.x < body.max.x && body.min.y < box.max.y &&
+                   box.min.y < body.max.y;
+        },
+        out);
+}
+
+// --- Rays --------------------------------------------------------------------------------
+
+struct RayFound {
+    std::uint32_t slot;
+    std::uint32_t rank;
+    RayContact contact;
+};
+
+bool before(const RayFound& p, const RayFound& q) {
+    return p.contact.fraction < q.contact.fraction ||
+           (p.contact.fraction == q.contact.fraction && p.rank < q.rank);
+}
+
+/// The ray against one body, by the rules of rayCast.
+std::optional<RayContact> rayAgainstBody(const Body& body, Vec2 from, Vec2 delta) {
+    std::optional<RayContact> contact = rayAgainstBox(from, delta, body.bounds());
+    // A one-way platform: only through its blocking face, from outside.
+    if (contact && body.isOneWay() && (contact->axis < 0 || contact->normal != body.oneWay))
+        return std::nullopt;
+    return contact;
+}
+
+RayHit toRayHit(const WorldState& w, const RayFound& found, Vec2 from, Vec2 delta) {
+    const RayContact& contact = found.contact;
+    Vec2 point = from + delta * contact.fraction;
+    if (contact.axis >= 0 && contact.fraction > 0.0f) {
+        // Exactly on the face, whatever the rounding of the fraction.
+        const Bounds box = w.slots[found.slot].bounds();
+        if (contact.axis == 0)
+            point.x = contact.normal.x < 0.0f ? box.min.x : box.max.x;
+        else
+            point.y = contact.normal.y < 0.0f ? box.min.y : box.max.y;
+    }
+    return {w.idOf(found.slot), point, contact.normal, contact.fraction};
+}
+
+void checkRay(const WorldState& w, const char* function, Vec2 from, Vec2 to,
+              const QueryFilter& filter) {
+    requireFinite(function, "from", from);
+    requireFinite(function, "to", to);
+    if (!isFinite(to - from))
+        fail(function, "to - from must be finite numbers (the ray is too long for a float)");
+    checkFilter(w, filter, function);
+}
+
+// --- Moving boxes ------------------------------------------------------------------------
+
+/// A body a moving box runs into.
+struct Met {
+    std::uint32_t slot;
+    std::uint32_t rank;
+    CastContact contact;
+};
+
+/// What stops a moving box first: the time, and every body met then, in creation order.
+struct FirstStop {
+    float time = 2.0f; ///< > 1: nothing in the way
+    std::vector<Met> met;
+    Vec2 centre; ///< where the box stops
+};
+
+/// Sweeps the box along `motion`, by the rules of boxCast; sensors are left out when
+/// `sensorsStop` is false, whatever the filter says.
+void firstStop(const WorldState& w, const Candidates& candidates, const Box& box, Vec2 motion,
+               const QueryFilter& filter, bool sensorsStop, FirstStop& stop) {
+    stop.time = 2.0f;
+    stop.met.clear();
+    const float slop = w.def.physical.slop;
+    auto consider = [&](std::uint32_t slot) {
+        const Body& body = w.slots[slot];
+        if (!passes(w, slot, filter) || (body.sensor && !sensorsStop))
+            return;
+        const Vec2 skin{contactSkin(slop, box.half.x, body.half.x),
+                        contactSkin(slop, box.half.y, body.half.y)};
+        const std::optional<CastContact> contact = castBoxAgainst(box, motion, body.box(), skin);
+        if (!contact || contact->time > stop.time)
+            return;
+        // A one-way platform stops only what meets its blocking face; castBoxAgainst has
+        // made sure the box was on that side at the start.
+        if (body.isOneWay() && contact->normal != body.oneWay)
+            return;
+        if (contact->time < stop.time) {
+            stop.time = contact->time;
+            stop.met.clear();
+        }
+        stop.met.push_back({slot, candidates.rank(slot), *contact});
+    };
+    candidates.outsideGrid(consider);
+    walkPath(candidates, box.centre, motion, box.half, consider,
+             [&](float end) { return stop.time < end; });
+    if (stop.met.empty())
+        return;
+    // A body near two pieces of the path was met twice.
+    std::sort(stop.met.begin(), stop.met.end(),
+              [](const Met& p, const Met& q) { return p.rank < q.rank; });
+    stop.met.erase(std::unique(stop.met.begin(), stop.met.end(),
+                               [](const Met& p, const Met& q) { return p.slot == q.slot; }),
+                   stop.met.end());
+    stop.centre = box.centre + motion * stop.time;
+    // Exactly touching along the axis they came into contact on, whatever the rounding.
+    for (const Met& m : stop.met) {
+        const int axis = m.contact.touchAxis;
+        if (axis < 0)
+            continue;
+        const Body& body = w.slots[m.slot];
+        if (axis == 0)
+            stop.centre.x = body.position.x - std::copysign(box.half.x + body.half.x, motion.x);
+        else
+            stop.centre.y = body.position.y - std::copysign(box.half.y + body.half.y, motion.y);
+    }
+}
+
+} // namespace
+
+// --- The API -----------------------------------------------------------------------------
+
+void queryPoint(const World& world, Vec2 point, const QueryFilter& filter,
+                std::vector<BodyId>& out) {
+    const WorldState& w = WorldAccess::state(world);
+    requireFinite("queryPoint", "point", point);
+    checkFilter(w, filter, "queryPoint");
+    // On the edge is on the box.
+    collect(
+        w, Bounds{point, point}, filter,
+        [&](const Bounds& body) {
+            return body.min.x <= point.x && point.x <= body.max.x && body.min.y <= point.y &&
+                   point.y <= body.max.y;
+        },
+        out);
+}
+
+std::vector<BodyId> queryPoint(const World& world, Vec2 point, const QueryFilter& filter) {
+    std::vector<BodyId> out;
+    queryPoint(world, point, filter, out);
+    return out;
+}
+
+void queryBox(const World& world, Vec2 centre, Vec2 half, const QueryFilter& filter,
+              std::vector<BodyId>& out) {
+    const WorldState& w = WorldAccess::state(world);
+    checkBox("queryBox", centre, half, true);
+    checkFilter(w, filter, "queryBox");
+    overlapping(w, {centre - half, centre + half}, filter, out);
+}
+
+std::vector<BodyId> queryBox(const World& world, Vec2 centre, Vec2 half,
+                             const QueryFilter& filter) {
+    std::vector<BodyId> out;
+    queryBox(world, centre, half, filter, out);
+    return out;
+}
+
+void queryRect(const World& world, Vec2 min, Vec2 max, const QueryFilter& filter,
+               std::vector<BodyId>& out) {
+    const WorldState& w = WorldAccess::state(world);
+    requireFinite("queryRect", "min", min);
+    requireFinite("queryRect", "max", max);
+    if (min.x > max.x || min.y > max.y)
+        fail("queryRect", "min must be <= max on both axes");
+    checkFilter(w, filter, "queryRect");
+    overlapping(w, {min, max}, filter, out);
+}
+
+std::vector<BodyId> queryRect(const World& world, Vec2 min, Vec2 max, const QueryFilter& filter) {
+    std::vector<BodyId> out;
+    queryRect(world, min, max, filter, out);
+    return out;
+}
+
+std::optional<RayHit> rayCast(const World& world, Vec2 from, Vec2 to, const QueryFilter& filter) {
+    const WorldState& w = WorldAccess::state(world);
+    checkRay(w, "rayCast", from, to, filter);
+    const Vec2 delta = to - from;
+    const Candidates candidates(w);
+    std::optional<RayFound> best;
+    auto consider = [&](std::uint32_t slot) {
+        if (!passes(w, slot, filter))
+            return;
+        if (std::optional<RayContact> contact = rayAgainstBody(w.slots[slot], from, delta)) {
+            const RayFound found{slot, candidates.rank(slot), *contact};
+            if (!best || before(found, *best))
+                best = found;
+        }
+    };
+    candidates.outsideGrid(consider);
+    // Once a hit lies before the end of a piece, no later piece holds an earlier one (a
+    // hit at the same fraction may still be there: it might be of an older body).
+    walkPath(candidates, from, delta, Vec2{}, consider,
+             [&](float end) { return best && best->contact.fraction < end; });
+    if (!best)
+        return std::nullopt;
+    return toRayHit(w, *best, from, delta);
+}
+
+void rayCastAll(const World& world, Vec2 from, Vec2 to, const QueryFilter& filter,
+                std::vector<RayHit>& out) {
+    const WorldState& w = WorldAccess::state(world);
+    checkRay(w, "rayCastAll", from, to, filter);
+    out.clear();
+    const Vec2 delta = to - from;
+    const Candidates candidates(w);
+    std::vector<RayFound> found;
+    auto consider = [&](std::uint32_t slot) {
+        if (!passes(w, slot, filter))
+            return;
+        if (std::optional<RayContact> contact = rayAgainstBody(w.slots[slot], from, delta))
+            found.push_back({slot, candidates.rank(slot), *contact});
+    };
+    candidates.outsideGrid(consider);
+    walkPath(candidates, from, delta, Vec2{}, consider, [](float) { return false; });
+    // A body near two pieces of the ray was found twice, with the same fraction: the
+    // copies end up side by side.
+    std::sort(found.begin(), found.end(), before);
+    found.erase(std::unique(found.begin(), found.end(),
+                            [](const RayFound& p, const RayFound& q) { return p.slot == q.slot; }),
+                found.end());
+    out.reserve(found.size());
+    for (const RayFound& f : found)
+        out.push_back(toRayHit(w, f, from, delta));
+}
+
+std::vector<RayHit> rayCastAll(const World& world, Vec2 from, Vec2 to, const QueryFilter& filter) {
+    std::vector<RayHit> out;
+    rayCastAll(world, from, to, filter, out);
+    return out;
+}
+
+std::optional<BoxCastHit> boxCast(const World& world, Vec2 centre, Vec2 half, Vec2 translation,
+                                  const QueryFilter& filter) {
+    const WorldState& w = WorldAccess::state(world);
+    checkBox("boxCast", centre, half, false);
+    checkTranslation("boxCast", centre, translation);
+    checkFilter(w, filter, "boxCast");
+    const Candidates candidates(w);
+    FirstStop stop;
+    firstStop(w, candidates, {centre, half}, translation, filter, true, stop);
+    if (stop.met.empty())
+        return std::nullopt;
+    const Met& first = stop.met.front();
+    return BoxCastHit{w.idOf(first.slot), stop.centre, first.contact.normal, stop.time};
+}
+
+MoveResult moveAndSlide(const World& world, Vec2 centre, Vec2 half, Vec2 translation,
+                        const QueryFilter& filter) {
+    const WorldState& w = WorldAccess::state(world);
+    checkBox("moveAndSlide", centre, half, false);
+    checkTranslation("moveAndSlide", centre, translation);
+    checkFilter(w, filter, "moveAndSlide");
+    const Candidates candidates(w);
+    MoveResult result{centre, {}};
+    Vec2 left = translation;
+    FirstStop stop;
+    // Every stop drops the part of what is left along the normal of each body met, and a
+    // normal is along an axis the box is moving along: after two stops nothing is left.
+    while (left.x != 0.0f || left.y != 0.0f) {
+        firstStop(w, candidates, {result.centre, half}, left, filter, false, stop);
+        if (stop.met.empty()) {
+            result.centre += left;
+            break;
+        }
+        result.centre = stop.centre;
+        left = left * (1.0f - stop.time);
+        for (const Met& m : stop.met) {
+            result.hits.push_back({w.idOf(m.slot), m.contact.normal});
+            (m.contact.normal.x != 0.0f ? left.x : left.y) = 0.0f;
+        }
+    }
+    return result;
+}
+
+} // namespace jostle
