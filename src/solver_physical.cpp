@@ -165,6 +165,55 @@ private:
         }
     }
 
+    /// Whether the face of static body `wall` that faces `other` along `axis` (0: x,
+    /// 1: y) is, at the corner nearest `other`, covered by another static body flush
+    /// against it: a seam between two boxes of a floor or a wall, which nothing can hit.
+    /// A box sliding along a floor of separate boxes, or along a wall whose rows are
+    /// separate boxes, meets the next box at such a corner; pushing on that face would
+    /// stop it dead at the seam.
+    bool isSeam(const Body& wall, const Body& other, int axis) const {
+        const int along = 1 - axis; // the axis the face runs along
+        const float wallCentre[2] = {wall.position.x, wall.position.y};
+        const float wallHalf[2] = {wall.half.x, wall.half.y};
+        const float otherCentre[2] = {other.position.x, other.position.y};
+        const float otherHalf[2] = {other.half.x, other.half.y};
+        // The face, and the corner of it nearest `other`; `inward` runs from that corner
+        // along the face.
+        const float side = otherCentre[axis] < wallCentre[axis] ? -1.0f : 1.0f;
+        const float face = wallCentre[axis] + side * wallHalf[axis];
+        const float end = otherCentre[along] < wallCentre[along] ? -1.0f : 1.0f;
+        const float corner = wallCentre[along] + end * wallHalf[along];
+        const float inward = -end;
+        // Flush: within a hair of the face, on the far side of it from the wall.
+        const float tolerance = 1e-4f * std::max(wallHalf[axis], otherHalf[axis]);
+        // It must cover the face from the corner inward, a good part of the way.
+        const float reach = 0.25f * std::min(wallHalf[along], otherHalf[along]);
+        Bounds probe;
+        float* lo[2] = {&probe.min.x, &probe.min.y};
+        float* hi[2] = {&probe.max.x, &probe.max.y};
+        *lo[axis] = *hi[axis] = face + side * tolerance;
+        *lo[along] = std::min(corner, corner + inward * reach);
+        *hi[along] = std::max(corner, corner + inward * reach);
+        bool covered = false;
+        w_.restingGrid.query(probe, [&](std::uint32_t k) {
+            const Body& cover = w_.slots[w_.restingSlots[k]];
+            if (covered || cover.type != BodyType::Static || &cover == &wall)
+                return;
+            const float coverMin[2] = {cover.position.x - cover.half.x,
+                                       cover.position.y - cover.half.y};
+            const float coverMax[2] = {cover.position.x + cover.half.x,
+                                       cover.position.y + cover.half.y};
+            // On the other side of the face, touching it...
+            const float near = side > 0.0f ? coverMin[axis] : coverMax[axis];
+            if (std::abs(near - face) > tolerance)
+                return;
+            // ... and spanning the probe along it.
+            covered = coverMin[along] <= *lo[along] + tolerance &&
+                      coverMax[along] >= *hi[along] - tolerance;
+        });
+        return covered;
+    }
+
     /// Whether one-way `platform` blocks `other`, which lies along `outward` from it (a
     /// unit axis vector) with this gap between them at the start of the step: only on
     /// its blocking face, only if `other` was wholly on that side (within the skin), and
@@ -200,7 +249,16 @@ private:
             const float slopY = options_.slop * std::min(a.half.y, b.half.y);
             const float skinX = skinOf(a.half.x, b.half.x);
             const float skinY = skinOf(a.half.y, b.half.y);
-            const bool alongX = contactAxis(gapX, gapY, skinX, skinY) == Axis::X;
+            bool alongX = contactAxis(gapX, gapY, skinX, skinY) == Axis::X;
+            // Met at a corner (neither overlapping along the other axis): if that corner
+            // is a seam between two static bodies, the face the contact would push on is
+            // inside the level, and the other axis is the one to push along.
+            if (gapX >= -skinX && gapY >= -skinY && a.type != b.type &&
+                (a.type == BodyType::Static || b.type == BodyType::Static)) {
+                const bool aStatic = a.type == BodyType::Static;
+                if (isSeam(aStatic ? a : b, aStatic ? b : a, alongX ? 0 : 1))
+                    alongX = !alongX;
+            }
             const float gap = alongX ? gapX : gapY;
             const Vec2 normal = alongX ? Vec2{d.x < 0.0f ? -1.0f : 1.0f, 0.0f}
                                        : Vec2{0.0f, d.y < 0.0f ? -1.0f : 1.0f};

@@ -544,12 +544,11 @@ TEST(TileSeams, SlidingAlongSeparateBoxesPlacedEdgeToEdgeKeepsItsSpeed) {
     expectSlidingNeverCatches(boxFloor, kTile / 2, /*landing=*/false);
 }
 
-// The physical model's contact axis (contactAxis in src/collide.hpp) chooses by gaps
-// alone when the pair is apart on both axes: a box that lands while moving fast along a
-// floor of separate boxes is given a wall contact against the side of the next box when
-// its gap to that side is larger than its gap to the floor, and stops at the seam.
-// Tile maps are not affected (a floor of tiles is one box). Enable when fixed.
-TEST(TileSeams, DISABLED_LandingOnSeparateBoxesPlacedEdgeToEdgeKeepsTheSpeedAlongIt) {
+// A box that lands while moving fast along a floor of separate boxes meets the next box
+// at its corner, apart on both axes; its gap to that box's side may be larger than its
+// gap to the floor. The side is a seam (another static box covers it), so the contact
+// pushes on the top instead (isSeam in src/solver_physical.cpp).
+TEST(TileSeams, LandingOnSeparateBoxesPlacedEdgeToEdgeKeepsTheSpeedAlongIt) {
     expectSlidingNeverCatches(boxFloor, kTile / 2, /*landing=*/true);
 }
 
@@ -602,17 +601,16 @@ TEST(TileSeams, FallingAlongAWallOfTilesNeverCatches) {
     expectFallingAlongAWallNeverCatches([](World& world) { tileWall(world, false); });
 }
 
-// The wall's face is made of one box per row here, and the physical model's contact axis
-// (contactAxis in src/collide.hpp) gives a box touching the face, and within its skin of
-// the top (or bottom) of the next box, a floor (or ceiling) contact with that box's
-// corner: "touching on both axes: y first". The box stops dead at the seam. Enable when
-// fixed.
-TEST(TileSeams, DISABLED_FallingAlongAJaggedWallOfTilesNeverCatches) {
+// The wall's face is made of one box per row here: a box touching the face, and within
+// its skin of the top (or bottom) of the next box, touches that box at a corner on both
+// axes, where contactAxis picks y first. That top is a seam (the row above covers it), so
+// the contact pushes on the face instead.
+TEST(TileSeams, FallingAlongAJaggedWallOfTilesNeverCatches) {
     expectFallingAlongAWallNeverCatches([](World& world) { tileWall(world, true); });
 }
 
-// The same, with a wall of separate static boxes placed edge to edge. Enable when fixed.
-TEST(TileSeams, DISABLED_FallingAlongAWallOfSeparateBoxesNeverCatches) {
+// The same, with a wall of separate static boxes placed edge to edge.
+TEST(TileSeams, FallingAlongAWallOfSeparateBoxesNeverCatches) {
     expectFallingAlongAWallNeverCatches([](World& world) {
         for (int i = 0; i < 800; ++i)
             world.createBody({.type = BodyType::Static,
