@@ -457,72 +457,95 @@ TEST(SetTile, TheGuidesExample) {
 // 5000 units per second, that is from 1/6 of a unit to 83 units (five tiles) per step.
 // Friction 0 everywhere, so that a box that touched the side of a tile at a seam would
 // show it at once as lost speed.
+//
+// The same again in a world in metres far from the origin: tiles of 0.7 with their corner
+// near (1234.567, 1234.567), every length and speed scaled by 0.7 / 16. There the edges of
+// boxes that meet are equal only to within a float's rounding of coordinates in the
+// thousands, not exactly as with tiles of 16 near 0.
 
-constexpr float kTile = 16;
+/// The units of a world: its tile size, and where its floors and walls are. The numbers
+/// of the tests are written for tiles of 16 and scaled by tile / 16.
+struct Units {
+    float tile;
+    Vec2 origin;
+    float scale() const { return tile / 16; }
+};
+
+constexpr Units kPixels{16, {0, 0}};
+constexpr Units kMetresFarOut{0.7f, {1234.567f, 1234.567f}};
+
 constexpr float kGravity = 800;
 constexpr float kDt = 1.0f / 60.0f;
 constexpr float kHalves[] = {2, 5, 8, 12, 20, 40};
 constexpr float kSpeeds[] = {10, 37, 100, 333, 1000, 2500, 5000};
 
-World slidingWorld() {
+World slidingWorld(Units units) {
     // Sleeping off: a box at rest would pass by not moving.
-    return World(WorldDef{.gravity = {0, kGravity}, .sleeping = false});
+    return World(WorldDef{.gravity = {0, kGravity * units.scale()}, .sleeping = false});
 }
 
-/// How deep a box of half height `half` may sink into a floor of tiles: the slop, 0.01 ×
-/// the smaller half extent of the pair along y, and a float's rounding.
-float floorSlop(float half, float floorHalf) {
-    return 0.01f * std::min(half, floorHalf) + 1e-4f;
+/// How far a box of half extent `half` may sink into a floor or wall whose half extent
+/// along the normal is `otherHalf`, at coordinate `at`: the slop (0.01 × the smaller of
+/// the two) and a few roundings of a float near `at`.
+float slopAt(float half, float otherHalf, float at) {
+    const float magnitude = std::abs(at);
+    const float ulp = std::nextafter(magnitude, std::numeric_limits<float>::infinity()) - magnitude;
+    return 0.01f * std::min(half, otherHalf) + 4 * ulp + 1e-5f;
 }
 
-/// A floor of tiles whose top is at y = 0, from x = -12000 to 12000: room for two
-/// seconds at 5000 units per second.
-TileMapId tileFloor(World& world) {
-    TileMapDef def = mapDef({std::string(1500, '#'), std::string(1500, '#')}, kTile, -12000, 0);
+/// A floor of tiles whose top is at origin.y, 750 tiles each side of origin.x (room for
+/// two seconds at 5000 × scale units per second).
+void tileFloor(World& world, Units units) {
+    TileMapDef def = mapDef({std::string(1500, '#'), std::string(1500, '#')}, units.tile,
+                            units.origin.x - 750 * units.tile, units.origin.y);
     def.friction = 0;
-    return createTileMap(world, def);
+    createTileMap(world, def);
 }
 
 /// The same floor as 1500 separate static boxes of one tile, placed edge to edge.
-void boxFloor(World& world) {
+void boxFloor(World& world, Units units) {
     for (int i = 0; i < 1500; ++i)
         world.createBody({.type = BodyType::Static,
-                          .x = -12000 + kTile * (float(i) + 0.5f),
-                          .y = kTile / 2,
-                          .hw = kTile / 2,
-                          .hh = kTile / 2,
+                          .x = units.origin.x + units.tile * (float(i) - 750 + 0.5f),
+                          .y = units.origin.y + units.tile / 2,
+                          .hw = units.tile / 2,
+                          .hh = units.tile / 2,
                           .friction = 0});
 }
 
 /// Slides a box of every size at every speed, both ways, along the floor `makeFloor`
-/// builds (top at y = 0), from resting on it or from landing on it; checks at every step
-/// that it keeps its speed exactly and never leaves the floor by more than the slop.
+/// builds (top at origin.y), from resting on it or from landing on it; checks at every
+/// step that it keeps its speed exactly and never leaves the floor by more than the slop.
 template <typename MakeFloor>
-void expectSlidingNeverCatches(MakeFloor makeFloor, float floorHalf, bool landing) {
-    for (float half : kHalves) {
-        for (float speed : kSpeeds) {
+void expectSlidingNeverCatches(Units units, MakeFloor makeFloor, float floorHalf, bool landing) {
+    const float scale = units.scale();
+    for (float half16 : kHalves) {
+        for (float speed16 : kSpeeds) {
             for (float direction : {1.0f, -1.0f}) {
                 // Where the box starts relative to the seams: off the tile grid, at four
                 // phases.
                 for (float phase : {0.37f, 4.37f, 8.37f, 12.37f}) {
+                    const float half = half16 * scale;
+                    const float velocity = direction * speed16 * scale;
                     SCOPED_TRACE("half " + std::to_string(half) + ", speed " +
-                                 std::to_string(direction * speed) + ", phase " +
-                                 std::to_string(phase));
-                    World world = slidingWorld();
-                    makeFloor(world);
-                    const float drop = landing ? 7.3f : 0.0f;
-                    const BodyId box = world.createBody({.x = phase + half,
-                                                         .y = -half - drop,
+                                 std::to_string(velocity) + ", phase " + std::to_string(phase));
+                    World world = slidingWorld(units);
+                    makeFloor(world, units);
+                    const float drop = landing ? 7.3f * scale : 0.0f;
+                    const float restingY = units.origin.y - half;
+                    const BodyId box = world.createBody({.x = units.origin.x + phase * scale + half,
+                                                         .y = restingY - drop,
                                                          .hw = half,
                                                          .hh = half,
-                                                         .vx = direction * speed,
+                                                         .vx = velocity,
                                                          .friction = 0});
                     for (int step = 0; step < 120; ++step) {
                         world.step(kDt);
-                        ASSERT_EQ(world.velocity(box).x, direction * speed) << "step " << step;
+                        ASSERT_EQ(world.velocity(box).x, velocity) << "step " << step;
                         // A dropped box lands within 8 steps (7.3 units at g = 800).
                         if (!landing || step >= 8) {
-                            ASSERT_NEAR(world.position(box).y, -half, floorSlop(half, floorHalf))
+                            ASSERT_NEAR(world.position(box).y, restingY,
+                                        slopAt(half, floorHalf * scale, restingY))
                                 << "step " << step;
                         }
                     }
@@ -532,63 +555,66 @@ void expectSlidingNeverCatches(MakeFloor makeFloor, float floorHalf, bool landin
     }
 }
 
-TEST(TileSeams, SlidingAlongATileFloorKeepsItsSpeed) {
-    expectSlidingNeverCatches(tileFloor, kTile, /*landing=*/false);
-}
-
-TEST(TileSeams, LandingOnATileFloorKeepsTheSpeedAlongIt) {
-    expectSlidingNeverCatches(tileFloor, kTile, /*landing=*/true);
-}
-
-TEST(TileSeams, SlidingAlongSeparateBoxesPlacedEdgeToEdgeKeepsItsSpeed) {
-    expectSlidingNeverCatches(boxFloor, kTile / 2, /*landing=*/false);
-}
-
-// A box that lands while moving fast along a floor of separate boxes meets the next box
-// at its corner, apart on both axes; its gap to that box's side may be larger than its
-// gap to the floor. The side is a seam (another static box covers it), so the contact
-// pushes on the top instead (isSeam in src/solver_physical.cpp).
-TEST(TileSeams, LandingOnSeparateBoxesPlacedEdgeToEdgeKeepsTheSpeedAlongIt) {
-    expectSlidingNeverCatches(boxFloor, kTile / 2, /*landing=*/true);
-}
-
-/// A wall of tiles whose left face is at x = 0, from y = -2000 to y = 10800: its rows all
-/// alike (one box), or each ending at a different column behind the face (so that the
-/// face is made of one box per row).
-TileMapId tileWall(World& world, bool jagged) {
+/// A wall of tiles whose left face is at origin.x, from 125 tiles above origin.y to 675
+/// below: its rows all alike (one box), or each ending at a different column behind the
+/// face (so that the face is made of one box per row).
+void tileWall(World& world, Units units, bool jagged) {
     std::vector<std::string> rows;
     for (int row = 0; row < 800; ++row)
         rows.push_back(jagged ? std::string(std::size_t(1 + row % 3), '#') +
                                     std::string(std::size_t(2 - row % 3), '.')
                               : "###");
-    TileMapDef def = mapDef(rows, kTile, 0, -2000);
+    TileMapDef def = mapDef(rows, units.tile, units.origin.x, units.origin.y - 125 * units.tile);
     def.friction = 0;
-    return createTileMap(world, def);
+    createTileMap(world, def);
 }
 
-/// A box pressed against the wall `makeWall` builds (left face at x = 0) by a sideways
+/// The same wall, one tile thick, as separate static boxes placed edge to edge.
+void boxWall(World& world, Units units) {
+    for (int i = 0; i < 800; ++i)
+        world.createBody({.type = BodyType::Static,
+                          .x = units.origin.x + units.tile / 2,
+                          .y = units.origin.y + units.tile * (float(i) - 125 + 0.5f),
+                          .hw = units.tile / 2,
+                          .hh = units.tile / 2,
+                          .friction = 0});
+}
+
+/// A box pressed against the wall `makeWall` builds (left face at origin.x) by a sideways
 /// velocity set every step, as a player holding "right" does, falls or rises along it
 /// without catching: gravity alone changes its vertical speed.
-template <typename MakeWall> void expectFallingAlongAWallNeverCatches(MakeWall makeWall) {
-    for (float half : kHalves) {
-        for (float push : {1.0f, 300.0f}) {
-            for (float start : {0.0f, -1500.0f}) { // falling from rest, or jumping up
+template <typename MakeWall>
+void expectFallingAlongAWallNeverCatches(Units units, MakeWall makeWall) {
+    const float scale = units.scale();
+    const float gravity = kGravity * scale;
+    for (float half16 : kHalves) {
+        for (float push16 : {1.0f, 300.0f}) {
+            for (float start16 : {0.0f, -1500.0f}) { // falling from rest, or jumping up
                 // Where the box starts relative to the seams: ten phases across a tile.
                 for (int phase = 0; phase < 10; ++phase) {
-                    const float y = 0.37f + kTile * float(phase) / 10 + half;
+                    const float half = half16 * scale;
+                    const float push = push16 * scale;
+                    const float x = units.origin.x - half;
+                    const float y =
+                        units.origin.y + (0.37f + 16 * float(phase) / 10) * scale + half;
                     SCOPED_TRACE("half " + std::to_string(half) + ", push " + std::to_string(push) +
-                                 ", vy " + std::to_string(start) + ", y " + std::to_string(y));
-                    World world = slidingWorld();
-                    makeWall(world);
-                    const BodyId box = world.createBody(
-                        {.x = -half, .y = y, .hw = half, .hh = half, .vy = start, .friction = 0});
+                                 ", vy " + std::to_string(start16 * scale) + ", y " +
+                                 std::to_string(y));
+                    World world = slidingWorld(units);
+                    makeWall(world, units);
+                    const BodyId box = world.createBody({.x = x,
+                                                         .y = y,
+                                                         .hw = half,
+                                                         .hh = half,
+                                                         .vy = start16 * scale,
+                                                         .friction = 0});
                     for (int step = 0; step < 90; ++step) {
                         const float before = world.velocity(box).y;
                         world.setVelocity(box, {push, before});
                         world.step(kDt);
-                        ASSERT_NEAR(world.velocity(box).y, before + kGravity * kDt, 1e-3f)
+                        ASSERT_NEAR(world.velocity(box).y, before + gravity * kDt, 1e-3f * scale)
                             << "step " << step;
-                        ASSERT_NEAR(world.position(box).x, -half, floorSlop(half, 1.5f * kTile))
+                        ASSERT_NEAR(world.position(box).x, x, slopAt(half, 1.5f * units.tile, x))
                             << "step " << step;
                     }
                 }
@@ -597,8 +623,33 @@ template <typename MakeWall> void expectFallingAlongAWallNeverCatches(MakeWall m
     }
 }
 
+TEST(TileSeams, SlidingAlongATileFloorKeepsItsSpeed) {
+    for (Units units : {kPixels, kMetresFarOut})
+        expectSlidingNeverCatches(units, tileFloor, 16, /*landing=*/false);
+}
+
+TEST(TileSeams, LandingOnATileFloorKeepsTheSpeedAlongIt) {
+    for (Units units : {kPixels, kMetresFarOut})
+        expectSlidingNeverCatches(units, tileFloor, 16, /*landing=*/true);
+}
+
+TEST(TileSeams, SlidingAlongSeparateBoxesPlacedEdgeToEdgeKeepsItsSpeed) {
+    for (Units units : {kPixels, kMetresFarOut})
+        expectSlidingNeverCatches(units, boxFloor, 8, /*landing=*/false);
+}
+
+// A box that lands while moving fast along a floor of separate boxes meets the next box
+// at its corner, apart on both axes; its gap to that box's side may be larger than its
+// gap to the floor. The side is a seam (another static box covers it), so the contact
+// pushes on the top instead (isSeam in src/solver_physical.cpp).
+TEST(TileSeams, LandingOnSeparateBoxesPlacedEdgeToEdgeKeepsTheSpeedAlongIt) {
+    expectSlidingNeverCatches(kPixels, boxFloor, 8, /*landing=*/true);
+}
+
 TEST(TileSeams, FallingAlongAWallOfTilesNeverCatches) {
-    expectFallingAlongAWallNeverCatches([](World& world) { tileWall(world, false); });
+    for (Units units : {kPixels, kMetresFarOut})
+        expectFallingAlongAWallNeverCatches(
+            units, [](World& world, Units u) { tileWall(world, u, /*jagged=*/false); });
 }
 
 // The wall's face is made of one box per row here: a box touching the face, and within
@@ -606,20 +657,32 @@ TEST(TileSeams, FallingAlongAWallOfTilesNeverCatches) {
 // axes, where contactAxis picks y first. That top is a seam (the row above covers it), so
 // the contact pushes on the face instead.
 TEST(TileSeams, FallingAlongAJaggedWallOfTilesNeverCatches) {
-    expectFallingAlongAWallNeverCatches([](World& world) { tileWall(world, true); });
+    expectFallingAlongAWallNeverCatches(
+        kPixels, [](World& world, Units u) { tileWall(world, u, /*jagged=*/true); });
 }
 
 // The same, with a wall of separate static boxes placed edge to edge.
 TEST(TileSeams, FallingAlongAWallOfSeparateBoxesNeverCatches) {
-    expectFallingAlongAWallNeverCatches([](World& world) {
-        for (int i = 0; i < 800; ++i)
-            world.createBody({.type = BodyType::Static,
-                              .x = kTile / 2,
-                              .y = -2000 + kTile * (float(i) + 0.5f),
-                              .hw = kTile / 2,
-                              .hh = kTile / 2,
-                              .friction = 0});
-    });
+    expectFallingAlongAWallNeverCatches(kPixels, boxWall);
+}
+
+// In metres far from the origin, the seams of separate boxes and jagged walls are not
+// recognised: isSeam (src/solver_physical.cpp) wants the covering box within 1e-4 × the
+// larger half extent of the face (3.5e-5 here), and the edges of boxes placed edge to edge
+// differ by a float's rounding of their coordinates (1.2e-4 near 1234; with tiles of 0.7
+// even near 0). About one start in five catches. Enable when isSeam's tolerance allows
+// for the rounding of coordinates.
+TEST(TileSeams, DISABLED_LandingOnSeparateBoxesInMetresFarOutKeepsTheSpeedAlongIt) {
+    expectSlidingNeverCatches(kMetresFarOut, boxFloor, 8, /*landing=*/true);
+}
+
+TEST(TileSeams, DISABLED_FallingAlongAJaggedWallOfTilesInMetresFarOutNeverCatches) {
+    expectFallingAlongAWallNeverCatches(
+        kMetresFarOut, [](World& world, Units u) { tileWall(world, u, /*jagged=*/true); });
+}
+
+TEST(TileSeams, DISABLED_FallingAlongAWallOfSeparateBoxesInMetresFarOutNeverCatches) {
+    expectFallingAlongAWallNeverCatches(kMetresFarOut, boxWall);
 }
 
 } // namespace
