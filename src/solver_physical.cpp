@@ -184,8 +184,12 @@ private:
         const float end = otherCentre[along] < wallCentre[along] ? -1.0f : 1.0f;
         const float corner = wallCentre[along] + end * wallHalf[along];
         const float inward = -end;
-        // Flush: within a hair of the face, on the far side of it from the wall.
-        const float tolerance = 1e-4f * std::max(wallHalf[axis], otherHalf[axis]);
+        // Flush: within a hair of the face, on the far side of it from the wall. A hair is
+        // a small fraction of the sizes, or a few float steps at the face's coordinate
+        // (metre-sized tiles far from the origin round coarser than that fraction).
+        const float ulp = std::nextafter(std::abs(face), INFINITY) - std::abs(face);
+        const float tolerance =
+            std::max(1e-4f * std::max(wallHalf[axis], otherHalf[axis]), 4.0f * ulp);
         // It must cover the face from the corner inward, a good part of the way.
         const float reach = 0.25f * std::min(wallHalf[along], otherHalf[along]);
         Bounds probe;

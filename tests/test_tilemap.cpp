@@ -666,22 +666,19 @@ TEST(TileSeams, FallingAlongAWallOfSeparateBoxesNeverCatches) {
     expectFallingAlongAWallNeverCatches(kPixels, boxWall);
 }
 
-// In metres far from the origin, the seams of separate boxes and jagged walls are not
-// recognised: isSeam (src/solver_physical.cpp) wants the covering box within 1e-4 × the
-// larger half extent of the face (3.5e-5 here), and the edges of boxes placed edge to edge
-// differ by a float's rounding of their coordinates (1.2e-4 near 1234; with tiles of 0.7
-// even near 0). About one start in five catches. Enable when isSeam's tolerance allows
-// for the rounding of coordinates.
-TEST(TileSeams, DISABLED_LandingOnSeparateBoxesInMetresFarOutKeepsTheSpeedAlongIt) {
+// In metres far from the origin: the edges of boxes placed edge to edge differ by a
+// float's rounding of their coordinates (1.2e-4 near 1234), more than 1e-4 × a tile of
+// 0.7. isSeam (src/solver_physical.cpp) allows a few float steps at the face as well.
+TEST(TileSeams, LandingOnSeparateBoxesInMetresFarOutKeepsTheSpeedAlongIt) {
     expectSlidingNeverCatches(kMetresFarOut, boxFloor, 8, /*landing=*/true);
 }
 
-TEST(TileSeams, DISABLED_FallingAlongAJaggedWallOfTilesInMetresFarOutNeverCatches) {
+TEST(TileSeams, FallingAlongAJaggedWallOfTilesInMetresFarOutNeverCatches) {
     expectFallingAlongAWallNeverCatches(
         kMetresFarOut, [](World& world, Units u) { tileWall(world, u, /*jagged=*/true); });
 }
 
-TEST(TileSeams, DISABLED_FallingAlongAWallOfSeparateBoxesInMetresFarOutNeverCatches) {
+TEST(TileSeams, FallingAlongAWallOfSeparateBoxesInMetresFarOutNeverCatches) {
     expectFallingAlongAWallNeverCatches(kMetresFarOut, boxWall);
 }
 
