@@ -18,38 +18,56 @@ bool notEvaluated(const WorldState& world, const TouchRecord& record) {
            resting(record.b);
 }
 
-/// Sorts `now` by pair, adds the carried-over pairs of `before`, then reports the pairs
-/// only in `now` (begin) and only in `before` (end). `now` becomes the new `before`.
+/// Sorts `records` by pair (a's slot, then b's) in two stable counting passes, by b then
+/// by a: linear in the records and the slots. A slot holds one body at a time, so within
+/// one list the pair of slots names the pair.
+void sortByPair(std::vector<TouchRecord>& records, std::vector<TouchRecord>& scratch,
+                std::vector<std::uint32_t>& counts, std::size_t slotCount) {
+    auto pass = [&](auto slotOf) {
+        counts.assign(slotCount + 1, 0);
+        for (const TouchRecord& r : records)
+            ++counts[slotOf(r) + 1];
+        for (std::size_t k = 0; k < slotCount; ++k)
+            counts[k + 1] += counts[k];
+        scratch.resize(records.size());
+        for (const TouchRecord& r : records)
+            scratch[counts[slotOf(r)]++] = r;
+        records.swap(scratch);
+    };
+    pass([](const TouchRecord& r) { return r.b.index; });
+    pass([](const TouchRecord& r) { return r.a.index; });
+}
+
+/// Walks this step's pairs (`now`, sorted) beside the last step's (`before`, sorted):
+/// pairs only in `now` begin; pairs only in `before` end, unless the step did not look
+/// at them (then they carry over); a slot pair holding other bodies than before ends
+/// and begins. `before` becomes the new list.
 template <class OnBegin, class OnEnd>
 void compare(const WorldState& world, std::vector<TouchRecord>& now,
-             std::vector<TouchRecord>& before, OnBegin&& begin, OnEnd&& end) {
-    for (const TouchRecord& record : before)
-        if (notEvaluated(world, record))
-            now.push_back(record);
-    auto byPair = [](const TouchRecord& p, const TouchRecord& q) {
-        return p.key() != q.key() ? p.key() < q.key()
-                                  : std::pair(p.a.generation, p.b.generation) <
-                                        std::pair(q.a.generation, q.b.generation);
-    };
-    std::sort(now.begin(), now.end(), byPair);
-    // A pair is evaluated once a step, but a carried pair may also have been found again.
-    now.erase(std::unique(now.begin(), now.end(),
-                          [](const TouchRecord& p, const TouchRecord& q) {
-                              return p.a == q.a && p.b == q.b;
-                          }),
-              now.end());
+             std::vector<TouchRecord>& before, std::vector<TouchRecord>& out, OnBegin&& begin,
+             OnEnd&& end) {
+    out.clear();
     std::size_t i = 0, j = 0;
     while (i < now.size() || j < before.size()) {
-        if (j == before.size() || (i < now.size() && byPair(now[i], before[j]))) {
-            begin(now[i++]);
-        } else if (i == now.size() || byPair(before[j], now[i])) {
-            end(before[j++]);
+        if (j == before.size() || (i < now.size() && now[i].key() < before[j].key())) {
+            begin(now[i]);
+            out.push_back(now[i++]);
+        } else if (i == now.size() || before[j].key() < now[i].key()) {
+            if (notEvaluated(world, before[j]))
+                out.push_back(before[j]);
+            else
+                end(before[j]);
+            ++j;
         } else {
-            ++i;
+            if (now[i].a != before[j].a || now[i].b != before[j].b) {
+                end(before[j]);
+                begin(now[i]);
+            }
+            out.push_back(now[i++]);
             ++j;
         }
     }
-    before.swap(now);
+    before.swap(out);
     now.clear();
 }
 
@@ -104,17 +122,23 @@ void StepEvents::beginStep(const WorldState& world) {
     }
 }
 
-void StepEvents::publish(const WorldState& world) {
+void StepEvents::publish(const WorldState& world, bool anyAwake) {
+    // Nothing awake and nothing gone: every pair of the last step carries over as it was.
+    if (!anyAwake && !destroyedSincePublish && contactsNow.empty() && sensorsNow.empty())
+        return;
+    destroyedSincePublish = false;
+    sortByPair(contactsNow, scratch_, counts_, world.slots.size());
     compare(
-        world, contactsNow, contactsBefore_,
+        world, contactsNow, contactsBefore_, scratch_,
         [&](const TouchRecord& r) {
             begins.push_back({r.a, r.b, r.normal, r.approachSpeed});
         },
         [&](const TouchRecord& r) {
             ends.push_back({r.a, r.b, r.normal, 0.0f});
         });
+    sortByPair(sensorsNow, scratch_, counts_, world.slots.size());
     compare(
-        world, sensorsNow, sensorsBefore_,
+        world, sensorsNow, sensorsBefore_, scratch_,
         [&](const TouchRecord& r) {
             sensorBegins.push_back({r.a, r.b});
         },

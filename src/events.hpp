@@ -44,7 +44,12 @@ struct StepEvents {
     /// Turns this step's lists into begin and end events against the last step's, and
     /// keeps them for the next step. Pairs that were not looked at this step (neither
     /// body an awake dynamic one: a sleeping pile on its floor) carry over unchanged.
-    void publish(const WorldState& world);
+    /// `anyAwake`: whether the step had any awake dynamic body (if not, and nothing was
+    /// destroyed, there is nothing to compare).
+    void publish(const WorldState& world, bool anyAwake);
+
+    /// Set by destroyBody: the next publish must look for the pairs it ended.
+    bool destroyedSincePublish = false;
     /// Forgets everything (the model changed).
     void clear();
 
@@ -53,6 +58,8 @@ struct StepEvents {
 
 private:
     std::vector<TouchRecord> contactsBefore_, sensorsBefore_;
+    std::vector<TouchRecord> scratch_;
+    std::vector<std::uint32_t> counts_;
 };
 
 /// Records that two bodies touch at the end of this step: `normal` points from `other`

@@ -405,7 +405,7 @@ private:
 
 void stepClassic(WorldState& world, float dt) {
     ClassicStep(world, dt).run();
-    world.events.publish(world);
+    world.events.publish(world, true);
 }
 
 } // namespace jostle

@@ -93,7 +93,8 @@ public:
         }
         if (w_.def.sleeping)
             fallAsleep();
-        w_.events.publish(w_);
+        w_.events.publish(w_, std::find(w_.movingDynamic.begin(), w_.movingDynamic.end(),
+                                        std::uint8_t{1}) != w_.movingDynamic.end());
     }
 
 private:

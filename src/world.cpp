@@ -120,6 +120,7 @@ void World::destroyBody(BodyId id) {
     WorldState& w = *state_;
     Body& body = lookUp(w, id, "destroyBody");
     w.disturb(id.index);
+    w.events.destroyedSincePublish = true;
     if (body.type == BodyType::Static)
         w.restingDirty = true;
     body.alive = false;
