@@ -143,6 +143,16 @@ private:
         const Vec2 g = w_.def.gravity;
         if (g == Vec2{})
             return; // nothing stands on anything without gravity
+        bool anyChanged = false;
+        for (std::uint32_t slot : w_.movingSlots) {
+            const Body& body = w_.slots[slot];
+            if (body.type == BodyType::Kinematic && body.velocity != body.lastStepVelocity) {
+                anyChanged = true;
+                break;
+            }
+        }
+        if (!anyChanged)
+            return; // no platform changed its velocity: nobody to hand anything to
         carried_.assign(w_.slots.size(), 0);
         for (const TouchRecord& record : w_.events.touchingBefore()) {
             if (!w_.isCurrent(record.a) || !w_.isCurrent(record.b))
