@@ -79,9 +79,9 @@ private:
 
     int levelOf(const Bounds& box) const;
     /// By how many doublings to grow the first level's cells so that it holds most of
-    /// the boxes (at most kMaxMerged: cells up to 4 times as wide as the smallest box).
+    /// the boxes (at most kMaxMerged: cells up to twice as wide as the smallest box).
     int mergedLevels(double base) const;
-    static constexpr int kMaxMerged = 2;
+    static constexpr int kMaxMerged = 1;
     static constexpr double kMergedShare = 0.9;
     Cell cellOf(Vec2 point, const Level& level) const;
     std::size_t hashOf(int level, Cell cell) const;
