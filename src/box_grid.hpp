@@ -20,6 +20,7 @@
 
 #include "jostle/math.hpp"
 
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -30,6 +31,13 @@ struct Bounds {
     Vec2 min;
     Vec2 max;
 };
+
+/// The region a box of half extents `half` covers moving from `centre` by `motion`.
+inline Bounds sweptBounds(Vec2 centre, Vec2 half, Vec2 motion) {
+    const Vec2 to = centre + motion;
+    return {{std::min(centre.x, to.x) - half.x, std::min(centre.y, to.y) - half.y},
+            {std::max(centre.x, to.x) + half.x, std::max(centre.y, to.y) + half.y}};
+}
 
 /// True when the two boxes overlap or touch.
 inline bool touches(const Bounds& a, const Bounds& b) {

@@ -116,10 +116,7 @@ private:
             if (k.type == BodyType::Kinematic) {
                 kinematicSlots_.push_back(s);
                 const Vec2 back = k.velocity * dt_;
-                kinematic.push_back({{std::min(k.position.x, k.position.x - back.x) - k.half.x,
-                                      std::min(k.position.y, k.position.y - back.y) - k.half.y},
-                                     {std::max(k.position.x, k.position.x - back.x) + k.half.x,
-                                      std::max(k.position.y, k.position.y - back.y) + k.half.y}});
+                kinematic.push_back(sweptBounds(k.position, k.half, -back));
             }
         }
         kinematicGrid_.build(kinematic);
@@ -266,10 +263,7 @@ private:
     std::optional<std::pair<Hit, std::uint32_t>> firstHit(std::uint32_t a, Vec2 motion,
                                                           float remaining) {
         const Body& body = w_.slots[a];
-        const Bounds swept{{std::min(body.position.x, body.position.x + motion.x) - body.half.x,
-                            std::min(body.position.y, body.position.y + motion.y) - body.half.y},
-                           {std::max(body.position.x, body.position.x + motion.x) + body.half.x,
-                            std::max(body.position.y, body.position.y + motion.y) + body.half.y}};
+        const Bounds swept = sweptBounds(body.position, body.half, motion);
         // The kinematic grid holds each kinematic body's sweep over the step: whatever
         // could cross the body's path is found.
         gatherStatics(swept, -1);

@@ -543,10 +543,7 @@ private:
     /// ones, and dynamic ones too if it is a bullet.
     std::optional<std::pair<Hit, std::uint32_t>> firstHit(std::uint32_t slot, Vec2 motion) {
         const Body& body = w_.slots[slot];
-        const Bounds swept{{std::min(body.position.x, body.position.x + motion.x) - body.half.x,
-                            std::min(body.position.y, body.position.y + motion.y) - body.half.y},
-                           {std::max(body.position.x, body.position.x + motion.x) + body.half.x,
-                            std::max(body.position.y, body.position.y + motion.y) + body.half.y}};
+        const Bounds swept = sweptBounds(body.position, body.half, motion);
         std::optional<std::pair<Hit, std::uint32_t>> first;
         auto consider = [&](std::uint32_t other) {
             const Body& obstacle = w_.slots[other];
