@@ -9,6 +9,7 @@ packages=(
   libgtest-dev libgmock-dev  # tests
   nlohmann-json3-dev      # scene files
   libcli11-dev            # the jostle program's command line
+  libpng-dev libgif-dev   # jostle render's PNG and GIF files
   "$@"
 )
 

@@ -1,9 +1,13 @@
 // The `jostle` program: runs scene files from the command line (docs/scene-format.md).
 //
 //     jostle run SCENE --steps N [--trace FILE|-] [--every K]
+//     jostle render SCENE --out FILE.gif|FILE.png [--steps N] [--width W] [--height H]
+//                   [--every K]
 //
 // Exit status: 0 when all went well; 2 for bad input (options, scene file, a value the
 // world refuses); 1 when the output cannot be written or something unexpected fails.
+#include "errors.hpp"
+#include "render.hpp"
 #include "summary.hpp"
 #include "trace.hpp"
 
@@ -17,15 +21,17 @@
 #include <cstdint>
 #include <cstdio>
 #include <exception>
+#include <limits>
 #include <memory>
 #include <string>
-#include <system_error>
 #include <vector>
 
 namespace {
 
-constexpr int kBadInput = 2;
-constexpr int kFailure = 1;
+using jostle::cli::kBadInput;
+using jostle::cli::kFailure;
+using jostle::cli::printError;
+using jostle::cli::systemMessage;
 
 struct RunOptions {
     std::string scene;
@@ -34,29 +40,30 @@ struct RunOptions {
     std::int64_t every = 1;
 };
 
-void printError(const std::string& message) {
-    std::fprintf(stderr, "jostle: error: %s\n", message.c_str());
-}
-
-std::string systemMessage(int error) {
-    return std::error_code(error, std::generic_category()).message();
-}
-
-/// Accepts whole numbers >= minimum, and says so in a sentence when it refuses.
-CLI::Validator atLeast(std::int64_t minimum) {
-    const std::string rule = ">= " + std::to_string(minimum);
+/// Accepts whole numbers from minimum to maximum, and says so in a sentence when it
+/// refuses.
+CLI::Validator inRange(std::int64_t minimum, std::int64_t maximum) {
+    const std::string rule = maximum == std::numeric_limits<std::int64_t>::max()
+                                 ? ">= " + std::to_string(minimum)
+                                 : std::to_string(minimum) + " to " + std::to_string(maximum);
     return CLI::Validator(
-        [minimum, rule](std::string& text) -> std::string {
+        [minimum, maximum, rule](std::string& text) -> std::string {
             std::int64_t value = 0;
             const char* end = text.data() + text.size();
             const auto [stop, error] = std::from_chars(text.data(), end, value);
             if (error != std::errc() || stop != end)
                 return "expected a whole number " + rule + ", got " + text;
             if (value < minimum)
-                return "must be " + rule + ", got " + text;
+                return "must be >= " + std::to_string(minimum) + ", got " + text;
+            if (value > maximum)
+                return "must be <= " + std::to_string(maximum) + ", got " + text;
             return {};
         },
         rule);
+}
+
+CLI::Validator atLeast(std::int64_t minimum) {
+    return inRange(minimum, std::numeric_limits<std::int64_t>::max());
 }
 
 /// Where the trace goes: stdout, a file of ours, or nowhere.
@@ -153,6 +160,36 @@ int main(int argc, char** argv) {
         ->check(atLeast(1))
         ->needs(traceOption);
 
+    jostle::cli::RenderOptions renderOptions;
+    CLI::App* renderCommand = app.add_subcommand(
+        "render", "Step a scene file headless and draw it: an animated GIF or a PNG.");
+    renderCommand->add_option("scene", renderOptions.scene, "The scene file (docs/scene-format.md)")
+        ->required();
+    renderCommand
+        ->add_option("-o,--out", renderOptions.out,
+                     "The image to write: FILE.gif (every K-th step) or FILE.png (the last)")
+        ->type_name("FILE")
+        ->required();
+    renderCommand->add_option("-n,--steps", renderOptions.steps, "How many steps to take, >= 0")
+        ->capture_default_str()
+        ->check(atLeast(0));
+    const std::int64_t maxSide = jostle::cli::kMaxImageSide;
+    renderCommand
+        ->add_option("--width", renderOptions.width,
+                     "Image width in pixels (default: 640, or fitted to --height)")
+        ->type_name("W")
+        ->check(inRange(1, maxSide));
+    renderCommand
+        ->add_option("--height", renderOptions.height,
+                     "Image height in pixels (default: fitted to the scene and the width)")
+        ->type_name("H")
+        ->check(inRange(1, maxSide));
+    renderCommand
+        ->add_option("--every", renderOptions.every, "GIF: a frame of steps 0, K, 2K, ... (K >= 1)")
+        ->type_name("K")
+        ->capture_default_str()
+        ->check(atLeast(1));
+
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& error) {
@@ -161,18 +198,21 @@ int main(int argc, char** argv) {
             return app.exit(error);
         printError(error.what());
         std::fprintf(stderr, "Run '%s --help' for usage.\n",
-                     runCommand->parsed() ? "jostle run" : "jostle");
+                     runCommand->parsed()      ? "jostle run"
+                     : renderCommand->parsed() ? "jostle render"
+                                               : "jostle");
         return kBadInput;
     }
 
+    const std::string& scenePath = renderCommand->parsed() ? renderOptions.scene : options.scene;
     try {
-        return run(options);
+        return renderCommand->parsed() ? jostle::cli::render(renderOptions) : run(options);
     } catch (const jostle::SceneError& error) {
         printError(error.what()); // already names the file
         return kBadInput;
     } catch (const jostle::Error& error) {
         // The world refused the scene (e.g. a solver it does not have yet).
-        printError(options.scene + ": " + error.what());
+        printError(scenePath + ": " + error.what());
         return kBadInput;
     } catch (const std::exception& error) {
         printError(error.what());

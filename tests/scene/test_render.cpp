@@ -1,0 +1,239 @@
+// `jostle render`, run as a user runs it: the files it writes are read back with libpng
+// and giflib, and their pixels checked against positions worked out by hand from the
+// camera rule of docs/scene-format.md.
+#include <gif_lib.h>
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+#include <png.h>
+
+#include <array>
+#include <cstdint>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <sys/wait.h>
+#include <unistd.h>
+#include <vector>
+
+namespace {
+
+using ::testing::HasSubstr;
+
+struct Result {
+    int status = -1; ///< the exit status; -1 if it did not exit normally
+    std::string err;
+};
+
+struct Rgb {
+    int r, g, b;
+    friend bool operator==(Rgb, Rgb) = default;
+};
+
+std::ostream& operator<<(std::ostream& out, Rgb c) {
+    return out << "rgb(" << c.r << ", " << c.g << ", " << c.b << ")";
+}
+
+// The documented colours (docs/scene-format.md, `jostle render`).
+constexpr Rgb kBackground{24, 26, 33};
+constexpr Rgb kStatic{150, 150, 150};
+constexpr Rgb kStaticOutline{90, 90, 90};
+constexpr Rgb kDynamic{240, 150, 60};
+constexpr Rgb kKinematicSensor{70, 130, 230};
+
+/// A PNG read back as RGB.
+struct Png {
+    int width = 0;
+    int height = 0;
+    std::vector<std::uint8_t> rgb;
+
+    Rgb at(int x, int y) const {
+        const std::size_t i = (static_cast<std::size_t>(y) * width + x) * 3;
+        return {rgb[i], rgb[i + 1], rgb[i + 2]};
+    }
+};
+
+Png readPng(const std::string& path) {
+    png_image image{};
+    image.version = PNG_IMAGE_VERSION;
+    Png png;
+    if (!png_image_begin_read_from_file(&image, path.c_str())) {
+        ADD_FAILURE() << path << ": " << image.message;
+        return png;
+    }
+    image.format = PNG_FORMAT_RGB;
+    png.width = static_cast<int>(image.width);
+    png.height = static_cast<int>(image.height);
+    png.rgb.resize(PNG_IMAGE_SIZE(image));
+    if (!png_image_finish_read(&image, nullptr, png.rgb.data(), 0, nullptr))
+        ADD_FAILURE() << path << ": " << image.message;
+    return png;
+}
+
+struct Gif {
+    int width = 0;
+    int height = 0;
+    int frames = 0;
+};
+
+Gif readGif(const std::string& path) {
+    int error = 0;
+    GifFileType* file = DGifOpenFileName(path.c_str(), &error);
+    if (!file) {
+        ADD_FAILURE() << path << ": " << GifErrorString(error);
+        return {};
+    }
+    if (DGifSlurp(file) == GIF_ERROR)
+        ADD_FAILURE() << path << ": " << GifErrorString(file->Error);
+    const Gif gif{file->SWidth, file->SHeight, file->ImageCount};
+    DGifCloseFile(file, &error);
+    return gif;
+}
+
+std::string readAll(const std::filesystem::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::stringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+class Render : public ::testing::Test {
+protected:
+    void SetUp() override {
+        const auto* test = ::testing::UnitTest::GetInstance()->current_test_info();
+        dir_ = std::filesystem::temp_directory_path() /
+               ("jostle_render_test_" + std::to_string(::getpid()) + "_" + test->name());
+        std::filesystem::create_directories(dir_);
+    }
+    void TearDown() override { std::filesystem::remove_all(dir_); }
+
+    std::string path(const std::string& name) const { return (dir_ / name).string(); }
+
+    std::string write(const std::string& name, const std::string& text) {
+        std::ofstream(path(name), std::ios::binary) << text;
+        return path(name);
+    }
+
+    /// Runs `jostle render ARGS`, capturing stderr.
+    Result render(const std::string& args) {
+        const std::string command = std::string("'") + JOSTLE_EXE + "' render " + args +
+                                    " >/dev/null 2>'" + path("stderr") + "'";
+        const int raw = std::system(command.c_str());
+        Result result;
+        if (raw != -1 && WIFEXITED(raw))
+            result.status = WEXITSTATUS(raw);
+        result.err = readAll(path("stderr"));
+        return result;
+    }
+
+    std::filesystem::path dir_;
+};
+
+// One static box 20 × 20, away from the origin. Its bounds, 20 wide, get a margin of
+// 20 / 20 = 1 on each side: 22 world units fill the 110 pixels, 5 pixels each, and the
+// box's left edge (x = 90) falls on pixel 5, its right edge (x = 110) on pixel 105. So
+// columns and rows 5 to 104 are the box, 5 and 104 its outline, and 0-4 and 105-109
+// the background.
+constexpr const char* kOneBox = R"({"bodies": [
+    {"type": "static", "x": 100, "y": -50, "hw": 10, "hh": 10}]})";
+
+TEST_F(Render, PngOfOneBoxHasTheBoxWhereTheCameraRulePutsIt) {
+    const std::string scene = write("box.json", kOneBox);
+    const Result result =
+        render(scene + " --out " + path("box.png") + " --width 110 --height 110 --steps 3");
+    ASSERT_EQ(result.status, 0) << result.err;
+    const Png png = readPng(path("box.png"));
+    ASSERT_EQ(png.width, 110);
+    ASSERT_EQ(png.height, 110);
+    EXPECT_EQ(png.at(55, 55), kStatic);
+    EXPECT_EQ(png.at(6, 6), kStatic);
+    EXPECT_EQ(png.at(103, 103), kStatic);
+    EXPECT_EQ(png.at(5, 55), kStaticOutline);
+    EXPECT_EQ(png.at(104, 55), kStaticOutline);
+    EXPECT_EQ(png.at(55, 5), kStaticOutline);
+    EXPECT_EQ(png.at(55, 104), kStaticOutline);
+    EXPECT_EQ(png.at(4, 55), kBackground);
+    EXPECT_EQ(png.at(105, 55), kBackground);
+    EXPECT_EQ(png.at(55, 4), kBackground);
+    EXPECT_EQ(png.at(55, 105), kBackground);
+    EXPECT_EQ(png.at(0, 0), kBackground);
+}
+
+// A static box above a dynamic one (no gravity, so nothing moves) and a kinematic sensor
+// around the pair. y grows downward, so the box with the smaller y is at the top. The
+// bounds are the sensor's: x -15 to 15, y -15 to 55, 70 high, so the margin is 3.5 and
+// the view 37 × 77; 2 pixels a unit fit it into 74 × 154, centred on (0, 20):
+// image x = 2x + 37, image y = 2(y - 20) + 77.
+constexpr const char* kStack = R"({"gravity": [0, 0], "bodies": [
+    {"type": "static", "x": 0, "y": 0, "hw": 10, "hh": 10},
+    {"type": "dynamic", "x": 0, "y": 40, "hw": 10, "hh": 10},
+    {"type": "kinematic", "sensor": true, "x": 0, "y": 20, "hw": 15, "hh": 35}]})";
+
+TEST_F(Render, YGrowsDownwardAndEachTypeHasItsColour) {
+    const std::string scene = write("stack.json", kStack);
+    const Result result = render(scene + " --out " + path("stack.png") + " --width 74 --steps 0");
+    ASSERT_EQ(result.status, 0) << result.err;
+    const Png png = readPng(path("stack.png"));
+    ASSERT_EQ(png.width, 74);
+    ASSERT_EQ(png.height, 154);                 // fitted: 74 × 77 / 37
+    EXPECT_EQ(png.at(37, 37), kStatic);         // (0, 0)
+    EXPECT_EQ(png.at(37, 117), kDynamic);       // (0, 40)
+    EXPECT_EQ(png.at(37, 77), kBackground);     // (0, 20): between them, inside the sensor
+    EXPECT_EQ(png.at(7, 77), kKinematicSensor); // the sensor's left edge, x = -15
+    EXPECT_EQ(png.at(37, 7), kKinematicSensor); // its top edge, y = -15
+    EXPECT_EQ(png.at(6, 77), kBackground);
+}
+
+TEST_F(Render, GifHasAFrameForStepZeroAndEveryKthStep) {
+    const std::string scene = write("box.json", kOneBox);
+    const Result result = render(scene + " --out " + path("anim.gif") +
+                                 " --width 64 --height 48 --steps 10 --every 3");
+    ASSERT_EQ(result.status, 0) << result.err;
+    const Gif gif = readGif(path("anim.gif"));
+    EXPECT_EQ(gif.width, 64);
+    EXPECT_EQ(gif.height, 48);
+    EXPECT_EQ(gif.frames, 4); // steps 0, 3, 6, 9: floor(10 / 3) + 1
+}
+
+TEST_F(Render, ExampleSceneMakesAGifOfTheDefaultWidth) {
+    const Result result = render(std::string(JOSTLE_SCENES_DIR) + "/tutorial.json --out " +
+                                 path("tutorial.GIF") + " --steps 8");
+    ASSERT_EQ(result.status, 0) << result.err;
+    const Gif gif = readGif(path("tutorial.GIF"));
+    EXPECT_EQ(gif.width, 640);
+    EXPECT_GT(gif.height, 0);
+    EXPECT_EQ(gif.frames, 5); // the default --every is 2
+}
+
+TEST_F(Render, BadInputExitsWith2AndNamesTheProblem) {
+    const std::string scene = write("box.json", kOneBox);
+    const std::string out = " --out " + path("x.png");
+    struct Case {
+        std::string args;
+        std::string message;
+    };
+    const std::vector<Case> cases = {
+        {path("missing.json") + out, "missing.json"},
+        {scene, "--out"},
+        {scene + out + " --steps many", "--steps"},
+        {scene + out + " --steps -1", "--steps: must be >= 0"},
+        {scene + out + " --width 0", "--width: must be >= 1, got 0"},
+        {scene + out + " --height -5", "--height: must be >= 1"},
+        {scene + out + " --width 100000", "--width: must be <= 4096, got 100000"},
+        {scene + out + " --every 0", "--every: must be >= 1, got 0"},
+        {scene + " --out " + path("x.bmp"), "unknown image type"},
+        {scene + " --out " + path("no/such/dir/x.png"), "cannot write"},
+        {scene + " --out " + path("no/such/dir/x.gif"), "cannot write"},
+    };
+    for (const Case& c : cases) {
+        SCOPED_TRACE(c.args);
+        const Result result = render(c.args);
+        EXPECT_EQ(result.status, 2);
+        EXPECT_THAT(result.err, HasSubstr("jostle: error: "));
+        EXPECT_THAT(result.err, HasSubstr(c.message));
+    }
+    EXPECT_FALSE(std::filesystem::exists(path("x.png"))); // nothing written on bad input
+}
+
+} // namespace

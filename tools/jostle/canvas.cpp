@@ -1,0 +1,38 @@
+// Filling and outlining clipped rectangles: see canvas.hpp.
+#include "canvas.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace jostle::cli {
+
+Canvas::Canvas(int width, int height) : width_(width), height_(height) {
+    if (width <= 0 || height <= 0)
+        throw std::invalid_argument("Canvas: width and height must be > 0");
+    pixels_.assign(static_cast<std::size_t>(width) * static_cast<std::size_t>(height), 0);
+}
+
+void Canvas::clear(std::uint8_t index) {
+    std::fill(pixels_.begin(), pixels_.end(), index);
+}
+
+void Canvas::fill(PixelRect rect, std::uint8_t value) {
+    const int x0 = std::max(rect.x0, 0);
+    const int x1 = std::min(rect.x1, width_);
+    const int y0 = std::max(rect.y0, 0);
+    const int y1 = std::min(rect.y1, height_);
+    for (int y = y0; y < y1; ++y)
+        for (int x = x0; x < x1; ++x)
+            pixels_[index(x, y)] = value;
+}
+
+void Canvas::outline(PixelRect rect, std::uint8_t value) {
+    if (rect.x1 <= rect.x0 || rect.y1 <= rect.y0)
+        return;
+    fill({rect.x0, rect.y0, rect.x1, rect.y0 + 1}, value); // top
+    fill({rect.x0, rect.y1 - 1, rect.x1, rect.y1}, value); // bottom
+    fill({rect.x0, rect.y0, rect.x0 + 1, rect.y1}, value); // left
+    fill({rect.x1 - 1, rect.y0, rect.x1, rect.y1}, value); // right
+}
+
+} // namespace jostle::cli

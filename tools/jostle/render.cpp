@@ -1,0 +1,212 @@
+// `jostle render`: see render.hpp. The drawing rules are documented in
+// docs/scene-format.md; the camera's in camera.hpp.
+#include "render.hpp"
+
+#include "camera.hpp"
+#include "canvas.hpp"
+#include "errors.hpp"
+#include "image_files.hpp"
+
+#include "jostle/scene.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <cerrno>
+#include <cmath>
+#include <memory>
+#include <vector>
+
+namespace jostle::cli {
+
+namespace {
+
+enum class ImageType { Gif, Png };
+
+bool endsWith(const std::string& text, const std::string& suffix) {
+    if (text.size() < suffix.size())
+        return false;
+    return std::equal(suffix.rbegin(), suffix.rend(), text.rbegin(), [](char a, char b) {
+        return a == std::tolower(static_cast<unsigned char>(b));
+    });
+}
+
+// The palette: the background, then for each body type (static, kinematic, dynamic, as
+// BodyType numbers them) its fill and outline awake, and its fill and outline asleep.
+constexpr Rgb kBackground{24, 26, 33};
+constexpr std::array<Rgb, 3> kTypeColours{{
+    {150, 150, 150}, // static: grey
+    {70, 130, 230},  // kinematic: blue
+    {240, 150, 60},  // dynamic: orange
+}};
+
+Rgb scaled(Rgb colour, int percent) {
+    auto channel = [percent](std::uint8_t value) {
+        return static_cast<std::uint8_t>(value * percent / 100);
+    };
+    return {channel(colour.r), channel(colour.g), channel(colour.b)};
+}
+
+// Outlines are darker so that boxes side by side (a pyramid, a tile floor) stay apart;
+// sleeping bodies dimmer so that one can see which have come to rest.
+constexpr int kOutlinePercent = 60;
+constexpr int kSleepingPercent = 55;
+
+std::vector<Rgb> makePalette() {
+    std::vector<Rgb> palette{kBackground};
+    for (Rgb colour : kTypeColours)
+        for (int percent : {100, kSleepingPercent}) {
+            palette.push_back(scaled(colour, percent));
+            palette.push_back(scaled(colour, percent * kOutlinePercent / 100));
+        }
+    return palette;
+}
+
+std::uint8_t fillIndex(BodyType type, bool sleeping) {
+    return static_cast<std::uint8_t>(1 + 4 * static_cast<int>(type) + (sleeping ? 2 : 0));
+}
+
+WorldBox boxOf(const World& world, BodyId body) {
+    const Vec2 centre = world.position(body);
+    const Vec2 half = world.halfExtents(body);
+    return {{centre.x - half.x, centre.y - half.y}, {centre.x + half.x, centre.y + half.y}};
+}
+
+/// The box that holds every body (tile maps are bodies too), or a 2 × 2 one around the
+/// origin in a world without any.
+WorldBox boundsOf(const World& world) {
+    const auto bodies = world.bodies();
+    if (bodies.empty())
+        return {{-1.0f, -1.0f}, {1.0f, 1.0f}};
+    WorldBox bounds = boxOf(world, bodies.front());
+    for (BodyId body : bodies) {
+        const WorldBox box = boxOf(world, body);
+        bounds.min = {std::min(bounds.min.x, box.min.x), std::min(bounds.min.y, box.min.y)};
+        bounds.max = {std::max(bounds.max.x, box.max.x), std::max(bounds.max.y, box.max.y)};
+    }
+    return bounds;
+}
+
+/// The side not given, from the one given and the shape of the bounds with their margin.
+int fittedSide(double givenSide, double givenSpan, double otherSpan) {
+    const double side = std::round(givenSide * otherSpan / givenSpan);
+    return static_cast<int>(std::clamp(side, 1.0, static_cast<double>(kMaxImageSide)));
+}
+
+void imageSize(const RenderOptions& options, WorldBox bounds, int& width, int& height) {
+    const double spanX = static_cast<double>(bounds.max.x) - static_cast<double>(bounds.min.x);
+    const double spanY = static_cast<double>(bounds.max.y) - static_cast<double>(bounds.min.y);
+    const double margin = 2.0 * std::max(spanX, spanY) * kMarginFraction;
+    width = static_cast<int>(options.width);
+    height = static_cast<int>(options.height);
+    if (width == 0 && height == 0)
+        width = kDefaultImageWidth;
+    if (height == 0)
+        height = fittedSide(width, spanX + margin, spanY + margin);
+    else if (width == 0)
+        width = fittedSide(height, spanY + margin, spanX + margin);
+}
+
+void draw(Canvas& canvas, const Camera& camera, const World& world) {
+    canvas.clear(0);
+    std::vector<BodyId> sensors;
+    for (BodyId body : world.bodies()) {
+        if (world.isSensor(body)) {
+            sensors.push_back(body);
+            continue;
+        }
+        const BodyType type = world.type(body);
+        const bool sleeping = type != BodyType::Static && !world.isAwake(body);
+        const std::uint8_t fill = fillIndex(type, sleeping);
+        const PixelRect rect = camera.toPixels(boxOf(world, body));
+        canvas.fill(rect, fill);
+        canvas.outline(rect, static_cast<std::uint8_t>(fill + 1));
+    }
+    // Last, so that what a sensor overlaps does not hide its outline.
+    for (BodyId body : sensors)
+        canvas.outline(camera.toPixels(boxOf(world, body)), fillIndex(world.type(body), false));
+}
+
+/// A GIF frame's delay: the simulated time between frames, in the centiseconds GIF counts
+/// in; at least 2, as browsers show shorter delays as 10.
+int frameDelay(const Scene& scene, std::int64_t every) {
+    const double centiseconds =
+        std::round(static_cast<double>(scene.dt) * 100.0 * static_cast<double>(every));
+    return static_cast<int>(std::clamp(centiseconds, 2.0, 65535.0));
+}
+
+struct FileCloser {
+    void operator()(std::FILE* file) const { std::fclose(file); }
+};
+
+} // namespace
+
+int render(const RenderOptions& options) {
+    ImageType imageType = ImageType::Gif;
+    if (endsWith(options.out, ".png"))
+        imageType = ImageType::Png;
+    else if (!endsWith(options.out, ".gif")) {
+        printError("--out: " + options.out +
+                   ": unknown image type: expected a name ending in .gif or .png");
+        return kBadInput;
+    }
+
+    const Scene scene = loadScene(options.scene);
+    World world(scene.world);
+    addTileMaps(world, scene);
+    addBodies(world, scene);
+
+    const WorldBox bounds = boundsOf(world);
+    int width = 0;
+    int height = 0;
+    imageSize(options, bounds, width, height);
+    const Camera camera = Camera::fit(bounds, width, height);
+    Canvas canvas(width, height);
+    const std::vector<Rgb> palette = makePalette();
+
+    if (imageType == ImageType::Png) {
+        errno = 0;
+        std::unique_ptr<std::FILE, FileCloser> file(std::fopen(options.out.c_str(), "wb"));
+        if (!file) {
+            printError(options.out + ": cannot write: " + systemMessage(errno));
+            return kBadInput;
+        }
+        for (std::int64_t step = 1; step <= options.steps; ++step)
+            world.step(scene.dt);
+        draw(canvas, camera, world);
+        std::string error = writePng(file.get(), canvas, palette);
+        errno = 0;
+        if (std::fclose(file.release()) != 0 && error.empty())
+            error = systemMessage(errno);
+        if (!error.empty()) {
+            printError(options.out + ": write failed: " + error);
+            return kFailure;
+        }
+        return 0;
+    }
+
+    GifWriter gif;
+    if (const std::string error = gif.open(options.out, width, height, palette); !error.empty()) {
+        printError(options.out + ": cannot write: " + (errno != 0 ? systemMessage(errno) : error));
+        return kBadInput;
+    }
+    const int delay = frameDelay(scene, options.every);
+    std::string error;
+    for (std::int64_t step = 0; step <= options.steps && error.empty(); ++step) {
+        if (step > 0)
+            world.step(scene.dt);
+        if (step % options.every != 0)
+            continue;
+        draw(canvas, camera, world);
+        error = gif.addFrame(canvas, delay);
+    }
+    if (error.empty())
+        error = gif.close();
+    if (!error.empty()) {
+        printError(options.out + ": write failed: " + error);
+        return kFailure;
+    }
+    return 0;
+}
+
+} // namespace jostle::cli
