@@ -10,6 +10,8 @@ packages=(
   nlohmann-json3-dev      # scene files
   libcli11-dev            # the jostle program's command line
   libpng-dev libgif-dev   # jostle render's PNG and GIF files
+  libsdl2-dev             # jostle-demo's window
+  xvfb xauth              # the demo's test runs it in a virtual X server (xvfb-run)
   "$@"
 )
 

@@ -1,0 +1,117 @@
+// Drawing a pane: see draw_pane.hpp.
+#include "draw_pane.hpp"
+
+#include "font.hpp"
+#include "palette.hpp"
+
+#include <vector>
+
+namespace jostle::demo {
+
+namespace {
+
+constexpr int kTextScale = 2;
+/// Velocity lines: seconds of motion they show, so their length reads as speed.
+constexpr float kVelocitySeconds = 0.1f;
+/// Contact normals are drawn this many pixels long from the contact body's centre.
+constexpr int kNormalPixels = 14;
+
+void drawBody(SDL_Renderer* renderer, const World& world, BodyId body, const View& view,
+              bool debug) {
+    const Vec2 centre = world.position(body);
+    const Vec2 half = world.halfExtents(body);
+    const SDL_Rect rect = view.toScreen(centre, half);
+    const BodyType type = world.type(body);
+    SDL_Color colour = kTypeColours[static_cast<std::size_t>(type)];
+    if (debug && type != BodyType::Static && !world.isAwake(body))
+        colour = scaled(colour, kSleepingPercent);
+
+    if (world.isSensor(body)) {
+        setColour(renderer, colour);
+        SDL_RenderDrawRect(renderer, &rect);
+        return;
+    }
+    setColour(renderer, colour);
+    SDL_RenderFillRect(renderer, &rect);
+    setColour(renderer, world.isBullet(body) ? kBulletOutline : scaled(colour, kOutlinePercent));
+    SDL_RenderDrawRect(renderer, &rect);
+    // A one-way platform: its blocking face drawn bright, so one can see which it is.
+    const Vec2 normal = world.oneWay(body);
+    if (normal.x != 0.0f || normal.y != 0.0f) {
+        // The face the normal points out of: along x for a vertical normal, else along y.
+        const Vec2 face = centre + Vec2{normal.x * half.x, normal.y * half.y};
+        const Vec2 along = normal.y != 0.0f ? Vec2{half.x, 0.0f} : Vec2{0.0f, half.y};
+        const SDL_Point a = view.toScreen(face - along);
+        const SDL_Point b = view.toScreen(face + along);
+        setColour(renderer, kText);
+        SDL_RenderDrawLine(renderer, a.x, a.y, b.x, b.y);
+    }
+    if (!debug || type != BodyType::Dynamic)
+        return;
+
+    // The sides the body touched in the last step, as red edges.
+    const Touching touching = world.touching(body);
+    setColour(renderer, kTouching);
+    const int left = rect.x;
+    const int top = rect.y;
+    const int right = rect.x + rect.w - 1;
+    const int bottom = rect.y + rect.h - 1;
+    if (touching.floor)
+        SDL_RenderDrawLine(renderer, left, bottom, right, bottom);
+    if (touching.ceiling)
+        SDL_RenderDrawLine(renderer, left, top, right, top);
+    if (touching.wallLeft)
+        SDL_RenderDrawLine(renderer, left, top, left, bottom);
+    if (touching.wallRight)
+        SDL_RenderDrawLine(renderer, right, top, right, bottom);
+    if (world.isAwake(body)) {
+        const SDL_Point from = view.toScreen(centre);
+        const SDL_Point to = view.toScreen(centre + world.velocity(body) * kVelocitySeconds);
+        setColour(renderer, kVelocity);
+        SDL_RenderDrawLine(renderer, from.x, from.y, to.x, to.y);
+    }
+}
+
+} // namespace
+
+void drawPane(SDL_Renderer* renderer, const Pane& pane, const View& view, bool debug) {
+    const SDL_Rect& screen = view.screen();
+    SDL_RenderSetClipRect(renderer, &screen);
+    setColour(renderer, kBackground);
+    SDL_RenderFillRect(renderer, &screen);
+
+    const World& world = *pane.world;
+    for (BodyId body : world.bodies())
+        drawBody(renderer, world, body, view, debug);
+
+    if (debug) {
+        // Contacts that began in the last step: their normal, from b towards a, at a.
+        setColour(renderer, kNormal);
+        for (const ContactEvent& contact : world.contactBegins()) {
+            if (!world.isValid(contact.a))
+                continue;
+            const SDL_Point from = view.toScreen(world.position(contact.a));
+            SDL_RenderDrawLine(renderer, from.x, from.y,
+                               from.x + static_cast<int>(contact.normal.x * kNormalPixels),
+                               from.y + static_cast<int>(contact.normal.y * kNormalPixels));
+        }
+    }
+
+    setColour(renderer, kText);
+    for (const Label& label : pane.labels) {
+        if (!world.isValid(label.body))
+            continue;
+        const SDL_Rect rect =
+            view.toScreen(world.position(label.body), world.halfExtents(label.body));
+        const int width = textWidth(1, label.text);
+        drawText(renderer, rect.x + rect.w / 2 - width / 2, rect.y - kGlyphHeight - 4, 1,
+                 label.text);
+    }
+    setColour(renderer, kTextDim);
+    drawText(renderer, screen.x + 8, screen.y + 6, kTextScale, pane.title);
+    setColour(renderer, kPaneBorder);
+    SDL_RenderDrawRect(renderer, &screen);
+    SDL_RenderSetClipRect(renderer, nullptr);
+}
+
+} // namespace jostle::demo

@@ -1,0 +1,28 @@
+// Parsing the command line: see options.hpp.
+#include "options.hpp"
+
+#include <CLI/CLI.hpp>
+
+namespace jostle::demo {
+
+std::optional<Options> parseOptions(int argc, char** argv, int& exitCode) {
+    Options options;
+    CLI::App app{"jostle-demo: jostle's samples in a window (docs/demo.md)", "jostle-demo"};
+    app.add_option("--sample", options.sample, "the sample to start with, 1 to 6")
+        ->check(CLI::Range(1, 6));
+    app.add_option("--frames", options.frames,
+                   "run this many frames (each counted as 1/60 s) and exit")
+        ->check(CLI::Range(1, 1000000));
+    app.add_option("--screenshot", options.screenshot,
+                   "save the last frame to this BMP file before exiting");
+    app.add_flag("--probe", options.probe, "exit 0 if a window can be opened, 1 if not");
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& error) {
+        exitCode = app.exit(error);
+        return std::nullopt;
+    }
+    return options;
+}
+
+} // namespace jostle::demo

@@ -1,0 +1,70 @@
+// A sample of the demo: one or more worlds side by side (panes), built afresh on reset,
+// and whatever the sample does before each step (a character, a lift, a cannon).
+#pragma once
+
+#include "view.hpp"
+
+#include "jostle/scene.hpp"
+#include "jostle/world.hpp"
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace jostle::demo {
+
+/// Text drawn above a body, e.g. a crate's mass.
+struct Label {
+    BodyId body;
+    std::string text;
+};
+
+/// One world and the part of it the window shows.
+struct Pane {
+    std::unique_ptr<World> world;
+    WorldBox view;
+    std::string title; ///< drawn at the top of the pane, e.g. "CLASSIC"
+    std::vector<Label> labels;
+};
+
+/// The keys a sample may use to steer something, as held in this step.
+struct Controls {
+    bool left = false;
+    bool right = false;
+    bool up = false;
+    bool down = false;
+    /// Space or up was pressed since the last step: true for one step per press, so that
+    /// a jump is taken once, however many steps a frame holds.
+    bool jumpPressed = false;
+};
+
+class Sample {
+public:
+    virtual ~Sample() = default;
+
+    virtual const char* name() const = 0;
+    /// Builds the panes afresh: at the start, on switching to the sample, and on R.
+    virtual void reset() = 0;
+    /// Called before each fixed step of the panes' worlds.
+    virtual void beforeStep(const Controls& /*controls*/, float /*dt*/) {}
+    /// True if the sample steers a character with the letter keys A and D, which then
+    /// run instead of toggling debug drawing (Tab still toggles it).
+    virtual bool usesLetterKeys() const { return false; }
+
+    std::vector<Pane>& panes() { return panes_; }
+
+protected:
+    std::vector<Pane> panes_;
+};
+
+/// The box that holds every body of `world` (a 2 × 2 box around the origin if none).
+WorldBox boundsOf(const World& world);
+
+/// `box` made taller by `fraction` of its height, upward: room above a scene to drop
+/// boxes into with the mouse.
+WorldBox withHeadroom(WorldBox box, float fraction);
+
+/// A pane holding a new world made from `scene`, showing all its bodies.
+Pane paneFromScene(const Scene& scene, std::string title, float headroom);
+
+} // namespace jostle::demo

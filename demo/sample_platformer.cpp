@@ -1,0 +1,106 @@
+// Sample 2: a platformer. A character steered by the keys (runner.hpp) on a tile-map
+// level (createTileMap), with jump-through platforms (down + jump drops through them:
+// World::dropThrough), a lift (a kinematic body going up and down) and a few crates.
+#include "runner.hpp"
+#include "sample_list.hpp"
+
+#include "jostle/tilemap.hpp"
+
+namespace jostle::demo {
+
+namespace {
+
+constexpr float kTile = 32.0f;
+/// Jump 3.5 tiles high, reaching the top in 0.38 s: gravity and take-off speed follow.
+constexpr JumpDef kJump{.height = 3.5f * kTile, .timeToApex = 0.38f};
+constexpr float kRunSpeed = 260.0f;
+
+constexpr float kLiftBottom = 520.0f;
+constexpr float kLiftTop = 230.0f;
+constexpr float kLiftSpeed = 90.0f;
+
+TileMapDef levelMap() {
+    TileMapDef map;
+    map.tile = kTile;
+    map.friction = 0.6f;
+    map.rows = {
+        "################################", "#..............................#",
+        "#..............................#", "#..............................#",
+        "#..............................#", "#..............................#",
+        "#..............................#", "#..................#####.......#",
+        "#..............................#", "#..............................#",
+        "#..............................#", "#..............................#",
+        "#.....................##.......#", "#....................###.......#",
+        "#...........##......####.......#", "#..........###.....#####.......#",
+        "#########.#############...######", "#########.#############...######",
+        "################################",
+    };
+    return map;
+}
+
+class PlatformerSample : public Sample {
+public:
+    const char* name() const override { return "platformer"; }
+    bool usesLetterKeys() const override { return true; }
+
+    void reset() override {
+        panes_.clear();
+        Pane pane;
+        pane.world = std::make_unique<World>(WorldDef{.gravity = {0.0f, kJump.gravity()}});
+        World& world = *pane.world;
+        createTileMap(world, levelMap());
+
+        // Jump-through platforms: thin, and only their top blocks.
+        for (const Vec2 at : {Vec2{160, 400}, Vec2{300, 300}, Vec2{160, 200}, Vec2{880, 200}})
+            world.createBody({.type = BodyType::Static,
+                              .x = at.x,
+                              .y = at.y,
+                              .hw = 56,
+                              .hh = 5,
+                              .oneWay = {0.0f, -1.0f}});
+
+        lift_ = world.createBody({.type = BodyType::Kinematic,
+                                  .x = 768,
+                                  .y = kLiftBottom,
+                                  .hw = 40,
+                                  .hh = 8,
+                                  .vy = -kLiftSpeed});
+
+        for (int i = 0; i < 3; ++i)
+            world.createBody({.x = 420.0f + 40.0f * static_cast<float>(i),
+                              .y = 490,
+                              .hw = 14,
+                              .hh = 14,
+                              .friction = 0.6f});
+
+        const BodyId player = world.createBody(
+            {.x = 100, .y = 480, .hw = 11, .hh = 20, .friction = 0.0f, .mass = 2.0f});
+        runner_ = Runner(player, kRunSpeed, kJump);
+        pane.labels.push_back({player, "YOU"});
+        pane.view = boundsOf(world);
+        pane.title = "physical";
+        panes_.push_back(std::move(pane));
+    }
+
+    void beforeStep(const Controls& controls, float /*dt*/) override {
+        World& world = *panes_.front().world;
+        runner_.steer(world, controls);
+        // The lift turns round at either end of its shaft.
+        const float y = world.position(lift_).y;
+        const float vy = world.velocity(lift_).y;
+        if ((y <= kLiftTop && vy < 0.0f) || (y >= kLiftBottom && vy > 0.0f))
+            world.setVelocity(lift_, {0.0f, -vy});
+    }
+
+private:
+    Runner runner_;
+    BodyId lift_;
+};
+
+} // namespace
+
+std::unique_ptr<Sample> makePlatformerSample() {
+    return std::make_unique<PlatformerSample>();
+}
+
+} // namespace jostle::demo
