@@ -66,8 +66,9 @@ public:
                                   .hh = 8,
                                   .vy = -kLiftSpeed});
 
+        // On the floor between the two flights of steps (not inside them).
         for (int i = 0; i < 3; ++i)
-            world.createBody({.x = 420.0f + 40.0f * static_cast<float>(i),
+            world.createBody({.x = 520.0f + 32.0f * static_cast<float>(i),
                               .y = 490,
                               .hw = 14,
                               .hh = 14,
