@@ -3,6 +3,7 @@
 
 #include "draw_pane.hpp"
 #include "font.hpp"
+#include "input_script.hpp"
 #include "mouse_drag.hpp"
 #include "palette.hpp"
 #include "sample_list.hpp"
@@ -11,6 +12,7 @@
 
 #include <SDL.h>
 
+#include <array>
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -46,6 +48,10 @@ struct State {
     bool slow = false;
     bool debug = false;
     bool jumpQueued = false;
+    /// The keys held down, from the key events rather than SDL_GetKeyboardState, so that
+    /// keys played by --input (pushed events, which SDL's keyboard state does not see)
+    /// steer as real ones do.
+    std::array<bool, SDL_NUM_SCANCODES> held{};
     MouseDrag drag;
     double stepMs = 0.0;
 };
@@ -142,8 +148,14 @@ void handleEvents(State& state, SDL_Window* window) {
             state.running = false;
             break;
         case SDL_KEYDOWN:
+            if (event.key.keysym.scancode < SDL_NUM_SCANCODES)
+                state.held[event.key.keysym.scancode] = true;
             if (event.key.repeat == 0)
                 onKey(state, event.key.keysym.sym, window);
+            break;
+        case SDL_KEYUP:
+            if (event.key.keysym.scancode < SDL_NUM_SCANCODES)
+                state.held[event.key.keysym.scancode] = false;
             break;
         case SDL_MOUSEBUTTONDOWN:
             onMouseButton(state, event.button);
@@ -164,7 +176,7 @@ void handleEvents(State& state, SDL_Window* window) {
 }
 
 Controls readControls(State& state) {
-    const Uint8* keys = SDL_GetKeyboardState(nullptr);
+    const auto& keys = state.held;
     const bool letters = sample(state).usesLetterKeys();
     Controls controls;
     controls.left = keys[SDL_SCANCODE_LEFT] || (letters && keys[SDL_SCANCODE_A]);
@@ -230,6 +242,37 @@ void drawFrame(SDL_Renderer* renderer, State& state) {
     drawHeader(renderer, state);
 }
 
+/// --report: facts a test can check, one `name value` per line.
+void printReport(State& state) {
+    Sample& current = sample(state);
+    std::size_t bodies = 0;
+    for (const Pane& pane : current.panes())
+        bodies += pane.world->bodyCount();
+    std::printf("sample %s\n", current.name());
+    std::printf("sample_number %zu\n", state.current + 1);
+    std::printf("bodies %zu\n", bodies);
+    std::printf("paused %d\n", state.paused ? 1 : 0);
+    std::printf("slow %d\n", state.slow ? 1 : 0);
+    std::printf("debug %d\n", state.debug ? 1 : 0);
+    const World& world = *current.panes().front().world;
+    if (const BodyId player = current.player(); world.isValid(player)) {
+        const Vec2 position = world.position(player);
+        const Vec2 velocity = world.velocity(player);
+        std::printf("player_x %.3f\nplayer_y %.3f\n", static_cast<double>(position.x),
+                    static_cast<double>(position.y));
+        std::printf("player_vx %.3f\nplayer_vy %.3f\n", static_cast<double>(velocity.x),
+                    static_cast<double>(velocity.y));
+        std::printf("player_floor %d\n", world.touching(player).floor ? 1 : 0);
+    }
+    std::printf("dragging %d\n", state.drag.holding() ? 1 : 0);
+    if (state.drag.holding()) {
+        const Vec2 held = state.drag.heldPosition();
+        std::printf("dragged_x %.3f\ndragged_y %.3f\n", static_cast<double>(held.x),
+                    static_cast<double>(held.y));
+    }
+    std::fflush(stdout);
+}
+
 bool saveScreenshot(SDL_Renderer* renderer, const std::string& path) {
     SDL_Surface* surface = SDL_CreateRGBSurfaceWithFormat(0, kWindowWidth, kWindowHeight, 32,
                                                           SDL_PIXELFORMAT_ARGB8888);
@@ -263,6 +306,9 @@ int probeDisplay() {
 }
 
 int runApp(const Options& options) {
+    // Read before SDL starts, so that a mistake in it costs no window.
+    InputPlayer input(options.input.empty() ? std::vector<ScriptEvent>{}
+                                            : loadInputScript(options.input));
     if (SDL_Init(SDL_INIT_VIDEO) != 0) {
         std::fprintf(stderr, "jostle-demo: cannot start SDL: %s\n", SDL_GetError());
         return 1;
@@ -287,6 +333,7 @@ int runApp(const Options& options) {
     Uint64 last = SDL_GetPerformanceCounter();
     int status = 0;
     for (int frame = 1; state.running; ++frame) {
+        input.pushFrame(frame, window);
         handleEvents(state, window);
         const Uint64 now = SDL_GetPerformanceCounter();
         float seconds =
@@ -313,7 +360,9 @@ int runApp(const Options& options) {
         if (lastFrame)
             state.running = false;
     }
-    // Saved on Esc or closing the window too, when asked for.
+    // Printed on Esc or closing the window too, when asked for.
+    if (options.report)
+        printReport(state);
     SDL_DestroyRenderer(renderer);
     SDL_DestroyWindow(window);
     SDL_Quit();

@@ -14,6 +14,10 @@ public:
     void release() { world_ = nullptr; }
     /// Sets the grabbed body's velocity towards the cursor; call before each step.
     void pull(float dt) const;
+    /// True while a body is held (and still exists).
+    bool holding() const { return world_ != nullptr && world_->isValid(body_); }
+    /// The held body's centre; only while holding().
+    Vec2 heldPosition() const { return world_->position(body_); }
 
 private:
     World* world_ = nullptr;

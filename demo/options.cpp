@@ -15,6 +15,10 @@ std::optional<Options> parseOptions(int argc, char** argv, int& exitCode) {
         ->check(CLI::Range(1, 1000000));
     app.add_option("--screenshot", options.screenshot,
                    "save the last frame to this BMP file before exiting");
+    app.add_option("--input", options.input,
+                   "play keyboard and mouse events by frame: a file, or the script itself");
+    app.add_flag("--report", options.report,
+                 "at exit, print the sample, body count, flags and player, one per line");
     app.add_flag("--probe", options.probe, "exit 0 if a window can be opened, 1 if not");
     try {
         app.parse(argc, argv);

@@ -13,6 +13,10 @@ struct Options {
     int frames = 0;
     /// Where to save the last frame as a BMP before exiting (empty: nowhere).
     std::string screenshot;
+    /// Keyboard and mouse events by frame (--input): a file's name, or the script itself.
+    std::string input;
+    /// Print facts about the state at exit, one `name value` per line (--report).
+    bool report = false;
     /// Only check that a window can be opened, then exit: 0 if it can.
     bool probe = false;
 };

@@ -50,6 +50,8 @@ public:
     /// True if the sample steers a character with the letter keys A and D, which then
     /// run instead of toggling debug drawing (Tab still toggles it).
     virtual bool usesLetterKeys() const { return false; }
+    /// The character the keys steer, in the first pane's world (null if there is none).
+    virtual BodyId player() const { return {}; }
 
     std::vector<Pane>& panes() { return panes_; }
 

@@ -17,6 +17,7 @@ class CratesSample : public Sample {
 public:
     const char* name() const override { return "crates"; }
     bool usesLetterKeys() const override { return true; }
+    BodyId player() const override { return runner_.body(); }
 
     void reset() override {
         panes_.clear();

@@ -1,0 +1,168 @@
+#!/usr/bin/env bash
+# Drives jostle-demo's keys and mouse with --input scripts and checks what --report prints
+# at exit. It runs headless on SDL's offscreen video driver (no X server needed); with
+# --frames every frame is one 1/60 s step, so the numbers are the same every run.
+#
+#   run_input_test.sh DEMO
+#
+# Exits 77 (the test's SKIP_RETURN_CODE) only if SDL cannot open an offscreen window.
+set -uo pipefail
+demo=$1
+export SDL_VIDEODRIVER=offscreen
+
+if ! "$demo" --frames 1 >/dev/null 2>&1; then
+  echo "skipped: jostle-demo cannot open a window with SDL_VIDEODRIVER=offscreen"
+  exit 77
+fi
+
+failed=0
+report=""
+# run ARGS...: runs the demo with --report, keeps its report in $report.
+run() {
+  if ! report=$("$demo" --report "$@"); then
+    echo "FAIL: jostle-demo $* exited with an error" >&2
+    failed=1
+    report=""
+  fi
+}
+value() { printf '%s\n' "$report" | awk -v k="$1" '$1 == k { print $2 }'; }
+# expect NAME VALUE WHY: the reported NAME is VALUE exactly.
+expect() {
+  local got
+  got=$(value "$1")
+  if [ "$got" != "$2" ]; then
+    echo "FAIL: $3: $1 is '$got', expected '$2'" >&2
+    failed=1
+  else
+    echo "ok: $3 ($1 $got)"
+  fi
+}
+# near NAME VALUE TOLERANCE WHY: the reported NAME is within TOLERANCE of VALUE.
+near() {
+  local got
+  got=$(value "$1")
+  if ! awk -v g="$got" -v e="$2" -v t="$3" \
+      'BEGIN { exit !(g != "" && g - e <= t && e - g <= t) }'; then
+    echo "FAIL: $4: $1 is '$got', expected $2 +- $3" >&2
+    failed=1
+  else
+    echo "ok: $4 ($1 $got)"
+  fi
+}
+# below NAME LIMIT WHY: the reported NAME is less than LIMIT.
+below() {
+  local got
+  got=$(value "$1")
+  if ! awk -v g="$got" -v l="$2" 'BEGIN { exit !(g != "" && g < l) }'; then
+    echo "FAIL: $3: $1 is '$got', expected below $2" >&2
+    failed=1
+  else
+    echo "ok: $3 ($1 $got)"
+  fi
+}
+
+# --- Platformer (sample 2): run speed 260 px/s, jump 4 tiles (128 px) high. The player
+# (22 x 40 px) starts at (100, 480) and settles on the floor (top y 512) at y 492.
+run --sample 2 --frames 30
+expect sample platformer "sample 2 at start"
+initial_bodies=$(value bodies)
+expect player_x 100.000 "the player starts at x 100"
+near player_y 492 0.01 "the player stands on the floor (512 - 20)"
+
+# Right held from frame 30 to 59: 30 steps of 1/60 s at 260 px/s = 130 px.
+run --sample 2 --frames 90 --input "30 key-down Right; 60 key-up Right"
+near player_x 230 0.01 "Right held 0.5 s runs 260 px/s x 0.5 s"
+expect player_vx 0.000 "releasing Right stops the run"
+near player_y 492 0.01 "running stays on the floor"
+
+# Space on the floor while running right for 15 steps (65 px): the player rises (take-off
+# speed sqrt(2 g h) = 674 px/s up), and lands on the jump-through platform at (160, 400),
+# whose top (395) is 117 px above the floor, so stands at y 395 - 20 = 375. Down + space
+# there drops through it, back to the floor (492).
+jump="30 key-down Right; 30 key-press Space; 45 key-up Right; 100 key-down Down"
+jump+="; 100 key-press Space; 101 key-up Down"
+run --sample 2 --frames 40 --input "$jump"
+below player_y 492 "space on the floor jumps: y decreases"
+below player_vy 0 "space on the floor jumps: moving up"
+run --sample 2 --frames 99 --input "$jump"
+near player_x 165 0.01 "15 steps right at 260 px/s before the jump: 100 + 65"
+near player_y 375 0.01 "the jump lands on the jump-through platform (395 - 20)"
+expect player_floor 1 "standing on the jump-through platform"
+run --sample 2 --frames 130 --input "$jump"
+near player_y 492 0.01 "Down + space drops through the platform, back to the floor"
+
+# Right-click drops a box (the centre of the pane is empty space in the level): one body
+# more per click. R rebuilds the sample: the initial count, the player back at x 100.
+run --sample 2 --frames 20 --input "10 mouse-click right 640 372"
+expect bodies $((initial_bodies + 1)) "right-click drops one box"
+run --sample 2 --frames 20 --input "10 mouse-click right 640 372; 12 mouse-click right 700 372; 14 key-down Right; 18 key-press r; 18 key-up Right"
+expect bodies "$initial_bodies" "R resets the sample: the initial body count"
+expect player_x 100.000 "R resets the sample: the player back at its start"
+
+# Tab toggles debug drawing; D does not in the platformer (there it runs right).
+run --sample 2 --frames 10 --input "3 key-press Tab"
+expect debug 1 "Tab turns debug drawing on"
+run --sample 2 --frames 10 --input "3 key-press Tab; 5 key-press Tab"
+expect debug 0 "Tab again turns it off"
+run --sample 2 --frames 10 --input "3 key-down d"
+expect debug 0 "D does not toggle debug in the platformer"
+near player_x 134.667 0.01 "D held runs right: 8 steps of 260/60 px = 34.67"
+
+# --- Tutorial (sample 1): D toggles debug, S slow motion.
+run --sample 1 --frames 10 --input "3 key-press d; 5 key-press s"
+expect sample tutorial "sample 1"
+expect debug 1 "D turns debug drawing on in the tutorial"
+expect slow 1 "S turns slow motion on"
+
+# --- Crates (sample 6): run speed 220 px/s, jump 90 px high in 0.36 s. The player
+# (24 x 44 px) starts at (80, 470) and settles on the floor (top y 500) at y 478.
+# P pauses, N steps once: Right held from frame 10, P at 30 (20 steps: 80 + 20 x 220/60
+# = 153.33); no motion while paused, then N adds one step (+3.67 = 157).
+pause="10 key-down Right; 30 key-press p; 60 key-press n"
+run --sample 6 --frames 50 --input "$pause"
+expect paused 1 "P pauses"
+near player_x 153.333 0.01 "20 steps of Right before the pause"
+run --sample 6 --frames 59 --input "$pause"
+near player_x 153.333 0.01 "paused: the player does not move in 9 more frames"
+run --sample 6 --frames 90 --input "$pause"
+near player_x 157 0.01 "N steps once (220/60 px) and stays paused"
+expect paused 1 "still paused after N"
+run --sample 6 --frames 60 --input "10 key-press p; 20 key-press p; 20 key-down Right"
+expect paused 0 "P again resumes"
+# 41 steps x 220/60 = 150.3 px; the player was still settling on the floor when paused.
+near player_x 230.3 1 "running again after resuming: 41 steps"
+
+# Space on the floor: the player rises (take-off speed sqrt(2 g h) = 500 px/s, apex 90 px
+# up at 0.36 s, about 22 steps) and lands back on the floor by frame 90.
+run --sample 6 --frames 40 --input "30 key-press Space"
+below player_y 478 "crates: space jumps, y decreases"
+run --sample 6 --frames 52 --input "30 key-press Space"
+near player_y $((478 - 90)) 8 "crates: near the apex 90 px up after 0.36 s"
+run --sample 6 --frames 90 --input "30 key-press Space"
+near player_y 478 0.01 "crates: the jump lands back on the floor"
+expect player_floor 1 "crates: standing again"
+
+# Left-drag: the view maps world (x, y) to pixels (1.15636 x + 61.82, 1.15636 y - 84.76),
+# so the player at (80, 478) is at pixel (154, 468); dragging it to pixel (154, 300) pulls
+# it towards world y (300 + 84.76) / 1.15636 = 332.7, against gravity.
+run --sample 6 --frames 60 --input "20 mouse-down left 154 468; 21 mouse-move 154 300"
+expect dragging 1 "left-down on the player holds it"
+near player_y 332.7 5 "the held player follows the cursor up to y 332.7"
+near player_x 80 1 "and stays under it"
+run --sample 6 --frames 90 --input "20 mouse-down left 154 468; 21 mouse-move 154 300; 60 mouse-up left 154 300"
+expect dragging 0 "releasing the button lets go"
+near player_y 478 0.01 "let go, the player falls back to the floor"
+
+# --- Keys 1 to 6 switch samples.
+names=(tutorial platformer pyramid rain bullets crates)
+for key in 1 2 3 4 5 6; do
+  run --sample 3 --frames 3 --input "2 key-press $key"
+  expect sample "${names[key - 1]}" "key $key"
+done
+
+# A mistake in the script is an error, not ignored.
+if SDL_VIDEODRIVER=offscreen "$demo" --frames 2 --input "1 key-prss x" 2>/dev/null; then
+  echo "FAIL: a misspelt action was accepted" >&2
+  failed=1
+fi
+exit $failed
