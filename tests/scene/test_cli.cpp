@@ -1,5 +1,7 @@
 // The jostle program, run as a user runs it: options, exit status, messages, and traces
 // whose numbers are worked out by hand from the tutorial's formulas.
+#include "program_test.hpp"
+
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
@@ -17,12 +19,9 @@ namespace {
 using ::testing::HasSubstr;
 using ::testing::StartsWith;
 
-/// What a run of the program gave.
-struct Result {
-    int status = -1; ///< the exit status; -1 if it did not exit normally
-    std::string out;
-    std::string err;
-};
+using Result = jostle::testing::ProgramResult;
+using jostle::testing::quote;
+using jostle::testing::readAll;
 
 /// One trace row, numbers read back as floats (%.9g round-trips exactly).
 struct Row {
@@ -30,13 +29,6 @@ struct Row {
     std::string id;
     float x, y, vx, vy;
 };
-
-std::string readAll(const std::filesystem::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::stringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
 
 std::vector<std::string> lines(const std::string& text) {
     std::vector<std::string> result;
@@ -87,43 +79,7 @@ void expectRow(const Row& row, const std::string& step, const std::string& id, f
     EXPECT_EQ(row.vy, vy);
 }
 
-/// A path for the shell, in single quotes.
-std::string quote(const std::string& text) {
-    return "'" + text + "'";
-}
-
-class Cli : public ::testing::Test {
-protected:
-    void SetUp() override {
-        const auto* test = ::testing::UnitTest::GetInstance()->current_test_info();
-        dir_ = std::filesystem::temp_directory_path() /
-               ("jostle_cli_test_" + std::to_string(::getpid()) + "_" + test->name());
-        std::filesystem::create_directories(dir_);
-    }
-    void TearDown() override { std::filesystem::remove_all(dir_); }
-
-    std::string path(const std::string& name) const { return (dir_ / name).string(); }
-
-    std::string write(const std::string& name, const std::string& text) {
-        std::ofstream(path(name), std::ios::binary) << text;
-        return path(name);
-    }
-
-    /// Runs `jostle ARGS`, capturing stdout and stderr.
-    Result run(const std::string& args) {
-        const std::string command = quote(JOSTLE_EXE) + " " + args + " >" + quote(path("stdout")) +
-                                    " 2>" + quote(path("stderr"));
-        const int raw = std::system(command.c_str());
-        Result result;
-        if (raw != -1 && WIFEXITED(raw))
-            result.status = WEXITSTATUS(raw);
-        result.out = readAll(path("stdout"));
-        result.err = readAll(path("stderr"));
-        return result;
-    }
-
-    std::filesystem::path dir_;
-};
+class Cli : public jostle::testing::ProgramTest {};
 
 // A dynamic body in empty space, dt = 1/4: each step moves it by (4, -8) / 4 = (1, -2).
 constexpr const char* kFreeScene = R"({"solver": "classic", "dt": 0.25, "bodies": [

@@ -1,6 +1,8 @@
 // `jostle render`, run as a user runs it: the files it writes are read back with libpng
 // and giflib, and their pixels checked against positions worked out by hand from the
 // camera rule of docs/scene-format.md.
+#include "program_test.hpp"
+
 #include <gif_lib.h>
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -21,10 +23,7 @@ namespace {
 
 using ::testing::HasSubstr;
 
-struct Result {
-    int status = -1; ///< the exit status; -1 if it did not exit normally
-    std::string err;
-};
+using Result = jostle::testing::ProgramResult;
 
 struct Rgb {
     int r, g, b;
@@ -91,43 +90,10 @@ Gif readGif(const std::string& path) {
     return gif;
 }
 
-std::string readAll(const std::filesystem::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::stringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
-
-class Render : public ::testing::Test {
+class Render : public jostle::testing::ProgramTest {
 protected:
-    void SetUp() override {
-        const auto* test = ::testing::UnitTest::GetInstance()->current_test_info();
-        dir_ = std::filesystem::temp_directory_path() /
-               ("jostle_render_test_" + std::to_string(::getpid()) + "_" + test->name());
-        std::filesystem::create_directories(dir_);
-    }
-    void TearDown() override { std::filesystem::remove_all(dir_); }
-
-    std::string path(const std::string& name) const { return (dir_ / name).string(); }
-
-    std::string write(const std::string& name, const std::string& text) {
-        std::ofstream(path(name), std::ios::binary) << text;
-        return path(name);
-    }
-
-    /// Runs `jostle render ARGS`, capturing stderr.
-    Result render(const std::string& args) {
-        const std::string command = std::string("'") + JOSTLE_EXE + "' render " + args +
-                                    " >/dev/null 2>'" + path("stderr") + "'";
-        const int raw = std::system(command.c_str());
-        Result result;
-        if (raw != -1 && WIFEXITED(raw))
-            result.status = WEXITSTATUS(raw);
-        result.err = readAll(path("stderr"));
-        return result;
-    }
-
-    std::filesystem::path dir_;
+    /// Runs `jostle render ARGS`.
+    Result render(const std::string& args) { return run("render " + args); }
 };
 
 // One static box 20 × 20, away from the origin. Its bounds, 20 wide, get a margin of
