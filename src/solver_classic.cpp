@@ -166,10 +166,10 @@ private:
     }
 
     /// Dynamic bodies touching `region` that come after position `after` in dynamics_.
-    void gatherDynamics(const Bounds& region, std::size_t after) {
+    void gatherDynamics(const Bounds& region, std::int64_t after) {
         candidates_.clear();
         w_.movingGrid.query(region, [&](std::uint32_t k) {
-            if (k > after)
+            if (std::int64_t(k) > after)
                 candidates_.push_back(dynamics_[k]);
         });
         std::sort(candidates_.begin(), candidates_.end(), [&](std::uint32_t p, std::uint32_t q) {
@@ -178,37 +178,33 @@ private:
     }
 
     Outcome resolveAgainstStatics(std::uint32_t a) {
-        std::int64_t after = -1;
-        for (;;) {
-            refreshGrids();
-            const Bounds region = regionAround(w_.slots[a]);
-            gatherStatics(region, after);
-            const std::vector<std::uint32_t> batch = candidates_;
-            bool left = false;
-            for (std::uint32_t s : batch) {
-                after = w_.rank[s];
-                if (checkCollision(a, s) == Outcome::Destroyed)
-                    return Outcome::Destroyed;
-                if (!contains(region, w_.slots[a].bounds())) {
-                    left = true;
-                    break;
-                }
-            }
-            if (!left)
-                return Outcome::Kept;
-        }
+        return resolveInOrder(
+            a, -1, [&](const Bounds& region, std::int64_t after) { gatherStatics(region, after); },
+            [&](std::uint32_t s) { return std::int64_t(w_.rank[s]); });
     }
 
     Outcome resolveAgainstLaterDynamics(std::uint32_t a, std::size_t index) {
-        std::size_t after = index;
+        return resolveInOrder(
+            a, std::int64_t(index),
+            [&](const Bounds& region, std::int64_t after) { gatherDynamics(region, after); },
+            [&](std::uint32_t b) { return std::int64_t(dynamicIndex_[b]); });
+    }
+
+    /// Resolves `a` against what gather(region, after) finds around it, in order: if a
+    /// collision moves `a` out of the region the candidates were gathered for, the rest
+    /// are gathered again around where it is now, after the last one visited (placeOf
+    /// gives a body's place in the order).
+    template <class Gather, class PlaceOf>
+    Outcome resolveInOrder(std::uint32_t a, std::int64_t after, Gather&& gather,
+                           PlaceOf&& placeOf) {
         for (;;) {
             refreshGrids();
             const Bounds region = regionAround(w_.slots[a]);
-            gatherDynamics(region, after);
-            const std::vector<std::uint32_t> batch = candidates_;
+            gather(region, after);
             bool left = false;
-            for (std::uint32_t b : batch) {
-                after = dynamicIndex_[b];
+            for (std::uint32_t b : candidates_) { // checkCollision gathers nothing
+
+                after = placeOf(b);
                 if (checkCollision(a, b) == Outcome::Destroyed)
                     return Outcome::Destroyed;
                 if (!contains(region, w_.slots[a].bounds())) {
