@@ -3,6 +3,7 @@
 
 #include "jostle/math.hpp"
 
+#include <algorithm>
 #include <optional>
 
 namespace jostle {
@@ -19,6 +20,17 @@ struct Box {
 /// tie goes to y. Its signs come from the centre offset a - b, so coincident centres
 /// push `a` towards +x or +y.
 std::optional<Vec2> shortestSeparation(const Box& a, const Box& b);
+
+inline constexpr float kMinimumSkin = 1e-4f; ///< of the smaller half extent: float noise
+
+/// The physical model's contact skin of two boxes along one axis, given their half
+/// extents on it and the world's slop (a fraction of the smaller half extent): overlap up
+/// to this much is touching, not penetrating. Twice the slop, never less than float
+/// noise. The solver, its sweeps and the queries all judge touching by it.
+
+inline float contactSkin(float slop, float halfA, float halfB) {
+    return std::max(2.0f * slop, kMinimumSkin) * std::min(halfA, halfB);
+}
 
 /// Where a moving box first touches another.
 struct Hit {

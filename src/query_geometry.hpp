@@ -74,15 +74,6 @@ struct CastContact {
     int touchAxis;
 };
 
-/// The contact skin of two boxes along one axis: overlap up to this much is touching, not
-/// penetrating. The physical model's rule (twice the slop times the smaller half extent,
-/// never less than float noise), so that a query counts a resting contact as the solver
-/// does.
-inline float contactSkin(float slop, float halfA, float halfB) {
-    constexpr float kMinimumSkin = 1e-4f;
-    return std::max(2.0f * slop, kMinimumSkin) * std::min(halfA, halfB);
-}
-
 /// Sweeps `moving` along `motion` against `still`: the time it first touches `still`, if it
 /// runs into it within the motion. It runs into it when the motion carries it deeper than
 /// `skin` into `still` on both axes at once, having not been that deep at the start.

@@ -30,9 +30,6 @@ namespace jostle {
 
 namespace {
 
-/// Touching tolerance when the slop is 0, as a fraction of the half extent: float noise.
-constexpr float kMinimumSkin = 1e-4f;
-
 float combineFriction(FrictionMix mix, float a, float b) {
     return mix == FrictionMix::GeometricMean ? std::sqrt(a * b) : std::min(a, b);
 }
@@ -579,8 +576,7 @@ private:
     static constexpr int kMaxHits = 4;
 
     float skinOf(float halfA, float halfB) const {
-        const float smaller = std::min(halfA, halfB);
-        return std::max(2.0f * options_.slop * smaller, kMinimumSkin * smaller);
+        return contactSkin(options_.slop, halfA, halfB);
     }
 
     void integratePositions() {
