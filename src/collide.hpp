@@ -27,7 +27,6 @@ inline constexpr float kMinimumSkin = 1e-4f; ///< of the smaller half extent: fl
 /// extents on it and the world's slop (a fraction of the smaller half extent): overlap up
 /// to this much is touching, not penetrating. Twice the slop, never less than float
 /// noise. The solver, its sweeps and the queries all judge touching by it.
-
 inline float contactSkin(float slop, float halfA, float halfB) {
     return std::max(2.0f * slop, kMinimumSkin) * std::min(halfA, halfB);
 }
