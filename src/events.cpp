@@ -76,9 +76,7 @@ void compare(const WorldState& world, std::vector<TouchRecord>& now,
 void recordContact(WorldState& world, std::uint32_t body, std::uint32_t other, Vec2 normal,
                    float approachSpeed) {
     StepEvents& events = world.events;
-    // "Down" is where gravity pulls; with none, the screen's down (y grows downward).
-    const Vec2 g = world.def.gravity;
-    const Vec2 down = g == Vec2{} ? Vec2{0.0f, 1.0f} : g * (1.0f / length(g));
+    const Vec2 down = events.down;
     const Vec2 right{down.y, -down.x};
     auto flag = [&](std::uint32_t slot, Vec2 push) {
         // `push`: the direction the surface pushes the body.
@@ -114,6 +112,9 @@ void StepEvents::beginStep(const WorldState& world) {
     contactsNow.clear();
     sensorsNow.clear();
     touching.resize(world.slots.size(), 0);
+    // "Down" is where gravity pulls; with none, the screen's down (y grows downward).
+    const Vec2 g = world.def.gravity;
+    down = g == Vec2{} ? Vec2{0.0f, 1.0f} : g * (1.0f / length(g));
     // Awake dynamic bodies are evaluated afresh; the others keep their flags.
     for (BodyId id : world.order) {
         const Body& body = world.slots[id.index];

@@ -35,6 +35,8 @@ struct StepEvents {
     std::vector<CrushEvent> crushes;
     /// TouchingBit flags by slot, from the last step that evaluated the body.
     std::vector<std::uint8_t> touching;
+    /// Unit "down" for the touching flags this step, set by beginStep().
+    Vec2 down{0.0f, 1.0f};
 
     /// Filled by the solver during a step: what touches (overlaps) at its end.
     std::vector<TouchRecord> contactsNow, sensorsNow;
