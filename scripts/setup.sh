@@ -12,6 +12,9 @@ packages=(
   libpng-dev libgif-dev   # jostle render's PNG and GIF files
   libsdl2-dev             # jostle-demo's window
   xvfb xauth              # the demo's test runs it in a virtual X server (xvfb-run)
+  liblua5.4-dev libluajit-5.1-dev lua5.4 luajit  # the Lua module and its tests
+  love                    # the LÖVE example runs in the tests
+  clang libclang-rt-14-dev  # the sanitizer build and the fuzzers (libFuzzer)
   "$@"
 )
 
