@@ -132,7 +132,7 @@ void BoxGrid::build(const std::vector<Bounds>& boxes) {
         levels_[k].size = std::ldexp(base, k);
         levels_[k].inverse = 1.0 / levels_[k].size;
     }
-    levels_[kLevels - 1].size = INFINITY;
+    levels_[kLevels - 1].size = std::numeric_limits<double>::infinity();
     levels_[kLevels - 1].inverse = 0.0;
 
     // Each box's level and cell; then the boxes grouped by level (a counting sort keeps

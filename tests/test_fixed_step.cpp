@@ -132,7 +132,7 @@ TEST(FixedStep, JitteryFramesGiveTheirTimeInSteps) {
     long long total = 0;
     for (int frame = 0; frame < 100000; ++frame) {
         const float seconds = frames(random);
-        time += seconds;
+        time += static_cast<long double>(seconds);
         total += clock.advance(seconds);
         ASSERT_EQ(clock.droppedSeconds(), 0.0);
     }

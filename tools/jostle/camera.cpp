@@ -29,8 +29,8 @@ void span(double from, double to, int& first, int& last) {
 } // namespace
 
 Camera Camera::fit(WorldBox bounds, int width, int height) {
-    const double minX = bounds.min.x;
-    const double minY = bounds.min.y;
+    const double minX = double(bounds.min.x);
+    const double minY = double(bounds.min.y);
     double spanX = static_cast<double>(bounds.max.x) - minX;
     double spanY = static_cast<double>(bounds.max.y) - minY;
     const double margin = std::max(spanX, spanY) * kMarginFraction;
@@ -38,7 +38,7 @@ Camera Camera::fit(WorldBox bounds, int width, int height) {
     spanY += 2.0 * margin;
     // Degenerate bounds (no bodies) cannot happen with a margin, as bodies have a size;
     // but a camera must never divide by zero.
-    const double tiny = std::numeric_limits<float>::min();
+    const double tiny = double(std::numeric_limits<float>::min());
     const double scale = std::min(width / std::max(spanX, tiny), height / std::max(spanY, tiny));
     const double centreX = minX + (spanX / 2.0 - margin);
     const double centreY = minY + (spanY / 2.0 - margin);
