@@ -1,0 +1,219 @@
+// Determinism: a long, busy world hashed bit for bit, compared with a recorded hash.
+//
+// The same test runs in the g++ Release build (scripts/test.sh) and in the clang Debug
+// build with sanitizers (the asan preset), so one recorded hash checks run after run,
+// debug against release, and g++ against clang++. docs/reliability.md says what jostle
+// guarantees and what breaks it.
+//
+// Update a recorded hash only on purpose, when a change is meant to alter the simulation
+// (a solver change, a new default), and say why in the commit and in the history below.
+//   2026-11-21  first recorded.
+
+#include "jostle/query.hpp"
+#include "jostle/tilemap.hpp"
+#include "jostle/world.hpp"
+
+#include <gtest/gtest.h>
+
+#include <bit>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace {
+
+using namespace jostle;
+
+// A generator of our own, so that the scene does not depend on how a standard library
+// maps random bits to floats.
+class Lcg {
+public:
+    std::uint32_t next() {
+        state_ = state_ * 6364136223846793005ULL + 1442695040888963407ULL;
+        return static_cast<std::uint32_t>(state_ >> 33);
+    }
+    /// A float in [lo, hi), a multiple of 1/1024 of the range.
+    float range(float lo, float hi) {
+        return lo + (hi - lo) * static_cast<float>(next() % 1024) / 1024.0f;
+    }
+
+private:
+    std::uint64_t state_ = 12345;
+};
+
+// FNV-1a over the bits of what the world says about itself.
+class Hash {
+public:
+    void add(std::uint32_t word) {
+        for (int byte = 0; byte < 4; ++byte) {
+            value_ ^= (word >> (8 * byte)) & 0xFFu;
+            value_ *= 1099511628211ULL;
+        }
+    }
+    void add(float f) { add(std::bit_cast<std::uint32_t>(f)); }
+    void add(Vec2 v) {
+        add(v.x);
+        add(v.y);
+    }
+    void add(BodyId id) {
+        add(id.index);
+        add(id.generation);
+    }
+    std::uint64_t value() const { return value_; }
+
+private:
+    std::uint64_t value_ = 14695981039346656037ULL;
+};
+
+void hashStep(const World& world, Hash& hash) {
+    for (BodyId id : world.bodies()) {
+        hash.add(id);
+        hash.add(world.position(id));
+        hash.add(world.velocity(id));
+        hash.add(world.separation(id));
+        hash.add(static_cast<std::uint32_t>(world.isAwake(id)));
+    }
+    for (const ContactEvent& e : world.contactBegins()) {
+        hash.add(e.a);
+        hash.add(e.b);
+        hash.add(e.normal);
+        hash.add(e.approachSpeed);
+    }
+    for (const ContactEvent& e : world.contactEnds()) {
+        hash.add(e.a);
+        hash.add(e.b);
+    }
+    for (const SensorEvent& e : world.sensorBegins())
+        hash.add(e.visitor);
+    for (const CrushEvent& e : world.crushes())
+        hash.add(e.body);
+}
+
+// A container with a pyramid, a tile floor with a one-way ledge, a lift, a sensor and
+// boxes of every kind raining in, some destroyed as they go, tiles dug and filled,
+// queries asked: most of what the library does, for `steps` steps.
+struct BusyRun {
+    std::uint64_t hash = 0;
+    std::size_t bodies = 0;        ///< alive at the end
+    std::size_t contactBegins = 0; ///< over the whole run
+    std::size_t asleep = 0;        ///< at the end
+};
+
+BusyRun runBusyWorld(Solver solver, int steps) {
+    WorldDef def;
+    def.gravity = {0.0f, 600.0f};
+    def.solver = solver;
+    def.classic = {.mass = true, .coulomb = true, .ccd = true};
+    def.maxVelocity = 2000.0f;
+    World world(def);
+    Lcg random;
+
+    TileMapDef floorDef;
+    floorDef.x = -400.0f;
+    floorDef.y = 0.0f;
+    floorDef.tile = 20.0f;
+    floorDef.rows = {
+        "#......................................#", "#......................................#",
+        "#....................................###", "########################################"};
+    const TileMapId floor = createTileMap(world, floorDef);
+
+    world.createBody(
+        {.type = BodyType::Static, .x = -200, .y = -150, .hw = 60, .hh = 4, .oneWay = {0, -1}});
+    const BodyId lift = world.createBody(
+        {.type = BodyType::Kinematic, .x = 200, .y = -40, .hw = 40, .hh = 6, .vy = -30});
+    const BodyId sensor = world.createBody(
+        {.type = BodyType::Static, .x = 0, .y = -100, .hw = 50, .hh = 50, .sensor = true});
+    for (int row = 0; row < 8; ++row)
+        for (int i = 0; i <= row; ++i)
+            world.createBody({.x = -40.0f + 10.0f * float(i) - 5.0f * float(row),
+                              .y = -90.0f + 10.0f * float(row),
+                              .hw = 5,
+                              .hh = 5,
+                              .friction = 0.6f});
+    world.setPreSolve([&](Collision& c) {
+        if (c.a == sensor || c.b == sensor)
+            return true;
+        c.friction *= 0.9f; // something a game might do, and every pair goes through it
+        return true;
+    });
+
+    std::vector<BodyId> rain;
+    Hash hash;
+    BusyRun run;
+    for (int step = 0; step < steps; ++step) {
+        if (step % 3 == 0) {
+            BodyDef box{.x = random.range(-360, 360),
+                        .y = random.range(-600, -400),
+                        .hw = random.range(2, 12),
+                        .hh = random.range(2, 12),
+                        .vx = random.range(-200, 200),
+                        .vy = random.range(0, 400),
+                        .bounce = random.range(0, 1),
+                        .friction = random.range(0, 1),
+                        .density = random.range(0.5f, 4.0f)};
+            box.bullet = random.next() % 16 == 0;
+            if (box.bullet)
+                box.vy = 1500.0f;
+            rain.push_back(world.createBody(box));
+        }
+        if (step % 7 == 0 && rain.size() > 150) {
+            const std::size_t victim = random.next() % rain.size();
+            world.destroyBody(rain[victim]);
+            rain.erase(rain.begin() + static_cast<std::ptrdiff_t>(victim));
+        }
+        if (step % 120 == 60)
+            world.setVelocity(lift, {0, -world.velocity(lift).y});
+        if (step % 250 == 125) {
+            const int column = 1 + static_cast<int>(random.next() % 38);
+            setTile(world, floor, column, 2, !isSolid(world, floor, column, 2));
+        }
+        world.step(1.0f / 60.0f);
+        hashStep(world, hash);
+        run.contactBegins += world.contactBegins().size();
+        if (step % 50 == 0) {
+            for (BodyId id : queryBox(world, {0, -100}, {100, 100}))
+                hash.add(id);
+            if (auto hit = rayCast(world, {-390, -700}, {390, 10})) {
+                hash.add(hit->body);
+                hash.add(hit->point);
+            }
+        }
+    }
+    run.hash = hash.value();
+    run.bodies = world.bodyCount();
+    for (BodyId id : world.bodies())
+        run.asleep += world.isAwake(id) ? 0 : 1;
+    return run;
+}
+
+// The recorded hashes (see the history at the top of the file).
+constexpr std::uint64_t kPhysicalHash = 17455260702295475780ULL;
+constexpr std::uint64_t kClassicHash = 15513926316030135045ULL;
+constexpr int kSteps = 3000; // 50 seconds of a busy world
+
+TEST(Determinism, PhysicalModelRepeatsItselfInTheSameProcess) {
+    EXPECT_EQ(runBusyWorld(Solver::Physical, 600).hash, runBusyWorld(Solver::Physical, 600).hash);
+}
+
+TEST(Determinism, ClassicModelRepeatsItselfInTheSameProcess) {
+    EXPECT_EQ(runBusyWorld(Solver::Classic, 600).hash, runBusyWorld(Solver::Classic, 600).hash);
+}
+
+TEST(Determinism, PhysicalModelGivesTheRecordedHash) {
+    const BusyRun run = runBusyWorld(Solver::Physical, kSteps);
+    // The world is as busy as it means to be: a thousand boxes rained in (one every third
+    // step), about four hundred destroyed again (one every seventh step once there are
+    // 150), and thousands of contacts began.
+    EXPECT_GT(run.bodies, 150u);
+    EXPECT_GT(run.contactBegins, 2000u);
+    EXPECT_EQ(run.hash, kPhysicalHash);
+}
+
+TEST(Determinism, ClassicModelGivesTheRecordedHash) {
+    const BusyRun run = runBusyWorld(Solver::Classic, kSteps);
+    EXPECT_GT(run.bodies, 150u);
+    EXPECT_GT(run.contactBegins, 2000u);
+    EXPECT_EQ(run.hash, kClassicHash);
+}
+
+} // namespace
