@@ -270,7 +270,7 @@ TileMapId createTileMap(World& world, const TileMapDef& def) {
         if (maps.maps.size() >= UINT32_MAX)
             fail("createTileMap", "too many tile maps");
         index = static_cast<std::uint32_t>(maps.maps.size());
-        maps.maps.emplace_back();
+        maps.maps.emplace_back().generation = WorldAccess::state(world).firstGeneration;
     }
     TileMapData& map = maps.maps[index];
     const std::uint32_t generation = map.generation;

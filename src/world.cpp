@@ -2,6 +2,7 @@
 #include "world_access.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <string>
 
@@ -42,6 +43,14 @@ void wakeAll(WorldState& world) {
         world.wakeIsland(id.index);
 }
 
+// Each world's handles start at their own generation, spread over the 32 bits by the
+// golden ratio so that two worlds' generations stay apart however often slots are reused.
+std::uint32_t nextFirstGeneration() {
+    static std::atomic<std::uint32_t> worldsMade{0};
+    const std::uint32_t generation = (worldsMade++ + 1) * 0x9E3779B9u;
+    return generation == 0 ? 1 : generation; // 0 is the null handle's
+}
+
 } // namespace
 
 void updateMass(Body& body) {
@@ -54,6 +63,7 @@ World::World(const WorldDef& def) : state_(std::make_unique<WorldState>()) {
     if (auto problem = checkWorldDef(def))
         fail("World", "WorldDef." + problem->field + ": " + problem->problem);
     state_->def = def;
+    state_->firstGeneration = nextFirstGeneration();
 }
 
 World::~World() = default;
@@ -82,7 +92,7 @@ BodyId World::createBody(const BodyDef& def) {
         if (w.slots.size() >= UINT32_MAX)
             fail("createBody", "too many bodies");
         slot = static_cast<std::uint32_t>(w.slots.size());
-        w.slots.emplace_back();
+        w.slots.emplace_back().generation = w.firstGeneration;
     }
     Body& body = w.slots[slot];
     const std::uint32_t generation = body.generation;

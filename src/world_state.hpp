@@ -81,6 +81,12 @@ struct WorldState {
     WorldDef def;
     PreSolveFn preSolve;
 
+    /// The generation a new slot starts at, for bodies and tile maps alike: different in
+    /// every world of the process, so that a handle of another world does not match
+    /// (World::isValid is false and every other function throws). Handles are the only
+    /// thing it touches: nothing in the simulation depends on it.
+    std::uint32_t firstGeneration = 1;
+
     /// Bodies by slot index; a BodyId's index points here.
     std::vector<Body> slots;
     /// Slots free for reuse.

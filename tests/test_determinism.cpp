@@ -8,6 +8,9 @@
 // Update a recorded hash only on purpose, when a change is meant to alter the simulation
 // (a solver change, a new default), and say why in the commit and in the history below.
 //   2026-11-21  first recorded.
+//   2026-11-21  hashes a body's slot, no longer its generation: generations now differ
+//               between worlds (foreign handles are rejected). Same simulation: the new
+//               hash is what the commit before that change gives too.
 
 #include "jostle/query.hpp"
 #include "jostle/tilemap.hpp"
@@ -55,10 +58,9 @@ public:
         add(v.x);
         add(v.y);
     }
-    void add(BodyId id) {
-        add(id.index);
-        add(id.generation);
-    }
+    // The slot, not the generation: generations differ from world to world on purpose
+    // (a world rejects another's handles), and nothing in the simulation depends on them.
+    void add(BodyId id) { add(id.index); }
     std::uint64_t value() const { return value_; }
 
 private:
@@ -187,8 +189,8 @@ BusyRun runBusyWorld(Solver solver, int steps) {
 }
 
 // The recorded hashes (see the history at the top of the file).
-constexpr std::uint64_t kPhysicalHash = 17455260702295475780ULL;
-constexpr std::uint64_t kClassicHash = 15513926316030135045ULL;
+constexpr std::uint64_t kPhysicalHash = 11782789912343429699ULL;
+constexpr std::uint64_t kClassicHash = 11721795189068454326ULL;
 constexpr int kSteps = 3000; // 50 seconds of a busy world
 
 TEST(Determinism, PhysicalModelRepeatsItselfInTheSameProcess) {

@@ -251,6 +251,12 @@ TEST(TileMapChecks, HandlesAreChecked) {
     EXPECT_FALSE(isValid(other, map));
     EXPECT_THROW(setTile(world, TileMapId{}, 0, 0, false), Error);
     EXPECT_THROW(setTile(other, map, 0, 0, false), Error);
+    // Another world's map in the same slot is still another world's.
+    const TileMapId otherMap = createTileMap(other, mapDef({"##"}));
+    EXPECT_EQ(otherMap.index, map.index);
+    EXPECT_FALSE(isValid(world, otherMap));
+    EXPECT_FALSE(isValid(other, map));
+    EXPECT_THROW(setTile(other, map, 0, 0, false), Error);
 
     destroyTileMap(world, map);
     EXPECT_FALSE(isValid(world, map));

@@ -49,6 +49,26 @@ TEST(Handles, NullAndForeignHandlesThrowWithTheirReason) {
     EXPECT_THROW(world.velocity(BodyId{42, 1}), Error);
 }
 
+TEST(Handles, AHandleOfAnotherWorldIsRejected) {
+    // Two worlds built alike: their first bodies sit in the same slot, yet neither world
+    // takes the other's handle, even after the slot has been reused many times.
+    World first = classicWorld();
+    World second = classicWorld();
+    BodyId a = first.createBody(boxAt(0, 0));
+    BodyId b = second.createBody(boxAt(0, 0));
+    EXPECT_EQ(a.index, b.index);
+    EXPECT_FALSE(first.isValid(b));
+    EXPECT_FALSE(second.isValid(a));
+    EXPECT_THROW(second.setPosition(a, {1, 1}), Error);
+    for (int i = 0; i < 1000; ++i) {
+        second.destroyBody(b);
+        b = second.createBody(boxAt(0, 0));
+        ASSERT_FALSE(second.isValid(a));
+        ASSERT_FALSE(first.isValid(b));
+    }
+    EXPECT_EQ(first.position(a), (Vec2{0, 0}));
+}
+
 TEST(Handles, BodiesAreListedInCreationOrder) {
     World world = classicWorld();
     BodyId a = world.createBody(boxAt(0, 0));

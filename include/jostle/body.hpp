@@ -33,6 +33,9 @@ std::optional<BodyType> bodyTypeFromString(const std::string& name);
 /// The index names a storage slot and the generation counts how often that slot was
 /// reused, so a handle to a destroyed body is detected (World::isValid returns false and
 /// every other World function throws jostle::Error), never mistaken for a newer body.
+/// Each world starts its generations at its own value, so a handle of another world is
+/// detected the same way. Handles are compared, never ordered: their values say nothing
+/// about creation order and differ from world to world.
 struct BodyId {
     std::uint32_t index = 0;
     std::uint32_t generation = 0; ///< 0 only in the null handle
