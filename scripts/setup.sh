@@ -15,6 +15,7 @@ packages=(
   liblua5.4-dev libluajit-5.1-dev lua5.4 luajit  # the Lua module and its tests
   love                    # the LÖVE example runs in the tests
   clang libclang-rt-14-dev  # the sanitizer build and the fuzzers (libFuzzer)
+  valgrind                # memcheck over a part of the suite
   "$@"
 )
 
