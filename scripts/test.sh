@@ -1,7 +1,14 @@
 #!/usr/bin/env bash
-# Sets everything up, builds, and runs the whole test suite.
+# Sets everything up, builds, and runs the whole test suite twice: the Release build
+# (g++), then the same tests built by clang with AddressSanitizer and
+# UndefinedBehaviorSanitizer (the asan preset in CMakePresets.json), where the fuzzers
+# also run for a short while. Any sanitizer report fails its test.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/setup.sh
 scripts/build.sh
 ctest --test-dir build --output-on-failure -j"$(nproc)"
+
+cmake --preset asan >/dev/null
+cmake --build --preset asan -j"$(nproc)"
+ctest --preset asan -j"$(nproc)"
