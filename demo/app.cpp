@@ -3,6 +3,7 @@
 
 #include "draw_pane.hpp"
 #include "font.hpp"
+#include "grid_picture.hpp"
 #include "input_script.hpp"
 #include "mouse_drag.hpp"
 #include "palette.hpp"
@@ -106,7 +107,8 @@ void onKey(State& state, SDL_Keycode key, SDL_Window* window) {
         state.debug = !state.debug;
         break;
     case SDLK_d:
-        // D runs right in the samples with a character; Tab toggles debug everywhere.
+        // D runs right in the samples with a character; Tab toggles debug everywhere, and
+        // D is an alias only where it steers nothing.
         if (!sample(state).usesLetterKeys())
             state.debug = !state.debug;
         break;
@@ -196,10 +198,24 @@ void stepWorlds(State& state, int steps, float dt) {
         const Uint64 start = SDL_GetPerformanceCounter();
         for (Pane& pane : sample(state).panes())
             pane.world->step(dt);
-        const double ms = 1000.0 * static_cast<double>(SDL_GetPerformanceCounter() - start) /
+        const Uint64 end = SDL_GetPerformanceCounter();
+        // Every step, debug drawing on or off: the events of a step are gone after the
+        // next, and turning debug on must show what touches now.
+        for (Pane& pane : sample(state).panes())
+            pane.contacts.update(*pane.world);
+        const double ms = 1000.0 * static_cast<double>(end - start) /
                           static_cast<double>(SDL_GetPerformanceFrequency());
         state.stepMs += (ms - state.stepMs) * kStatsSmoothing;
     }
+}
+
+/// The keys, as they work in `current`: Tab is the debug key everywhere; D is one too
+/// only where it does not run.
+std::string helpLine(Sample& current) {
+    const std::string common = "p pause  n step  s slow  r reset  esc quit  ";
+    if (current.usesLetterKeys())
+        return "<- -> a d run  space jump  tab debug  " + common + "drag move  r-click box";
+    return "tab or d debug  " + common + "left-drag move  right-click box";
 }
 
 void drawHeader(SDL_Renderer* renderer, State& state) {
@@ -228,9 +244,7 @@ void drawHeader(SDL_Renderer* renderer, State& state) {
     setColour(renderer, kText);
     drawText(renderer, 8, 6 + kLineHeight, kTextScale, stats);
     setColour(renderer, kTextDim);
-    drawText(renderer, 8, kWindowHeight - kLineHeight, kTextScale,
-             "p pause  n step  s slow  d/tab debug  r reset  esc quit  "
-             "left-drag move  right-click box");
+    drawText(renderer, 8, kWindowHeight - kLineHeight, kTextScale, helpLine(sample(state)));
 }
 
 void drawFrame(SDL_Renderer* renderer, State& state) {
@@ -238,7 +252,7 @@ void drawFrame(SDL_Renderer* renderer, State& state) {
     SDL_RenderClear(renderer);
     const std::vector<View> views = layout(sample(state));
     for (std::size_t i = 0; i < views.size(); ++i)
-        drawPane(renderer, sample(state).panes()[i], views[i], state.debug);
+        drawPane(renderer, sample(state).panes()[i], views[i], state.debug, 1.0f / kStepHz);
     drawHeader(renderer, state);
 }
 
@@ -254,6 +268,18 @@ void printReport(State& state) {
     std::printf("paused %d\n", state.paused ? 1 : 0);
     std::printf("slow %d\n", state.slow ? 1 : 0);
     std::printf("debug %d\n", state.debug ? 1 : 0);
+    // What debug drawing shows (drawn or not): the touching pairs of all panes, and the
+    // broadphase picture of the first.
+    std::size_t contacts = 0;
+    for (const Pane& pane : current.panes())
+        contacts += pane.contacts.count(*pane.world);
+    std::printf("contacts %zu\n", contacts);
+    const GridPicture grid = pictureGrid(*current.panes().front().world, 1.0f / kStepHz);
+    std::printf("grid %s\ngrid_boxes %zu\n", grid.boxes.empty() ? "none" : grid.name.c_str(),
+                grid.boxes.size());
+    if (!grid.boxes.empty())
+        std::printf("grid_cell %.3f\ngrid_level %d\ngrid_level_boxes %zu\n",
+                    grid.cellSize(grid.mainLevel), grid.mainLevel, grid.inMainLevel);
     const World& world = *current.panes().front().world;
     if (const BodyId player = current.player(); world.isValid(player)) {
         const Vec2 position = world.position(player);

@@ -1,9 +1,14 @@
 // Drawing a pane: see draw_pane.hpp.
 #include "draw_pane.hpp"
 
+#include "draw_contacts.hpp"
 #include "font.hpp"
+#include "grid_picture.hpp"
 #include "palette.hpp"
 
+#include <cstdio>
+#include <string>
+#include <utility>
 #include <vector>
 
 namespace jostle::demo {
@@ -13,8 +18,10 @@ namespace {
 constexpr int kTextScale = 2;
 /// Velocity lines: seconds of motion they show, so their length reads as speed.
 constexpr float kVelocitySeconds = 0.1f;
-/// Contact normals are drawn this many pixels long from the contact body's centre.
-constexpr int kNormalPixels = 14;
+/// The legend and the grid's caption: small, under the pane's title.
+constexpr int kLegendScale = 1;
+constexpr int kLegendTop = 26;
+constexpr int kLegendLineHeight = kGlyphHeight + 4;
 
 void drawBody(SDL_Renderer* renderer, const World& world, BodyId body, const View& view,
               bool debug) {
@@ -72,30 +79,53 @@ void drawBody(SDL_Renderer* renderer, const World& world, BodyId body, const Vie
     }
 }
 
+/// What the debug marks mean, each word in its mark's colour, and which grid the
+/// broadphase picture shows, with its main level's cell size.
+void drawLegend(SDL_Renderer* renderer, const SDL_Rect& screen, const GridPicture& grid) {
+    const SDL_Color dimmed =
+        scaled(kTypeColours[static_cast<std::size_t>(BodyType::Dynamic)], kSleepingPercent);
+    const std::pair<SDL_Color, const char*> words[] = {
+        {kContact, "contacts  "}, {kTouching, "sides touched  "}, {kVelocity, "velocity  "},
+        {dimmed, "asleep  "},     {kGrownBox, "grown boxes  "},   {kGridCellOutline, "grid cells"},
+    };
+    int x = screen.x + 8;
+    const int y = screen.y + kLegendTop;
+    for (const auto& [colour, word] : words) {
+        setColour(renderer, colour);
+        x = drawText(renderer, x, y, kLegendScale, word);
+    }
+    std::string caption = "broadphase: no boxes";
+    if (!grid.boxes.empty()) {
+        char cell[32];
+        std::snprintf(cell, sizeof cell, "%.3g", grid.cellSize(grid.mainLevel));
+        caption = grid.name + " grid: " + std::to_string(grid.boxes.size()) +
+                  (grid.boxes.size() == 1 ? " box, " : " boxes, ") +
+                  std::to_string(grid.inMainLevel) + " in cells of " + cell + " (level " +
+                  std::to_string(grid.mainLevel) + ")";
+    }
+    setColour(renderer, kTextDim);
+    drawText(renderer, screen.x + 8, y + kLegendLineHeight, kLegendScale, caption);
+}
+
 } // namespace
 
-void drawPane(SDL_Renderer* renderer, const Pane& pane, const View& view, bool debug) {
+void drawPane(SDL_Renderer* renderer, const Pane& pane, const View& view, bool debug, float dt) {
     const SDL_Rect& screen = view.screen();
     SDL_RenderSetClipRect(renderer, &screen);
     setColour(renderer, kBackground);
     SDL_RenderFillRect(renderer, &screen);
 
     const World& world = *pane.world;
+    GridPicture grid;
+    if (debug) {
+        grid = pictureGrid(world, dt);
+        drawGridPicture(renderer, grid, view);
+    }
     for (BodyId body : world.bodies())
         drawBody(renderer, world, body, view, debug);
 
-    if (debug) {
-        // Contacts that began in the last step: their normal, from b towards a, at a.
-        setColour(renderer, kNormal);
-        for (const ContactEvent& contact : world.contactBegins()) {
-            if (!world.isValid(contact.a))
-                continue;
-            const SDL_Point from = view.toScreen(world.position(contact.a));
-            SDL_RenderDrawLine(renderer, from.x, from.y,
-                               from.x + static_cast<int>(contact.normal.x * kNormalPixels),
-                               from.y + static_cast<int>(contact.normal.y * kNormalPixels));
-        }
-    }
+    if (debug)
+        drawContacts(renderer, world, pane.contacts, view);
 
     setColour(renderer, kText);
     for (const Label& label : pane.labels) {
@@ -109,6 +139,8 @@ void drawPane(SDL_Renderer* renderer, const Pane& pane, const View& view, bool d
     }
     setColour(renderer, kTextDim);
     drawText(renderer, screen.x + 8, screen.y + 6, kTextScale, pane.title);
+    if (debug)
+        drawLegend(renderer, screen, grid);
     setColour(renderer, kPaneBorder);
     SDL_RenderDrawRect(renderer, &screen);
     SDL_RenderSetClipRect(renderer, nullptr);

@@ -1,6 +1,7 @@
 // Drawing one pane: its world's bodies as filled boxes in `jostle render`'s colours, its
-// title and labels, and with debug drawing on, sleeping bodies dimmed and the sides each
-// body touches, its velocity and the normals of contacts that just began.
+// title and labels, and with debug drawing on, sleeping bodies dimmed, the sides each
+// body touches, its velocity, every touching pair's contact point and normal, a picture
+// of the broadphase grid under the bodies, and a legend.
 #pragma once
 
 #include "sample.hpp"
@@ -9,6 +10,7 @@
 
 namespace jostle::demo {
 
-void drawPane(SDL_Renderer* renderer, const Pane& pane, const View& view, bool debug);
+/// `dt` is the worlds' step, which the broadphase picture grows moving boxes by.
+void drawPane(SDL_Renderer* renderer, const Pane& pane, const View& view, bool debug, float dt);
 
 } // namespace jostle::demo

@@ -26,10 +26,19 @@ constexpr SDL_Color kText{230, 230, 230, 255};
 constexpr SDL_Color kTextDim{120, 124, 135, 255};
 constexpr SDL_Color kTextHighlight{255, 210, 90, 255};
 constexpr SDL_Color kPaneBorder{60, 64, 76, 255};
-/// Debug marks: the sides a body touches, its velocity, new contacts' normals.
+/// Debug marks: the sides a body touches, its velocity, the touching pairs' contact
+/// points and normals.
 constexpr SDL_Color kTouching{230, 60, 60, 255};
 constexpr SDL_Color kVelocity{90, 220, 120, 255};
-constexpr SDL_Color kNormal{250, 250, 120, 255};
+constexpr SDL_Color kContact{250, 250, 120, 255};
+/// The broadphase picture, under the bodies: lines of the main level's cells just off
+/// the background, so they read as paper rather than as things; the cells that hold boxes
+/// tinted (blended, so the lines show through), other levels' cells outlined, and boxes
+/// grown by their motion.
+constexpr SDL_Color kGridLine{40, 44, 58, 255};
+constexpr SDL_Color kGridCellTint{80, 190, 230, 40};
+constexpr SDL_Color kGridCellOutline{50, 110, 140, 255};
+constexpr SDL_Color kGrownBox{110, 220, 250, 255};
 /// Bullets get a light outline, so they can be told from ordinary fast bodies.
 constexpr SDL_Color kBulletOutline{255, 255, 255, 255};
 

@@ -2,6 +2,7 @@
 // and whatever the sample does before each step (a character, a lift, a cannon).
 #pragma once
 
+#include "contact_set.hpp"
 #include "view.hpp"
 
 #include "jostle/scene.hpp"
@@ -25,6 +26,9 @@ struct Pane {
     WorldBox view;
     std::string title; ///< drawn at the top of the pane, e.g. "CLASSIC"
     std::vector<Label> labels;
+    /// The pairs touching now, for debug drawing; kept up to date by the main loop after
+    /// every step, and empty in a new pane as its world has not stepped.
+    ContactSet contacts;
 };
 
 /// The keys a sample may use to steer something, as held in this step.

@@ -1,0 +1,61 @@
+// Drawing the touching pairs: see draw_contacts.hpp.
+#include "draw_contacts.hpp"
+
+#include "palette.hpp"
+
+#include <algorithm>
+
+namespace jostle::demo {
+
+namespace {
+
+/// A contact's dot is this many pixels on each side of its point: 3 × 3 in all.
+constexpr int kDotRadius = 1;
+/// The normal's line is this long, or half the pushed body's extent along it when that
+/// is shorter, so that in a pile of small boxes it stays inside the box it pushes.
+constexpr float kNormalPixels = 14.0f;
+constexpr float kShortestNormalPixels = 3.0f;
+
+/// The middle of the overlap of [lowA, highA] and [lowB, highB], or of the gap between.
+float middleOfShared(float lowA, float highA, float lowB, float highB) {
+    return (std::max(lowA, lowB) + std::min(highA, highB)) / 2.0f;
+}
+
+} // namespace
+
+Vec2 contactPoint(const World& world, const TouchingPair& pair) {
+    const Vec2 ca = world.position(pair.a), ha = world.halfExtents(pair.a);
+    const Vec2 cb = world.position(pair.b), hb = world.halfExtents(pair.b);
+    const Vec2 n = pair.normal;
+    // b lies on a's side opposite the normal: a's face there is at ca - n·ha, b's facing
+    // one at cb + n·hb.
+    if (n.y != 0.0f)
+        return {middleOfShared(ca.x - ha.x, ca.x + ha.x, cb.x - hb.x, cb.x + hb.x),
+                ((ca.y - n.y * ha.y) + (cb.y + n.y * hb.y)) / 2.0f};
+    return {((ca.x - n.x * ha.x) + (cb.x + n.x * hb.x)) / 2.0f,
+            middleOfShared(ca.y - ha.y, ca.y + ha.y, cb.y - hb.y, cb.y + hb.y)};
+}
+
+void drawContacts(SDL_Renderer* renderer, const World& world, const ContactSet& contacts,
+                  const View& view) {
+    setColour(renderer, kContact);
+    contacts.forEach(world, [&](const TouchingPair& pair) {
+        const SDL_Point at = view.toScreen(contactPoint(world, pair));
+        const SDL_Rect dot{at.x - kDotRadius, at.y - kDotRadius, 2 * kDotRadius + 1,
+                           2 * kDotRadius + 1};
+        SDL_RenderFillRect(renderer, &dot);
+        // The normal points from b towards a. Drawn into the body it pushes: a, unless a
+        // is a static or kinematic body that no contact moves (a floor made first); then
+        // the other way, into b.
+        const bool intoA = world.type(pair.a) == BodyType::Dynamic;
+        const BodyId pushed = intoA ? pair.a : pair.b;
+        const Vec2 direction = intoA ? pair.normal : -pair.normal;
+        const Vec2 half = world.halfExtents(pushed);
+        const float extent = (direction.x != 0.0f ? half.x : half.y) * view.scale();
+        const float pixels = std::clamp(extent, kShortestNormalPixels, kNormalPixels);
+        SDL_RenderDrawLine(renderer, at.x, at.y, at.x + static_cast<int>(direction.x * pixels),
+                           at.y + static_cast<int>(direction.y * pixels));
+    });
+}
+
+} // namespace jostle::demo
