@@ -15,51 +15,8 @@ if ! "$demo" --frames 1 >/dev/null 2>&1; then
   exit 77
 fi
 
-failed=0
-report=""
-# run ARGS...: runs the demo with --report, keeps its report in $report.
-run() {
-  if ! report=$("$demo" --report "$@"); then
-    echo "FAIL: jostle-demo $* exited with an error" >&2
-    failed=1
-    report=""
-  fi
-}
-value() { printf '%s\n' "$report" | awk -v k="$1" '$1 == k { print $2 }'; }
-# expect NAME VALUE WHY: the reported NAME is VALUE exactly.
-expect() {
-  local got
-  got=$(value "$1")
-  if [ "$got" != "$2" ]; then
-    echo "FAIL: $3: $1 is '$got', expected '$2'" >&2
-    failed=1
-  else
-    echo "ok: $3 ($1 $got)"
-  fi
-}
-# near NAME VALUE TOLERANCE WHY: the reported NAME is within TOLERANCE of VALUE.
-near() {
-  local got
-  got=$(value "$1")
-  if ! awk -v g="$got" -v e="$2" -v t="$3" \
-      'BEGIN { exit !(g != "" && g - e <= t && e - g <= t) }'; then
-    echo "FAIL: $4: $1 is '$got', expected $2 +- $3" >&2
-    failed=1
-  else
-    echo "ok: $4 ($1 $got)"
-  fi
-}
-# below NAME LIMIT WHY: the reported NAME is less than LIMIT.
-below() {
-  local got
-  got=$(value "$1")
-  if ! awk -v g="$got" -v l="$2" 'BEGIN { exit !(g != "" && g < l) }'; then
-    echo "FAIL: $3: $1 is '$got', expected below $2" >&2
-    failed=1
-  else
-    echo "ok: $3 ($1 $got)"
-  fi
-}
+# shellcheck source-path=SCRIPTDIR source=report_checks.sh
+. "$(dirname "$0")/report_checks.sh"
 
 # --- Platformer (sample 2): run speed 260 px/s, jump 4 tiles (128 px) high. The player
 # (22 x 40 px) starts at (100, 480) and settles on the floor (top y 512) at y 492.
@@ -113,6 +70,18 @@ run --sample 1 --frames 10 --input "3 key-press d; 5 key-press s"
 expect sample tutorial "sample 1"
 expect debug 1 "D turns debug drawing on in the tutorial"
 expect slow 1 "S turns slow motion on"
+
+# The debug key is the same everywhere: Tab in every sample; D as well in the samples
+# where it steers nothing (all but 2 and 6, where it runs right).
+for sample in 1 2 3 4 5 6; do
+  run --sample "$sample" --frames 6 --input "3 key-press Tab"
+  expect debug 1 "Tab turns debug drawing on in sample $sample"
+  run --sample "$sample" --frames 6 --input "3 key-press d"
+  case $sample in
+    2 | 6) expect debug 0 "D runs, and leaves debug drawing off, in sample $sample" ;;
+    *) expect debug 1 "D turns debug drawing on in sample $sample" ;;
+  esac
+done
 
 # --- Crates (sample 6): run speed 220 px/s, jump 90 px high in 0.36 s. The player
 # (24 x 44 px) starts at (80, 470) and settles on the floor (top y 500) at y 478.

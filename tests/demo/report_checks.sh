@@ -1,0 +1,49 @@
+# shellcheck shell=bash
+# shellcheck disable=SC2034,SC2154 # $demo comes from, and $failed goes back to, the script
+# Shared by the demo's test scripts (sourced, not run): runs jostle-demo with --report
+# and checks the values it prints. Needs $demo set; sets $failed to 1 on a failure.
+failed=0
+report=""
+# run ARGS...: runs the demo with --report, keeps its report in $report.
+run() {
+  if ! report=$("$demo" --report "$@"); then
+    echo "FAIL: jostle-demo $* exited with an error" >&2
+    failed=1
+    report=""
+  fi
+}
+value() { printf '%s\n' "$report" | awk -v k="$1" '$1 == k { print $2 }'; }
+# expect NAME VALUE WHY: the reported NAME is VALUE exactly.
+expect() {
+  local got
+  got=$(value "$1")
+  if [ "$got" != "$2" ]; then
+    echo "FAIL: $3: $1 is '$got', expected '$2'" >&2
+    failed=1
+  else
+    echo "ok: $3 ($1 $got)"
+  fi
+}
+# near NAME VALUE TOLERANCE WHY: the reported NAME is within TOLERANCE of VALUE.
+near() {
+  local got
+  got=$(value "$1")
+  if ! awk -v g="$got" -v e="$2" -v t="$3" \
+      'BEGIN { exit !(g != "" && g - e <= t && e - g <= t) }'; then
+    echo "FAIL: $4: $1 is '$got', expected $2 +- $3" >&2
+    failed=1
+  else
+    echo "ok: $4 ($1 $got)"
+  fi
+}
+# below NAME LIMIT WHY: the reported NAME is less than LIMIT.
+below() {
+  local got
+  got=$(value "$1")
+  if ! awk -v g="$got" -v l="$2" 'BEGIN { exit !(g != "" && g < l) }'; then
+    echo "FAIL: $3: $1 is '$got', expected below $2" >&2
+    failed=1
+  else
+    echo "ok: $3 ($1 $got)"
+  fi
+}
