@@ -1,0 +1,128 @@
+// jostle.newFixedStep: a fixed time step from variable frame times (fixed_step.hpp).
+//
+//     local clock = jostle.newFixedStep(1/60)
+//     function love.update(frameSeconds) clock:update(world, frameSeconds) end
+#include "binding.hpp"
+
+#include <jostle/fixed_step.hpp>
+
+#include <new>
+
+namespace jostle::lua {
+
+namespace {
+
+// FixedStep holds numbers only: it lives in the userdata itself, with no finalizer.
+static_assert(std::is_trivially_destructible_v<FixedStep>);
+
+FixedStep& checkClock(lua_State* L, const char* where) {
+    auto* clock = static_cast<FixedStep*>(luaL_testudata(L, 1, kFixedStepType));
+    if (!clock)
+        raise(L, where,
+              "expected a FixedStep as self (call it with a colon: clock:method()), got %s",
+              typeName(L, 1));
+    return *clock;
+}
+
+/// The number of steps to take now for a frame of frameSeconds.
+int clockAdvance(lua_State* L) {
+    const char* where = "FixedStep:advance";
+    FixedStep& clock = checkClock(L, where);
+    const float seconds = checkNumber(L, 2, where, "frameSeconds");
+    if (!(seconds >= 0.0f))
+        raise(L, where, "frameSeconds: must be >= 0");
+    int steps = 0;
+    guard(L, where, [&] { steps = clock.advance(seconds); });
+    pushWhole(L, steps);
+    return 1;
+}
+
+/// advance(frameSeconds), then world:step(dt) that many times; returns the number of
+/// steps. An error in a step (a pre-solve callback's) is raised at once; the steps left
+/// are not taken and their time is lost, as in C++.
+int clockUpdate(lua_State* L) {
+    const char* where = "FixedStep:update";
+    FixedStep& clock = checkClock(L, where);
+    checkWorld(L, 2, where);
+    const float seconds = checkNumber(L, 3, where, "frameSeconds");
+    if (!(seconds >= 0.0f))
+        raise(L, where, "frameSeconds: must be >= 0");
+    int steps = 0;
+    guard(L, where, [&] { steps = clock.advance(seconds); });
+    for (int i = 0; i < steps; ++i)
+        stepWorld(L, 2, clock.dt(), where);
+    pushWhole(L, steps);
+    return 1;
+}
+
+int clockGetAlpha(lua_State* L) {
+    lua_pushnumber(L, static_cast<lua_Number>(checkClock(L, "FixedStep:getAlpha").alpha()));
+    return 1;
+}
+
+int clockGetDroppedSeconds(lua_State* L) {
+    lua_pushnumber(
+        L, static_cast<lua_Number>(checkClock(L, "FixedStep:getDroppedSeconds").droppedSeconds()));
+    return 1;
+}
+
+int clockGetDt(lua_State* L) {
+    lua_pushnumber(L, static_cast<lua_Number>(checkClock(L, "FixedStep:getDt").dt()));
+    return 1;
+}
+
+int clockGetMaxStepsPerFrame(lua_State* L) {
+    pushWhole(L, checkClock(L, "FixedStep:getMaxStepsPerFrame").maxStepsPerFrame());
+    return 1;
+}
+
+int clockReset(lua_State* L) {
+    checkClock(L, "FixedStep:reset").reset();
+    return 0;
+}
+
+int clockToString(lua_State* L) {
+    const auto* clock = static_cast<const FixedStep*>(lua_touserdata(L, 1));
+    lua_pushfstring(L, "jostle.FixedStep (dt %f s)", static_cast<lua_Number>(clock->dt()));
+    return 1;
+}
+
+constexpr luaL_Reg kClockMethods[] = {
+    {"advance", clockAdvance},   {"update", clockUpdate},
+    {"getAlpha", clockGetAlpha}, {"getDroppedSeconds", clockGetDroppedSeconds},
+    {"getDt", clockGetDt},       {"getMaxStepsPerFrame", clockGetMaxStepsPerFrame},
+    {"reset", clockReset},       {nullptr, nullptr},
+};
+
+} // namespace
+
+/// jostle.newFixedStep([dt [, maxStepsPerFrame]]): dt defaults to 1/60 s, the cap to 8.
+int newFixedStep(lua_State* L) {
+    const char* where = "jostle.newFixedStep";
+    const float dt = optNumber(L, 1, where, "dt", 1.0f / 60.0f);
+    if (!(dt >= FixedStep::kMinDt && dt <= FixedStep::kMaxDt))
+        raise(L, where, "dt: must be a number of seconds from 1e-6 to 3600");
+    int maxSteps = 8;
+    if (!lua_isnoneornil(L, 2))
+        maxSteps = static_cast<int>(
+            checkWhole(L, 2, where, "maxStepsPerFrame", 1, FixedStep::kMaxStepsLimit));
+    void* memory = newUserdata(L, sizeof(FixedStep));
+    guard(L, where, [&] { new (memory) FixedStep(dt, maxSteps); });
+    luaL_getmetatable(L, kFixedStepType);
+    lua_setmetatable(L, -2);
+    return 1;
+}
+
+void openFixedStep(lua_State* L) {
+    luaL_newmetatable(L, kFixedStepType);
+    lua_createtable(L, 0, 8);
+    luaL_setfuncs(L, kClockMethods, 0);
+    lua_setfield(L, -2, "__index");
+    lua_pushcfunction(L, clockToString);
+    lua_setfield(L, -2, "__tostring");
+    lua_pushliteral(L, "jostle.FixedStep");
+    lua_setfield(L, -2, "__name");
+    lua_pop(L, 1);
+}
+
+} // namespace jostle::lua

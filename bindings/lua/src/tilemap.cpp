@@ -1,0 +1,366 @@
+// world:newTileMap and the TileMap methods. Columns and rows are counted from 0, as in
+// C++ and scene files: tile (column, row) covers x + column × tile to x + (column + 1) ×
+// tile. So the string rows[1] of the definition is row 0.
+#include "binding.hpp"
+
+#include <cstdio>
+#include <cstring>
+
+namespace jostle::lua {
+
+namespace {
+
+constexpr int kMaxCoordinate = 0x7FFFFFFF;
+
+TileMapHandle& checkMap(lua_State* L, int index, const char* where) {
+    auto* map = static_cast<TileMapHandle*>(luaL_testudata(L, index, kTileMapType));
+    if (!map)
+        raise(L, where, "expected a TileMap as self (call it with a colon: map:method()), got %s",
+              typeName(L, index));
+    if (!map->world->data)
+        raise(L, where, "the map's world was destroyed");
+    if (!isValid(map->world->data->world, map->id))
+        raise(L, where, "the map was destroyed");
+    return *map;
+}
+
+/// Checks the rows table at `rows`: strings of '#' and '.', all as long as the first.
+/// Messages use Lua's indices ("rows[3][6]" is rows[3]:sub(6, 6)) and say the tile.
+void checkRows(lua_State* L, int rows, const char* where) {
+    if (lua_type(L, rows) != LUA_TTABLE)
+        raise(L, where, "rows: expected an array of strings, got %s", typeName(L, rows));
+    const std::size_t count = rawLength(L, rows);
+    if (count == 0)
+        raise(L, where, "rows: must have at least one row");
+    std::size_t columns = 0;
+    for (std::size_t i = 1; i <= count; ++i) {
+        rawGetInteger(L, rows, static_cast<std::int64_t>(i));
+        if (lua_type(L, -1) != LUA_TSTRING)
+            raise(L, where, "rows[%d]: expected a string, got %s", static_cast<int>(i),
+                  typeName(L, -1));
+        std::size_t length = 0;
+        const char* text = lua_tolstring(L, -1, &length);
+        if (i == 1) {
+            if (length == 0)
+                raise(L, where, "rows[1]: must have at least one column");
+            if (length > static_cast<std::size_t>(kMaxCoordinate))
+                raise(L, where, "rows[1]: too long");
+            columns = length;
+        } else if (length != columns) {
+            raise(L, where, "rows[%d]: has %d columns, rows[1] has %d", static_cast<int>(i),
+                  static_cast<int>(length), static_cast<int>(columns));
+        }
+        for (std::size_t c = 0; c < length; ++c) {
+            if (text[c] == '#' || text[c] == '.')
+                continue;
+            const auto byte = static_cast<unsigned char>(text[c]);
+            char got[16];
+            if (byte >= 0x20 && byte < 0x7F)
+                std::snprintf(got, sizeof got, "'%c'", text[c]);
+            else
+                std::snprintf(got, sizeof got, "byte 0x%02X", byte);
+            raise(L, where, "rows[%d][%d]: expected '#' or '.', got %s (tile column %d, row %d)",
+                  static_cast<int>(i), static_cast<int>(c + 1), got, static_cast<int>(c),
+                  static_cast<int>(i - 1));
+        }
+        lua_pop(L, 1);
+    }
+}
+
+/// What newTileMap reads besides the rows: the scalar fields of TileMapDef, in a struct
+/// without a destructor (TileMapDef's vector of strings has one).
+struct MapSettings {
+    float x = 0.0f;
+    float y = 0.0f;
+    float tile = 0.0f;
+    float friction = 0.5f;
+    float bounce = 0.0f;
+    std::uint32_t category = 1;
+    std::uint32_t mask = 0xFFFFFFFF;
+    Vec2 oneWay{};
+    bool sensor = false;
+};
+
+int worldNewTileMap(lua_State* L) {
+    const char* where = "World:newTileMap";
+    WorldHandle& handle = checkWorldHandle(L, 1, where);
+    checkTable(L, 2, where, "def");
+    const Fields fields(L, 2, where);
+    static constexpr const char* kNames[] = {"x",        "y",      "tile",     "rows",
+                                             "friction", "bounce", "category", "mask",
+                                             "oneWay",   "sensor", nullptr};
+    fields.allowOnly(kNames);
+    MapSettings settings;
+    fields.number("x", settings.x);
+    fields.number("y", settings.y);
+    if (!fields.number("tile", settings.tile))
+        raise(L, where, "missing field \"tile\"");
+    if (!(settings.tile > 0.0f))
+        fields.fail("tile", "must be > 0");
+    fields.number("friction", settings.friction);
+    fields.number("bounce", settings.bounce);
+    fields.bits("category", settings.category);
+    fields.bits("mask", settings.mask);
+    fields.vec2("oneWay", settings.oneWay);
+    fields.boolean("sensor", settings.sensor);
+    fields.push("rows");
+    if (lua_isnil(L, -1))
+        raise(L, where, "missing field \"rows\"");
+    const int rows = lua_gettop(L);
+    checkRows(L, rows, where);
+    const std::size_t rowCount = rawLength(L, rows);
+    luaL_checkstack(L, 4, "jostle: World:newTileMap");
+
+    char message[kMessageSize];
+    bool bad = false;
+    TileMapId id;
+    const bool ran = attempt(message, [&] {
+        TileMapDef def;
+        def.x = settings.x;
+        def.y = settings.y;
+        def.tile = settings.tile;
+        def.friction = settings.friction;
+        def.bounce = settings.bounce;
+        def.category = settings.category;
+        def.mask = settings.mask;
+        def.oneWay = settings.oneWay;
+        def.sensor = settings.sensor;
+        def.rows.reserve(rowCount);
+        for (std::size_t i = 1; i <= rowCount; ++i) {
+            // Raw reads of strings checked above: these calls neither allocate nor raise.
+            rawGetInteger(L, rows, static_cast<std::int64_t>(i));
+            std::size_t length = 0;
+            const char* text = lua_tolstring(L, -1, &length);
+            def.rows.emplace_back(text, length);
+            lua_pop(L, 1);
+        }
+        if (auto problem = checkTileMapDef(def)) {
+            bad = true;
+            std::snprintf(message, kMessageSize, "%s: %s", problem->field.c_str(),
+                          problem->problem.c_str());
+            return;
+        }
+        id = createTileMap(handle.data->world, def);
+    });
+    if (!ran || bad)
+        raise(L, where, "%s", message);
+    pushUserValue(L, 1);
+    pushTileMap(L, -1, &handle, id);
+    return 1;
+}
+
+// --- Methods ---------------------------------------------------------------------------
+
+int mapSetTile(lua_State* L) {
+    const char* where = "TileMap:setTile";
+    const TileMapHandle& map = checkMap(L, 1, where);
+    const auto column =
+        static_cast<int>(checkWhole(L, 2, where, "column", -kMaxCoordinate, kMaxCoordinate));
+    const auto row =
+        static_cast<int>(checkWhole(L, 3, where, "row", -kMaxCoordinate, kMaxCoordinate));
+    const bool solid = checkBoolean(L, 4, where, "solid");
+    guard(L, where, [&] { setTile(map.world->data->world, map.id, column, row, solid); });
+    return 0;
+}
+
+int mapIsSolid(lua_State* L) {
+    const char* where = "TileMap:isSolid";
+    const TileMapHandle& map = checkMap(L, 1, where);
+    const auto column =
+        static_cast<int>(checkWhole(L, 2, where, "column", -kMaxCoordinate, kMaxCoordinate));
+    const auto row =
+        static_cast<int>(checkWhole(L, 3, where, "row", -kMaxCoordinate, kMaxCoordinate));
+    bool solid = false;
+    guard(L, where, [&] { solid = isSolid(map.world->data->world, map.id, column, row); });
+    lua_pushboolean(L, solid);
+    return 1;
+}
+
+/// column, row of the tile that holds the point, or nil outside the map.
+int mapTileAt(lua_State* L) {
+    const char* where = "TileMap:tileAt";
+    const TileMapHandle& map = checkMap(L, 1, where);
+    const Vec2 point = checkVec2(L, 2, where, "x", "y");
+    bool inside = false;
+    TileCoord tile;
+    guard(L, where, [&] {
+        if (const auto found = tileAt(map.world->data->world, map.id, point)) {
+            inside = true;
+            tile = *found;
+        }
+    });
+    if (!inside) {
+        lua_pushnil(L);
+        return 1;
+    }
+    pushWhole(L, tile.column);
+    pushWhole(L, tile.row);
+    return 2;
+}
+
+/// columns, rows
+int mapGetSize(lua_State* L) {
+    const char* where = "TileMap:getSize";
+    const TileMapHandle& map = checkMap(L, 1, where);
+    int columns = 0;
+    int rows = 0;
+    guard(L, where, [&] {
+        columns = tileMapColumns(map.world->data->world, map.id);
+        rows = tileMapRows(map.world->data->world, map.id);
+    });
+    pushWhole(L, columns);
+    pushWhole(L, rows);
+    return 2;
+}
+
+/// The map as a definition table that world:newTileMap accepts, with its tiles as they
+/// are now.
+int mapGetDef(lua_State* L) {
+    const char* where = "TileMap:getDef";
+    const TileMapHandle& map = checkMap(L, 1, where);
+    MapSettings settings;
+    int rows = 0;
+    guard(L, where, [&] {
+        const World& world = map.world->data->world;
+        rows = tileMapRows(world, map.id);
+        const TileMapDef def = tileMapDef(world, map.id);
+        settings = {def.x,        def.y,    def.tile,   def.friction, def.bounce,
+                    def.category, def.mask, def.oneWay, def.sensor};
+    });
+    lua_createtable(L, 0, 10);
+    const struct {
+        const char* name;
+        float value;
+    } numbers[] = {{"x", settings.x},
+                   {"y", settings.y},
+                   {"tile", settings.tile},
+                   {"friction", settings.friction},
+                   {"bounce", settings.bounce}};
+    for (const auto& number : numbers) {
+        lua_pushnumber(L, static_cast<lua_Number>(number.value));
+        lua_setfield(L, -2, number.name);
+    }
+    pushWhole(L, settings.category);
+    lua_setfield(L, -2, "category");
+    pushWhole(L, settings.mask);
+    lua_setfield(L, -2, "mask");
+    lua_createtable(L, 2, 0);
+    lua_pushnumber(L, static_cast<lua_Number>(settings.oneWay.x));
+    lua_rawseti(L, -2, 1);
+    lua_pushnumber(L, static_cast<lua_Number>(settings.oneWay.y));
+    lua_rawseti(L, -2, 2);
+    lua_setfield(L, -2, "oneWay");
+    lua_pushboolean(L, settings.sensor);
+    lua_setfield(L, -2, "sensor");
+
+    // The rows, one string each, built with luaL_Buffer from isSolid: no C++ string
+    // lives while Lua allocates.
+    lua_createtable(L, rows, 0);
+    int columns = 0;
+    guard(L, where, [&] { columns = tileMapColumns(map.world->data->world, map.id); });
+    for (int row = 0; row < rows; ++row) {
+        luaL_Buffer buffer;
+        luaL_buffinit(L, &buffer);
+        for (int column = 0; column < columns; ++column) {
+            bool solid = false;
+            guard(L, where, [&] { solid = isSolid(map.world->data->world, map.id, column, row); });
+            luaL_addchar(&buffer, solid ? '#' : '.');
+        }
+        luaL_pushresult(&buffer);
+        lua_rawseti(L, -2, row + 1);
+    }
+    lua_setfield(L, -2, "rows");
+    return 1;
+}
+
+/// The static bodies the map is made of now, in creation order.
+int mapGetBodies(lua_State* L) {
+    const char* where = "TileMap:getBodies";
+    TileMapHandle& map = checkMap(L, 1, where);
+    WorldData& world = *map.world->data;
+    guard(L, where, [&] {
+        const auto bodies = tileMapBodies(world.world, map.id);
+        world.ids.assign(bodies.begin(), bodies.end());
+    });
+    pushUserValue(L, 1);
+    const int env = lua_gettop(L);
+    lua_createtable(L, static_cast<int>(world.ids.size()), 0);
+    for (std::size_t i = 0; map.world->data && i < map.world->data->ids.size(); ++i) {
+        pushBody(L, env, map.world, map.world->data->ids[i]);
+        rawSetInteger(L, -2, static_cast<std::int64_t>(i) + 1);
+    }
+    return 1;
+}
+
+int mapDestroy(lua_State* L) {
+    const char* where = "TileMap:destroy";
+    const TileMapHandle& map = checkMap(L, 1, where);
+    guard(L, where, [&] { destroyTileMap(map.world->data->world, map.id); });
+    return 0;
+}
+
+int mapIsDestroyed(lua_State* L) {
+    const auto* map = static_cast<TileMapHandle*>(luaL_testudata(L, 1, kTileMapType));
+    if (!map)
+        raise(L, "TileMap:isDestroyed", "expected a TileMap as self (call it with a colon), got %s",
+              typeName(L, 1));
+    lua_pushboolean(L, !map->world->data || !isValid(map->world->data->world, map->id));
+    return 1;
+}
+
+int mapGetWorld(lua_State* L) {
+    if (!luaL_testudata(L, 1, kTileMapType))
+        raise(L, "TileMap:getWorld", "expected a TileMap as self (call it with a colon), got %s",
+              typeName(L, 1));
+    pushUserValue(L, 1);
+    lua_rawgeti(L, -1, kSlotWorld);
+    return 1;
+}
+
+int mapToString(lua_State* L) {
+    const auto* map = static_cast<const TileMapHandle*>(lua_touserdata(L, 1));
+    const bool live = map->world->data && isValid(map->world->data->world, map->id);
+    char text[64];
+    std::snprintf(text, sizeof text, "jostle.TileMap %u#%u%s", map->id.index, map->id.generation,
+                  live ? "" : " (destroyed)");
+    lua_pushstring(L, text);
+    return 1;
+}
+
+constexpr luaL_Reg kMapMethods[] = {
+    {"setTile", mapSetTile}, {"isSolid", mapIsSolid},         {"tileAt", mapTileAt},
+    {"getSize", mapGetSize}, {"getDef", mapGetDef},           {"getBodies", mapGetBodies},
+    {"destroy", mapDestroy}, {"isDestroyed", mapIsDestroyed}, {"getWorld", mapGetWorld},
+    {nullptr, nullptr},
+};
+
+constexpr luaL_Reg kWorldMapMethods[] = {
+    {"newTileMap", worldNewTileMap},
+    {nullptr, nullptr},
+};
+
+} // namespace
+
+void pushTileMap(lua_State* L, int env, WorldHandle* world, TileMapId id) {
+    pushHandle<TileMapHandle>(L, env, kSlotMaps, kTileMapType, world, id);
+}
+
+void registerTileMapMethods(lua_State* L, int worldMethods) {
+    lua_pushvalue(L, worldMethods);
+    luaL_setfuncs(L, kWorldMapMethods, 0);
+    lua_pop(L, 1);
+}
+
+void openTileMap(lua_State* L) {
+    luaL_newmetatable(L, kTileMapType);
+    lua_createtable(L, 0, 10);
+    luaL_setfuncs(L, kMapMethods, 0);
+    lua_setfield(L, -2, "__index");
+    lua_pushcfunction(L, mapToString);
+    lua_setfield(L, -2, "__tostring");
+    lua_pushliteral(L, "jostle.TileMap");
+    lua_setfield(L, -2, "__name");
+    lua_pop(L, 1);
+}
+
+} // namespace jostle::lua

@@ -1,0 +1,419 @@
+// jostle.newWorld and the World's own methods: settings, bodies, stepping, destroy.
+#include "binding.hpp"
+
+#include <cmath>
+
+namespace jostle::lua {
+
+namespace {
+
+constexpr const char* kSolverNames[] = {"classic", "physical", nullptr};
+constexpr const char* kFrictionMixNames[] = {"min", "geometricMean", nullptr};
+
+Solver solverOf(int option) {
+    return option == 0 ? Solver::Classic : Solver::Physical;
+}
+const char* solverName(Solver solver) {
+    return solver == Solver::Classic ? "classic" : "physical";
+}
+
+void readClassic(const Fields& fields, ClassicOptions& options) {
+    static constexpr const char* kNames[] = {"mass", "coulomb", "ccd", nullptr};
+    fields.allowOnly(kNames);
+    fields.boolean("mass", options.mass);
+    fields.boolean("coulomb", options.coulomb);
+    fields.boolean("ccd", options.ccd);
+}
+
+void readPhysical(const Fields& fields, PhysicalOptions& options) {
+    static constexpr const char* kNames[] = {
+        "velocityIterations",   "positionIterations", "slop", "correction",
+        "restitutionThreshold", "frictionMix",        nullptr};
+    fields.allowOnly(kNames);
+    fields.whole("velocityIterations", options.velocityIterations, 1, 1000);
+    fields.whole("positionIterations", options.positionIterations, 0, 1000);
+    fields.number("slop", options.slop);
+    fields.number("correction", options.correction);
+    fields.number("restitutionThreshold", options.restitutionThreshold);
+    int mix = 0;
+    if (fields.option("frictionMix", mix, kFrictionMixNames))
+        options.frictionMix = mix == 0 ? FrictionMix::Min : FrictionMix::GeometricMean;
+}
+
+/// Reads the nested table `name` of `fields`, if present, with `read`.
+template <class Options, class Read>
+void readNested(lua_State* L, const Fields& fields, const char* where, const char* name,
+                const char* prefix, Options& options, Read read) {
+    fields.push(name);
+    if (!lua_isnil(L, -1)) {
+        if (lua_type(L, -1) != LUA_TTABLE)
+            raise(L, where, "%s: expected a table, got %s", name, typeName(L, -1));
+        read(Fields(L, -1, where, prefix), options);
+    }
+    lua_pop(L, 1);
+}
+
+/// The WorldDef described by the table at `index` (absent: the defaults).
+WorldDef readWorldDef(lua_State* L, int index, const char* where) {
+    WorldDef def;
+    if (lua_isnoneornil(L, index))
+        return def;
+    checkTable(L, index, where, "def");
+    const Fields fields(L, index, where);
+    static constexpr const char* kNames[] = {"gravity",  "maxVelocity", "solver", "classic",
+                                             "physical", "sleeping",    nullptr};
+    fields.allowOnly(kNames);
+    fields.vec2("gravity", def.gravity);
+    if (fields.numberOrInfinity("maxVelocity", def.maxVelocity) && !(def.maxVelocity > 0.0f))
+        fields.fail("maxVelocity", "must be > 0");
+    int solver = 0;
+    if (fields.option("solver", solver, kSolverNames))
+        def.solver = solverOf(solver);
+    readNested(L, fields, where, "classic", "classic.", def.classic, readClassic);
+    readNested(L, fields, where, "physical", "physical.", def.physical, readPhysical);
+    fields.boolean("sleeping", def.sleeping);
+    return def;
+}
+
+/// Raises the first problem checkWorldDef finds, named as a field of the Lua table.
+void requireValidWorldDef(lua_State* L, const WorldDef& def, const char* where) {
+    char message[kMessageSize];
+    bool bad = false;
+    const bool ran = attempt(message, [&] {
+        if (auto problem = checkWorldDef(def)) {
+            bad = true;
+            std::snprintf(message, kMessageSize, "%s: %s", problem->field.c_str(),
+                          problem->problem.c_str());
+        }
+    });
+    if (!ran || bad)
+        raise(L, where, "%s", message);
+}
+
+void pushClassicOptions(lua_State* L, const ClassicOptions& options) {
+    lua_createtable(L, 0, 3);
+    lua_pushboolean(L, options.mass);
+    lua_setfield(L, -2, "mass");
+    lua_pushboolean(L, options.coulomb);
+    lua_setfield(L, -2, "coulomb");
+    lua_pushboolean(L, options.ccd);
+    lua_setfield(L, -2, "ccd");
+}
+
+void pushPhysicalOptions(lua_State* L, const PhysicalOptions& options) {
+    lua_createtable(L, 0, 6);
+    pushWhole(L, options.velocityIterations);
+    lua_setfield(L, -2, "velocityIterations");
+    pushWhole(L, options.positionIterations);
+    lua_setfield(L, -2, "positionIterations");
+    lua_pushnumber(L, static_cast<lua_Number>(options.slop));
+    lua_setfield(L, -2, "slop");
+    lua_pushnumber(L, static_cast<lua_Number>(options.correction));
+    lua_setfield(L, -2, "correction");
+    lua_pushnumber(L, static_cast<lua_Number>(options.restitutionThreshold));
+    lua_setfield(L, -2, "restitutionThreshold");
+    lua_pushstring(L, kFrictionMixNames[options.frictionMix == FrictionMix::Min ? 0 : 1]);
+    lua_setfield(L, -2, "frictionMix");
+}
+
+// --- Methods -----------------------------------------------------------------------------
+
+int worldStep(lua_State* L) {
+    const char* where = "World:step";
+    checkWorld(L, 1, where);
+    const float dt = checkNumber(L, 2, where, "dt");
+    if (!(dt > 0.0f))
+        raise(L, where, "dt: must be > 0");
+    stepWorld(L, 1, dt, where);
+    return 0;
+}
+
+int worldGetBodies(lua_State* L) {
+    const char* where = "World:getBodies";
+    WorldHandle& handle = checkWorldHandle(L, 1, where);
+    WorldData& world = *handle.data;
+    guard(L, where, [&] {
+        const auto bodies = world.world.bodies();
+        world.ids.assign(bodies.begin(), bodies.end());
+    });
+    pushUserValue(L, 1);
+    const int env = lua_gettop(L);
+    lua_createtable(L, static_cast<int>(world.ids.size()), 0);
+    // Index by index, checking the size each time: creating userdata may run a
+    // finalizer, and a finalizer is Lua code that might query this very world.
+    for (std::size_t i = 0; handle.data && i < handle.data->ids.size(); ++i) {
+        pushBody(L, env, &handle, handle.data->ids[i]);
+        rawSetInteger(L, -2, static_cast<std::int64_t>(i) + 1);
+    }
+    return 1;
+}
+
+int worldGetBodyCount(lua_State* L) {
+    const WorldData& world = checkWorld(L, 1, "World:getBodyCount");
+    pushWhole(L, static_cast<std::int64_t>(world.world.bodyCount()));
+    return 1;
+}
+
+int worldGetGravity(lua_State* L) {
+    const Vec2 g = checkWorld(L, 1, "World:getGravity").world.gravity();
+    lua_pushnumber(L, static_cast<lua_Number>(g.x));
+    lua_pushnumber(L, static_cast<lua_Number>(g.y));
+    return 2;
+}
+
+int worldSetGravity(lua_State* L) {
+    const char* where = "World:setGravity";
+    WorldData& world = checkWorld(L, 1, where);
+    const Vec2 g = checkVec2(L, 2, where, "x", "y");
+    guard(L, where, [&] { world.world.setGravity(g); });
+    return 0;
+}
+
+int worldGetMaxVelocity(lua_State* L) {
+    lua_pushnumber(
+        L, static_cast<lua_Number>(checkWorld(L, 1, "World:getMaxVelocity").world.maxVelocity()));
+    return 1;
+}
+
+int worldSetMaxVelocity(lua_State* L) {
+    const char* where = "World:setMaxVelocity";
+    WorldData& world = checkWorld(L, 1, where);
+    const float maxVelocity = checkNumberOrInfinity(L, 2, where, "maxVelocity");
+    if (!(maxVelocity > 0.0f))
+        raise(L, where, "maxVelocity: must be > 0 (math.huge for no clamp)");
+    guard(L, where, [&] { world.world.setMaxVelocity(maxVelocity); });
+    return 0;
+}
+
+int worldGetSolver(lua_State* L) {
+    lua_pushstring(L, solverName(checkWorld(L, 1, "World:getSolver").world.solver()));
+    return 1;
+}
+
+int worldSetSolver(lua_State* L) {
+    const char* where = "World:setSolver";
+    WorldData& world = checkWorld(L, 1, where);
+    const Solver solver = solverOf(checkOption(L, 2, where, "solver", kSolverNames));
+    guard(L, where, [&] { world.world.setSolver(solver); });
+    return 0;
+}
+
+int worldGetSleeping(lua_State* L) {
+    lua_pushboolean(L, checkWorld(L, 1, "World:getSleeping").world.sleeping());
+    return 1;
+}
+
+int worldSetSleeping(lua_State* L) {
+    const char* where = "World:setSleeping";
+    WorldData& world = checkWorld(L, 1, where);
+    const bool enabled = checkBoolean(L, 2, where, "enabled");
+    guard(L, where, [&] { world.world.setSleeping(enabled); });
+    return 0;
+}
+
+int worldGetClassicOptions(lua_State* L) {
+    pushClassicOptions(L, checkWorld(L, 1, "World:getClassicOptions").world.classicOptions());
+    return 1;
+}
+
+/// Fields left out keep their current values.
+int worldSetClassicOptions(lua_State* L) {
+    const char* where = "World:setClassicOptions";
+    WorldData& world = checkWorld(L, 1, where);
+    checkTable(L, 2, where, "options");
+    ClassicOptions options = world.world.classicOptions();
+    readClassic(Fields(L, 2, where), options);
+    guard(L, where, [&] { world.world.setClassicOptions(options); });
+    return 0;
+}
+
+int worldGetPhysicalOptions(lua_State* L) {
+    pushPhysicalOptions(L, checkWorld(L, 1, "World:getPhysicalOptions").world.physicalOptions());
+    return 1;
+}
+
+int worldSetPhysicalOptions(lua_State* L) {
+    const char* where = "World:setPhysicalOptions";
+    WorldData& world = checkWorld(L, 1, where);
+    checkTable(L, 2, where, "options");
+    PhysicalOptions options = world.world.physicalOptions();
+    readPhysical(Fields(L, 2, where), options);
+    guard(L, where, [&] { world.world.setPhysicalOptions(options); });
+    return 0;
+}
+
+/// Frees the world at once instead of when it is collected. Its bodies and maps stay
+/// valid Lua values whose methods raise "the body's world was destroyed".
+int worldDestroy(lua_State* L) {
+    const char* where = "World:destroy";
+    WorldHandle* handle = static_cast<WorldHandle*>(luaL_testudata(L, 1, kWorldType));
+    if (!handle)
+        raise(L, where, "expected a World as self (call it with a colon), got %s", typeName(L, 1));
+    if (!handle->data)
+        return 0; // twice is harmless, as for a file
+    if (handle->data->stepping)
+        raise(L, where, "called from a callback during step()");
+    delete handle->data;
+    handle->data = nullptr;
+    // Let go of the Lua values the world held for its bodies.
+    pushUserValue(L, 1);
+    for (int slot : {kSlotUserData, kSlotUserDataGen, kSlotPreSolve}) {
+        lua_pushnil(L);
+        lua_rawseti(L, -2, slot);
+    }
+    return 0;
+}
+
+int worldIsDestroyed(lua_State* L) {
+    const auto* handle = static_cast<WorldHandle*>(luaL_testudata(L, 1, kWorldType));
+    if (!handle)
+        raise(L, "World:isDestroyed", "expected a World as self (call it with a colon), got %s",
+              typeName(L, 1));
+    lua_pushboolean(L, handle->data == nullptr);
+    return 1;
+}
+
+int worldGc(lua_State* L) {
+    auto* handle = static_cast<WorldHandle*>(lua_touserdata(L, 1));
+    if (handle && handle->data) {
+        delete handle->data;
+        handle->data = nullptr;
+    }
+    return 0;
+}
+
+int worldToString(lua_State* L) {
+    const auto* handle = static_cast<const WorldHandle*>(lua_touserdata(L, 1));
+    if (!handle->data)
+        lua_pushfstring(L, "jostle.World (destroyed): %p", lua_topointer(L, 1));
+    else
+        lua_pushfstring(L, "jostle.World (%d bodies): %p",
+                        static_cast<int>(handle->data->world.bodyCount()), lua_topointer(L, 1));
+    return 1;
+}
+
+constexpr luaL_Reg kWorldMethods[] = {
+    {"step", worldStep},
+    {"getBodies", worldGetBodies},
+    {"getBodyCount", worldGetBodyCount},
+    {"getGravity", worldGetGravity},
+    {"setGravity", worldSetGravity},
+    {"getMaxVelocity", worldGetMaxVelocity},
+    {"setMaxVelocity", worldSetMaxVelocity},
+    {"getSolver", worldGetSolver},
+    {"setSolver", worldSetSolver},
+    {"getSleeping", worldGetSleeping},
+    {"setSleeping", worldSetSleeping},
+    {"getClassicOptions", worldGetClassicOptions},
+    {"setClassicOptions", worldSetClassicOptions},
+    {"getPhysicalOptions", worldGetPhysicalOptions},
+    {"setPhysicalOptions", worldSetPhysicalOptions},
+    {"destroy", worldDestroy},
+    {"isDestroyed", worldIsDestroyed},
+    {nullptr, nullptr},
+};
+
+} // namespace
+
+WorldHandle& checkWorldHandle(lua_State* L, int index, const char* where) {
+    auto* handle = static_cast<WorldHandle*>(luaL_testudata(L, index, kWorldType));
+    if (!handle)
+        raise(L, where, "expected a World as self (call it with a colon: world:method()), got %s",
+              typeName(L, index));
+    if (!handle->data)
+        raise(L, where, "the world was destroyed");
+    return *handle;
+}
+
+WorldData& checkWorld(lua_State* L, int index, const char* where) {
+    return *checkWorldHandle(L, index, where).data;
+}
+
+void stepWorld(lua_State* L, int index, float dt, const char* where) {
+    index = absIndex(L, index);
+    WorldData& world = checkWorld(L, index, where);
+    if (world.stepping)
+        raise(L, where, "called from a callback during step()");
+    const int top = lua_gettop(L);
+    preparePreSolve(L, index, world);
+
+    world.stepping = true;
+    world.stepState = L;
+    char message[kMessageSize];
+    bool callbackFailed = false;
+    const bool stepped = attempt(message, [&] {
+        try {
+            world.world.step(dt);
+        } catch (const CallbackFailed&) {
+            callbackFailed = true;
+            throw;
+        }
+    });
+    world.stepping = false;
+    world.stepState = nullptr;
+
+    if (callbackFailed)
+        lua_error(L); // the callback's own error value, left on top by the trampoline
+    if (!stepped)
+        raise(L, where, "%s", message);
+    lua_settop(L, top);
+}
+
+int newWorld(lua_State* L) {
+    const char* where = "jostle.newWorld";
+    const WorldDef def = readWorldDef(L, 1, where);
+    requireValidWorldDef(L, def, where);
+
+    // The userdata first, empty: if anything below fails, the collector frees it.
+    auto* handle = static_cast<WorldHandle*>(newUserdata(L, sizeof(WorldHandle)));
+    handle->data = nullptr;
+    luaL_getmetatable(L, kWorldType);
+    lua_setmetatable(L, -2);
+    const int self = lua_gettop(L);
+
+    lua_createtable(L, kSlotCount, 0);
+    lua_pushvalue(L, self);
+    lua_rawseti(L, -2, kSlotWorld);
+    for (int slot : {kSlotBodies, kSlotMaps}) {
+        lua_newtable(L);
+        luaL_getmetatable(L, "jostle.weakValues");
+        lua_setmetatable(L, -2);
+        lua_rawseti(L, -2, slot);
+    }
+    lua_newtable(L);
+    lua_rawseti(L, -2, kSlotUserData);
+    lua_newtable(L);
+    lua_rawseti(L, -2, kSlotUserDataGen);
+    setUserValue(L, self);
+
+    WorldData* data = nullptr;
+    guard(L, where, [&] { data = new WorldData(def); });
+    handle->data = data;
+    return 1;
+}
+
+void openWorld(lua_State* L) {
+    luaL_newmetatable(L, "jostle.weakValues");
+    lua_pushliteral(L, "v");
+    lua_setfield(L, -2, "__mode");
+    lua_pop(L, 1);
+
+    luaL_newmetatable(L, kWorldType);
+    lua_createtable(L, 0, 64);
+    luaL_setfuncs(L, kWorldMethods, 0);
+    const int methods = lua_gettop(L);
+    registerBodyMethods(L, methods);
+    registerEventMethods(L, methods);
+    registerQueryMethods(L, methods);
+    registerTileMapMethods(L, methods);
+    lua_setfield(L, -2, "__index");
+    lua_pushcfunction(L, worldGc);
+    lua_setfield(L, -2, "__gc");
+    lua_pushcfunction(L, worldToString);
+    lua_setfield(L, -2, "__tostring");
+    lua_pushliteral(L, "jostle.World");
+    lua_setfield(L, -2, "__name");
+    lua_pop(L, 1);
+}
+
+} // namespace jostle::lua
