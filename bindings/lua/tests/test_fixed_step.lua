@@ -1,0 +1,72 @@
+-- The fixed-step helper: steps from frame times, the cap, alpha, and update.
+local jostle = require("jostle")
+local t = require("helper")
+
+local tests = {}
+local function test(name, fn) tests[#tests + 1] = {name, fn} end
+
+test("three frames of 1/180 s are one step of 1/60 s", function()
+  local clock = jostle.newFixedStep(1 / 60)
+  t.equal(clock:advance(1 / 180), 0, "frame 1")
+  t.equal(clock:advance(1 / 180), 0, "frame 2")
+  t.equal(clock:advance(1 / 180), 1, "frame 3")
+  t.near(clock:getDt(), 1 / 60, 1e-9, "dt")
+  t.equal(clock:getMaxStepsPerFrame(), 8, "the default cap")
+end)
+
+test("alpha: how far the left-over time reaches towards the next step", function()
+  local clock = jostle.newFixedStep(1 / 60)
+  t.equal(clock:advance(1 / 120), 0, "half a step")
+  t.near(clock:getAlpha(), 0.5, 1e-6, "alpha")
+  t.equal(clock:advance(1 / 120), 1, "the other half")
+  t.near(clock:getAlpha(), 0, 1e-3, "alpha after the step")
+  clock:advance(1 / 120)
+  clock:reset()
+  t.equal(clock:getAlpha(), 0, "reset forgets the time left over")
+end)
+
+test("the cap: a long frame takes at most maxStepsPerFrame steps", function()
+  local clock = jostle.newFixedStep(1 / 60, 4)
+  t.equal(clock:advance(1), 4, "a one-second frame")
+  -- 60 steps were due: the 56 beyond the cap are dropped.
+  t.near(clock:getDroppedSeconds(), 56 / 60, 1e-6, "dropped")
+  t.equal(clock:advance(1 / 60), 1, "back to normal")
+  t.equal(clock:getDroppedSeconds(), 0, "nothing dropped")
+end)
+
+test("update steps the world exactly as stepping it by hand does", function()
+  local function newWorld()
+    local world = jostle.newWorld({gravity = {0, 800}})
+    world:newBody({type = "static", x = 0, y = 300, hw = 400, hh = 10})
+    return world, world:newBody({x = 0, y = 0, hw = 10, hh = 10, vx = 30})
+  end
+  local a, boxA = newWorld()
+  local b, boxB = newWorld()
+  local clock = jostle.newFixedStep(1 / 60)
+  local total = 0
+  -- Uneven frames, 0.08 s every five, 125 of them: 2 s, 120 steps in all.
+  local frames = {0.01, 0.02, 0.005, 0.03, 0.015}
+  for i = 1, 125 do
+    total = total + clock:update(a, frames[(i - 1) % #frames + 1])
+  end
+  t.equal(total, 120, "steps taken")
+  for _ = 1, total do b:step(1 / 60) end
+  local ax, ay = boxA:getPosition()
+  local bx, by = boxB:getPosition()
+  t.equal(ax, bx, "x, bit for bit")
+  t.equal(ay, by, "y, bit for bit")
+end)
+
+test("an error in a step stops update and comes out of it", function()
+  local world = jostle.newWorld({gravity = {0, 800}})
+  world:newBody({type = "static", x = 0, y = 300, hw = 400, hh = 10})
+  world:newBody({x = 0, y = 280, hw = 10, hh = 10})
+  world:setPreSolve(function() error("callback failed") end)
+  local clock = jostle.newFixedStep(1 / 60)
+  t.raises({"callback failed"}, clock.update, clock, world, 0.1)
+  world:setPreSolve(nil)
+  t.equal(clock:update(world, 1 / 60), 1, "works again")
+  t.truthy(tostring(clock):find("jostle.FixedStep", 1, true), "tostring")
+end)
+
+return t.run(tests)
