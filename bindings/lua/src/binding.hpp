@@ -40,7 +40,8 @@ enum Slot : int {
     kSlotUserData = 4,    ///< body storage slot -> the value of body:setUserData
     kSlotUserDataGen = 5, ///< body storage slot -> the generation that value belongs to
     kSlotPreSolve = 6,    ///< the pre-solve function, or nil
-    kSlotCount = 6,
+    kSlotRetired = 7,     ///< "b<slot>:<generation>" -> an older Body userdata (weak values)
+    kSlotCount = 7,
 };
 
 /// The module's state for one world, on the C++ heap.
@@ -130,33 +131,67 @@ void openFixedStep(lua_State* L);
 
 // --- Shared helpers ----------------------------------------------------------------------
 
-/// Pushes the userdata of `Handle` type (BodyHandle, TileMapHandle) for `id`, from the
-/// weak cache at `cacheSlot` of the user value table at `env`, or a new one (stored in
-/// the cache). Nil for the null handle. A cached userdata of a stale handle whose slot
-/// was reused is replaced: the new body gets its own userdata.
+/// Pushes the key under which the userdata of (slot, generation) is kept once retired
+/// (see pushHandle): a string, "b12:3" for a body; `tag` tells bodies and maps apart.
+void pushRetiredKey(lua_State* L, char tag, std::uint32_t slot, std::uint32_t generation);
+
+/// Pushes the userdata of `Handle` type (BodyHandle, TileMapHandle) for `id`, or nil for
+/// the null handle. The same handle always gives the same userdata while Lua holds it:
+/// - The cache at `cacheSlot` of the user value table at `env` holds, by storage slot,
+///   the userdata of the live body in that slot (weak values: Lua may collect it).
+/// - A userdata pushed out of it by a newer body in its slot is kept among the retired,
+///   by slot and generation, so that a contact-end event naming a destroyed body gives
+///   back the very userdata the game holds for it.
+/// `live` says whether `id` names a live body (or map); `tag` is 'b' or 'm'.
 template <class Handle, class Id>
-void pushHandle(lua_State* L, int env, int cacheSlot, const char* type, WorldHandle* world, Id id) {
+void pushHandle(lua_State* L, int env, int cacheSlot, char tag, const char* type,
+                WorldHandle* world, Id id, bool live) {
     if (id.isNull()) {
         lua_pushnil(L);
         return;
     }
     env = absIndex(L, env);
     lua_rawgeti(L, env, cacheSlot);
-    rawGetInteger(L, -1, id.index);
-    if (const auto* cached = static_cast<const Handle*>(lua_touserdata(L, -1));
-        cached && cached->id == id) {
-        lua_remove(L, -2); // the cache
+    const int cache = lua_gettop(L);
+    rawGetInteger(L, cache, id.index);
+    const auto* cached = static_cast<const Handle*>(lua_touserdata(L, -1));
+    if (cached && cached->id == id) {
+        lua_remove(L, cache);
+        return;
+    }
+    // Not the slot's current userdata: perhaps a retired one.
+    lua_rawgeti(L, env, kSlotRetired);
+    const int retired = lua_gettop(L);
+    pushRetiredKey(L, tag, id.index, id.generation);
+    lua_rawget(L, retired);
+    if (!lua_isnil(L, -1)) {
+        lua_replace(L, cache);
+        lua_settop(L, cache);
         return;
     }
     lua_pop(L, 1);
+
     new (newUserdata(L, sizeof(Handle))) Handle{world, id};
+    const int created = lua_gettop(L);
     luaL_getmetatable(L, type);
-    lua_setmetatable(L, -2);
+    lua_setmetatable(L, created);
     lua_pushvalue(L, env);
-    setUserValue(L, -2);
-    lua_pushvalue(L, -1);
-    rawSetInteger(L, -3, id.index);
-    lua_remove(L, -2); // the cache
+    setUserValue(L, created);
+    if (live || !cached) {
+        if (cached) { // an older body of this slot makes way
+            pushRetiredKey(L, tag, cached->id.index, cached->id.generation);
+            lua_pushvalue(L, cache + 1);
+            lua_rawset(L, retired);
+        }
+        lua_pushvalue(L, created);
+        rawSetInteger(L, cache, id.index);
+    } else { // a destroyed body named by an event, while a newer one holds the slot
+        pushRetiredKey(L, tag, id.index, id.generation);
+        lua_pushvalue(L, created);
+        lua_rawset(L, retired);
+    }
+    lua_replace(L, cache);
+    lua_settop(L, cache);
 }
 
 } // namespace jostle::lua

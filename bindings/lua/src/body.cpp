@@ -557,7 +557,8 @@ constexpr luaL_Reg kWorldBodyMethods[] = {
 } // namespace
 
 void pushBody(lua_State* L, int env, WorldHandle* world, BodyId id) {
-    pushHandle<BodyHandle>(L, env, kSlotBodies, kBodyType, world, id);
+    pushHandle<BodyHandle>(L, env, kSlotBodies, 'b', kBodyType, world, id,
+                           world->data->world.isValid(id));
 }
 
 BodyId checkBodyArgument(lua_State* L, int index, const WorldData& world, const char* where,

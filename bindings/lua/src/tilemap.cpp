@@ -342,7 +342,8 @@ constexpr luaL_Reg kWorldMapMethods[] = {
 } // namespace
 
 void pushTileMap(lua_State* L, int env, WorldHandle* world, TileMapId id) {
-    pushHandle<TileMapHandle>(L, env, kSlotMaps, kTileMapType, world, id);
+    pushHandle<TileMapHandle>(L, env, kSlotMaps, 'm', kTileMapType, world, id,
+                              isValid(world->data->world, id));
 }
 
 void registerTileMapMethods(lua_State* L, int worldMethods) {

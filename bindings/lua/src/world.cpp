@@ -2,6 +2,7 @@
 #include "binding.hpp"
 
 #include <cmath>
+#include <cstdio>
 
 namespace jostle::lua {
 
@@ -325,6 +326,12 @@ WorldHandle& checkWorldHandle(lua_State* L, int index, const char* where) {
     return *handle;
 }
 
+void pushRetiredKey(lua_State* L, char tag, std::uint32_t slot, std::uint32_t generation) {
+    char key[32];
+    std::snprintf(key, sizeof key, "%c%u:%u", tag, slot, generation);
+    lua_pushstring(L, key);
+}
+
 WorldData& checkWorld(lua_State* L, int index, const char* where) {
     return *checkWorldHandle(L, index, where).data;
 }
@@ -374,7 +381,7 @@ int newWorld(lua_State* L) {
     lua_createtable(L, kSlotCount, 0);
     lua_pushvalue(L, self);
     lua_rawseti(L, -2, kSlotWorld);
-    for (int slot : {kSlotBodies, kSlotMaps}) {
+    for (int slot : {kSlotBodies, kSlotMaps, kSlotRetired}) {
         lua_newtable(L);
         luaL_getmetatable(L, "jostle.weakValues");
         lua_setmetatable(L, -2);

@@ -68,6 +68,23 @@ test("destroying a body ends its contacts; the event holds the destroyed body", 
   t.equal(events.ends[1].b:isDestroyed(), true, "destroyed")
 end)
 
+test("a contact end names the destroyed body even after a new body took its slot", function()
+  local world, floor = level()
+  local box = world:newBody({x = 0, y = -5, hw = 5, hh = 5})
+  run(world, 10)
+  box:destroy()
+  -- Created before the step: it takes the destroyed body's storage slot.
+  local newcomer = world:newBody({x = 200, y = -5, hw = 5, hh = 5})
+  t.equal(select(1, newcomer:getId()), select(1, box:getId()), "the same slot")
+  local events = run(world, 1)
+  t.equal(#events.ends, 1, "end events")
+  t.truthy(events.ends[1].a == floor, "a: the floor")
+  t.truthy(rawequal(events.ends[1].b, box), "b: the very userdata of the destroyed box")
+  t.truthy(rawequal(world:getBodies()[2], newcomer), "the newcomer keeps its own userdata")
+  run(world, 1)
+  t.truthy(rawequal(world:getBodies()[2], newcomer), "still, after another step")
+end)
+
 test("touching flags: walls and ceiling relative to gravity", function()
   local world = level()
   -- Walls at x = +-20 (inner faces), a ceiling with its bottom face at y = -40.
