@@ -1,0 +1,687 @@
+// jostle/jostle.h: the C API of jostle (C99 or later; also compiles as C++).
+//
+//     jostle_world_def wdef = jostle_default_world_def();
+//     wdef.gravity.y = 800;                        // y grows downward, as on screen
+//     jostle_world* world = jostle_world_create(&wdef);
+//
+//     jostle_body_def floor = jostle_default_body_def();
+//     floor.type = JOSTLE_BODY_STATIC;
+//     floor.y = 300; floor.hw = 400; floor.hh = 10;
+//     jostle_body_create(world, &floor);
+//
+//     jostle_body_def crate = jostle_default_body_def();
+//     crate.hw = 10; crate.hh = 10; crate.bounce = 0.3f;
+//     jostle_body_id box = jostle_body_create(world, &crate);
+//
+//     for (int i = 0; i < 120; ++i) jostle_world_step(world, 1.0f / 60.0f);
+//     jostle_vec2 p = jostle_body_get_position(world, box);   // on the floor: y = 280
+//     jostle_world_destroy(world);
+//
+// This header is the C reference; docs/c-api.md is the guide. It wraps the C++ API
+// (world.hpp, body.hpp, query.hpp, tilemap.hpp, fixed_step.hpp), whose comments explain
+// the physics behind each function in more depth. Link with the jostle library and the
+// C++ standard library (in CMake: find_package(jostle), target_link_libraries(game
+// jostle::jostle), and enable CXX in the project so that CMake links with it).
+//
+// --- Conventions --------------------------------------------------------------------
+//
+// Names. The C++ names, in snake case, behind the prefix jostle_ and the thing they act
+// on: World::setGravity is jostle_world_set_gravity; World::position and setPosition of a
+// body are jostle_body_get_position and jostle_body_set_position (is_ stays: isBullet is
+// jostle_body_is_bullet); createTileMap is jostle_tile_map_create; queryPoint and rayCast
+// are jostle_query_point and jostle_ray_cast. Fields: BodyDef::gravityScale is
+// jostle_body_def.gravity_scale (scene files use the C++ member names, so a scene field
+// is the C field in camel case). Enum constants: BodyType::Kinematic is
+// JOSTLE_BODY_KINEMATIC.
+//
+// Definitions. A jostle_*_def struct describes a thing to create. Always start from the
+// value its jostle_default_*_def() function returns, then set the fields you need: the
+// defaults are not all zero (friction 0.5, density 1, mask all ones...), and the field
+// internal_cookie, set by that function, lets jostle catch a def that was not made by it
+// (a zeroed or uninitialised struct). The query filter, jostle_query_filter, is made the
+// same way, by jostle_default_query_filter().
+//
+// Handles. Worlds and fixed-step clocks are opaque pointers you create and destroy.
+// Bodies and tile maps are small value handles (jostle_body_id, jostle_tile_map_id) with
+// a generation count: a handle to a destroyed body is detected, never mistaken for a
+// newer body. The null handle is all zeros.
+//
+// Units and axes are yours (pixels are fine); y grows downward in the examples, but
+// only gravity decides what a "floor" is. Floats throughout. Same inputs give the same
+// results bit for bit.
+//
+// --- Misuse: the error contract -------------------------------------------------------
+//
+// Every function checks its arguments: a NULL pointer where one is required, a stale or
+// null handle, a NaN or infinite number, a size <= 0, a value out of its range, an
+// unknown enum value, a def not made by its jostle_default_*_def(), dt <= 0, a call that
+// is not allowed from inside a callback. Misuse never crashes and never throws. Instead
+// the function
+//
+//   1. does nothing: the world is left exactly as it was before the call;
+//   2. records a message for jostle_last_error(), naming the C function first, then what
+//      is wrong, e.g. "jostle_body_create: createBody: BodyDef.hw: must be > 0" (after
+//      the C function's name comes the C++ library's own message, which names C++
+//      functions and members: the same names in camel case);
+//   3. calls the error handler, if one is set (jostle_set_error_handler);
+//   4. returns a neutral value: false for functions that return bool, the null handle,
+//      NULL, a count of 0, and for getters zero (0, false, NULL, {0, 0}, the enum constant
+//      of value 0, a struct of all zeros); it writes nothing to output arguments except
+//      where a function says otherwise.
+//
+// So a function that returns bool returns true when it did what was asked. Functions
+// whose false or zero is also an ordinary answer (jostle_body_is_valid, the ray cast
+// that hits nothing, a query that finds nothing) say so; tell the two apart with
+// jostle_last_error() if you need to. Running out of memory is reported the same way
+// ("...: out of memory").
+//
+// What cannot be checked: a jostle_world* or jostle_fixed_step* that was destroyed or
+// never came from jostle (pass only live pointers), output buffers smaller than the
+// capacity you say they have, and calls on one world from several threads at once.
+//
+// --- Threads ----------------------------------------------------------------------------
+//
+// Different worlds may be used on different threads freely. One world is used by one
+// thread at a time, except that getters, event arrays and queries may run on several
+// threads at once while no thread changes the world. The last error is per thread; the
+// error handler is one for the whole process.
+#ifndef JOSTLE_JOSTLE_H
+#define JOSTLE_JOSTLE_H
+
+#include <stdbool.h>
+#include <stdint.h>
+
+#ifdef __cplusplus
+// In C++ every enum of this header is an int with any value: a bad value coming from C
+// is then an argument to report, not undefined behaviour.
+#define JOSTLE_ENUM_BASE_ : int
+extern "C" {
+#else
+#define JOSTLE_ENUM_BASE_
+#endif
+
+// === Errors ================================================================================
+
+/// The message of the last misuse on this thread, or "" if there was none since the
+/// thread started or since jostle_clear_error(). Never NULL. The text lives in a buffer
+/// of this thread, overwritten by the next misuse: copy it to keep it. Messages longer
+/// than 511 bytes are cut.
+const char* jostle_last_error(void);
+
+/// Forgets the last error of this thread: jostle_last_error() returns "" until the next
+/// misuse. Successful calls never clear it themselves, so a batch of calls can be checked
+/// once at its end.
+void jostle_clear_error(void);
+
+/// Called on every misuse, with the same message jostle_last_error() returns.
+typedef void (*jostle_error_fn)(const char* message, void* context);
+
+/// Installs `handler` for the whole process (NULL removes it); `context` is handed back
+/// to it. It is called on the thread of the misuse, after the message is recorded and
+/// before the misused function returns its neutral value: log the message, count it, or
+/// abort() to stop at the first mistake. It may call jostle functions (a misuse inside
+/// it is recorded but does not call it again). It must return, or end the process: it
+/// must not longjmp out, nor throw (a C++ exception thrown from it is swallowed).
+void jostle_set_error_handler(jostle_error_fn handler, void* context);
+
+// === Vectors and handles ===================================================================
+
+/// A position, a velocity, half extents or a normal.
+typedef struct jostle_vec2 {
+    float x;
+    float y;
+} jostle_vec2;
+
+/// A handle to a body of one world (mirrors jostle::BodyId). The null handle is {0, 0}:
+/// generation is 0 only there.
+typedef struct jostle_body_id {
+    uint32_t index;      ///< the storage slot
+    uint32_t generation; ///< how often the slot was reused; 0 only in the null handle
+} jostle_body_id;
+
+/// A handle to a tile map of one world (mirrors jostle::TileMapId), null = {0, 0}.
+typedef struct jostle_tile_map_id {
+    uint32_t index;
+    uint32_t generation;
+} jostle_tile_map_id;
+
+static inline bool jostle_body_id_is_null(jostle_body_id id) {
+    return id.generation == 0;
+}
+static inline bool jostle_body_id_equal(jostle_body_id a, jostle_body_id b) {
+    return a.index == b.index && a.generation == b.generation;
+}
+static inline bool jostle_tile_map_id_is_null(jostle_tile_map_id id) {
+    return id.generation == 0;
+}
+static inline bool jostle_tile_map_id_equal(jostle_tile_map_id a, jostle_tile_map_id b) {
+    return a.index == b.index && a.generation == b.generation;
+}
+
+// === Worlds ================================================================================
+
+/// A world: it owns its bodies and tile maps, and steps them. Opaque.
+typedef struct jostle_world jostle_world;
+
+/// How collisions are resolved (docs/physical-model.md compares the two).
+typedef enum jostle_solver JOSTLE_ENUM_BASE_ {
+    /// The tutorial to the letter: each dynamic body, in creation order, moves and is
+    /// pushed out of what it overlaps, one pair at a time.
+    JOSTLE_SOLVER_CLASSIC = 0,
+    /// All contacts solved together: stable stacks, mass, Coulomb friction (the default).
+    JOSTLE_SOLVER_PHYSICAL = 1,
+} jostle_solver;
+
+/// How the physical model combines the friction of a pair.
+typedef enum jostle_friction_mix JOSTLE_ENUM_BASE_ {
+    JOSTLE_FRICTION_MIX_MIN = 0,            ///< the smaller of the two (the default)
+    JOSTLE_FRICTION_MIX_GEOMETRIC_MEAN = 1, ///< sqrt(a * b)
+} jostle_friction_mix;
+
+/// Options of the classic model (jostle::ClassicOptions), all off by default.
+typedef struct jostle_classic_options {
+    bool mass;    ///< impulses shared by inverse mass, momentum conserved
+    bool coulomb; ///< friction takes away at most friction * the normal velocity change
+    bool ccd;     ///< dynamic bodies are swept and cannot tunnel through walls
+} jostle_classic_options;
+
+/// Settings of the physical model (jostle::PhysicalOptions; docs/physical-model.md).
+typedef struct jostle_physical_options {
+    int velocity_iterations;     ///< in [1, 1000], default 4
+    int position_iterations;     ///< in [0, 1000], default 3
+    float slop;                  ///< in [0, 0.5], default 0.01 (a fraction of half extents)
+    float correction;            ///< in (0, 1], default 0.2
+    float restitution_threshold; ///< finite, >= 0; 0 (the default): 2 |gravity| dt
+    jostle_friction_mix friction_mix;
+} jostle_physical_options;
+
+/// Everything that describes a world (jostle::WorldDef). Start from
+/// jostle_default_world_def().
+typedef struct jostle_world_def {
+    jostle_vec2 gravity; ///< default {0, 0}; scaled by each body's gravity_scale
+    /// The largest speed of a dynamic body, > 0; INFINITY (the default): no clamp.
+    float max_velocity;
+    jostle_solver solver; ///< default JOSTLE_SOLVER_PHYSICAL
+    jostle_classic_options classic;
+    jostle_physical_options physical;
+    /// Bodies at rest fall asleep and cost next to nothing (physical model, default on).
+    bool sleeping;
+    /// Set by jostle_default_world_def(); leave it alone.
+    uint32_t internal_cookie;
+} jostle_world_def;
+
+/// The defaults: no gravity, no velocity clamp, the physical model, sleeping on.
+jostle_world_def jostle_default_world_def(void);
+
+/// A new, empty world, or NULL on misuse (def NULL, not made by jostle_default_world_def,
+/// or a field out of range: "jostle_world_create: World: WorldDef.maxVelocity: must be
+/// > 0").
+jostle_world* jostle_world_create(const jostle_world_def* def);
+
+/// Frees the world with all its bodies and tile maps; every handle to them, and every
+/// pointer the world handed out (event arrays), is dead from now on. NULL does nothing
+/// and is not an error (as with free). Refused from inside a callback of this world.
+bool jostle_world_destroy(jostle_world* world);
+
+/// Advances the world by dt seconds: dt finite and > 0. Refused from inside a callback
+/// of this world ("jostle_world_step: called from a callback during jostle_world_step").
+/// Events of the step are then read with jostle_world_contact_begins() and the like.
+bool jostle_world_step(jostle_world* world, float dt);
+
+jostle_vec2 jostle_world_get_gravity(const jostle_world* world);
+/// Finite numbers. Wakes every body.
+bool jostle_world_set_gravity(jostle_world* world, jostle_vec2 gravity);
+
+float jostle_world_get_max_velocity(const jostle_world* world);
+/// > 0; INFINITY for no clamp.
+bool jostle_world_set_max_velocity(jostle_world* world, float max_velocity);
+
+jostle_solver jostle_world_get_solver(const jostle_world* world);
+/// Forgets the contacts and events of the last step and wakes every body.
+bool jostle_world_set_solver(jostle_world* world, jostle_solver solver);
+
+bool jostle_world_get_sleeping(const jostle_world* world);
+/// Turning sleeping off wakes every body.
+bool jostle_world_set_sleeping(jostle_world* world, bool enabled);
+
+jostle_classic_options jostle_world_get_classic_options(const jostle_world* world);
+bool jostle_world_set_classic_options(jostle_world* world, jostle_classic_options options);
+
+jostle_physical_options jostle_world_get_physical_options(const jostle_world* world);
+/// Every option in its range (see jostle_physical_options), else nothing changes.
+bool jostle_world_set_physical_options(jostle_world* world, jostle_physical_options options);
+
+/// The number of live bodies, tile maps' bodies included.
+int jostle_world_body_count(const jostle_world* world);
+
+/// Copies the live bodies, in creation order, into out[0 .. capacity) and returns how
+/// many there are, which may be more than capacity: call again with a bigger buffer.
+/// out may be NULL when capacity is 0 (to ask for the count). capacity < 0 is misuse.
+int jostle_world_bodies(const jostle_world* world, jostle_body_id* out, int capacity);
+
+// === Bodies ================================================================================
+
+/// How a body moves.
+typedef enum jostle_body_type JOSTLE_ENUM_BASE_ {
+    JOSTLE_BODY_STATIC = 0,    ///< never moves: floors, walls; infinitely heavy
+    JOSTLE_BODY_KINEMATIC = 1, ///< moves by its own velocity, pushes what is in its way
+    JOSTLE_BODY_DYNAMIC = 2,   ///< moved by gravity, velocity and collisions (the default)
+} jostle_body_type;
+
+/// Everything that describes a body (jostle::BodyDef; body.hpp explains each field).
+/// Start from jostle_default_body_def(); hw and hh must be set.
+typedef struct jostle_body_def {
+    jostle_body_type type; ///< default JOSTLE_BODY_DYNAMIC
+    float x, y;            ///< centre
+    float hw, hh;          ///< half width and half height, > 0 (default 0: set them)
+    float vx, vy;          ///< velocity, units per second; 0 for a static body
+    float bounce;          ///< in [0, 1], default 0; a pair bounces with the larger
+    float friction;        ///< in [0, 1], default 0.5; a pair rubs with the smaller
+    float mass;            ///< > 0 to set it; 0 (the default): density * area
+    float density;         ///< > 0, default 1; area is 4 * hw * hh
+    float gravity_scale;   ///< default 1; 0 floats, -1 falls up
+    float damping;         ///< >= 0, default 0: velocity /= 1 + damping * dt each step
+    bool bullet;           ///< also swept against dynamic bodies
+    /// A one-way platform: the outward normal of its one blocking face ({0, -1}: its top
+    /// in a y-down world). {0, 0} (the default): solid on every side.
+    jostle_vec2 one_way;
+    uint32_t category; ///< the filter categories it belongs to, default 1
+    uint32_t mask;     ///< the categories it collides with, default 0xFFFFFFFF
+    bool sensor;       ///< detects overlaps, never pushes nor is pushed
+    void* user_data;   ///< yours: stored and given back, default NULL
+    /// Set by jostle_default_body_def() (and jostle_body_get_def); leave it alone.
+    uint32_t internal_cookie;
+} jostle_body_def;
+
+/// The defaults: a dynamic body at {0, 0} of size 0 (set hw and hh), friction 0.5,
+/// density 1, gravity scale 1, category 1, mask 0xFFFFFFFF.
+jostle_body_def jostle_default_body_def(void);
+
+/// Adds a body and returns its handle, or the null handle on misuse (a def field out of
+/// range, a static body with a velocity). From inside a callback the body exists at once
+/// and takes part in the simulation from the next step on.
+jostle_body_id jostle_body_create(jostle_world* world, const jostle_body_def* def);
+
+/// Removes a body; its handle and every copy of it are stale at once. Safe from inside
+/// the pre-solve callback, even for a body of the pair being solved: the body is left
+/// out of the rest of the step.
+bool jostle_body_destroy(jostle_world* world, jostle_body_id body);
+
+/// True if `body` names a live body of this world. A stale or null handle is an
+/// ordinary false, not misuse; only a NULL world is.
+bool jostle_body_is_valid(const jostle_world* world, jostle_body_id body);
+
+/// The body as a definition: its current position, velocity and settings, ready to be
+/// changed and given to jostle_body_create (a copy of the body).
+jostle_body_def jostle_body_get_def(const jostle_world* world, jostle_body_id body);
+
+// The getters and setters below mirror World's (world.hpp). Each checks the world and
+// the handle, and each setter its value as World does; a setter returns false and
+// changes nothing on misuse, a getter returns zero ({0, 0}, 0, false, NULL). Setters of
+// a body's physics wake it and what rests on it.
+
+jostle_body_type jostle_body_get_type(const jostle_world* world, jostle_body_id body);
+bool jostle_body_set_type(jostle_world* world, jostle_body_id body, jostle_body_type type);
+
+jostle_vec2 jostle_body_get_position(const jostle_world* world, jostle_body_id body);
+/// A teleport: nothing is swept on the way. Finite numbers.
+bool jostle_body_set_position(jostle_world* world, jostle_body_id body, jostle_vec2 centre);
+
+jostle_vec2 jostle_body_get_velocity(const jostle_world* world, jostle_body_id body);
+/// Finite numbers; a static body cannot move.
+bool jostle_body_set_velocity(jostle_world* world, jostle_body_id body, jostle_vec2 velocity);
+
+/// {hw, hh}.
+jostle_vec2 jostle_body_get_half_extents(const jostle_world* world, jostle_body_id body);
+/// Both > 0 and finite.
+bool jostle_body_set_half_extents(jostle_world* world, jostle_body_id body, jostle_vec2 half);
+
+float jostle_body_get_bounce(const jostle_world* world, jostle_body_id body);
+/// In [0, 1].
+bool jostle_body_set_bounce(jostle_world* world, jostle_body_id body, float bounce);
+
+float jostle_body_get_friction(const jostle_world* world, jostle_body_id body);
+/// In [0, 1].
+bool jostle_body_set_friction(jostle_world* world, jostle_body_id body, float friction);
+
+/// The mass the solver uses: the explicit mass or density * area; INFINITY for static
+/// and kinematic bodies.
+float jostle_body_get_mass(const jostle_world* world, jostle_body_id body);
+/// An explicit mass, finite and > 0.
+bool jostle_body_set_mass(jostle_world* world, jostle_body_id body, float mass);
+/// Finite and > 0. Drops any explicit mass: the mass is density * area from now on.
+bool jostle_body_set_density(jostle_world* world, jostle_body_id body, float density);
+
+float jostle_body_get_gravity_scale(const jostle_world* world, jostle_body_id body);
+/// Finite.
+bool jostle_body_set_gravity_scale(jostle_world* world, jostle_body_id body, float scale);
+
+float jostle_body_get_damping(const jostle_world* world, jostle_body_id body);
+/// Finite and >= 0.
+bool jostle_body_set_damping(jostle_world* world, jostle_body_id body, float damping);
+
+bool jostle_body_is_bullet(const jostle_world* world, jostle_body_id body);
+bool jostle_body_set_bullet(jostle_world* world, jostle_body_id body, bool bullet);
+
+/// False while the body sleeps (docs/sleeping.md), and on misuse.
+bool jostle_body_is_awake(const jostle_world* world, jostle_body_id body);
+/// Wakes the body and everything it rests on or carries.
+bool jostle_body_wake(jostle_world* world, jostle_body_id body);
+
+void* jostle_body_get_user_data(const jostle_world* world, jostle_body_id body);
+bool jostle_body_set_user_data(jostle_world* world, jostle_body_id body, void* data);
+
+jostle_vec2 jostle_body_get_one_way(const jostle_world* world, jostle_body_id body);
+/// {0, 0} or one of {+-1, 0}, {0, +-1} (docs/one-way-platforms.md).
+bool jostle_body_set_one_way(jostle_world* world, jostle_body_id body, jostle_vec2 normal);
+/// Lets the body fall through every one-way platform for the next `seconds` (finite,
+/// >= 0; 0 ends it): "down + jump" in a platformer.
+bool jostle_body_drop_through(jostle_world* world, jostle_body_id body, float seconds);
+
+/// Collision filtering (docs/filtering.md): two bodies collide when each one's category
+/// shares a bit with the other's mask.
+uint32_t jostle_body_get_category(const jostle_world* world, jostle_body_id body);
+bool jostle_body_set_category(jostle_world* world, jostle_body_id body, uint32_t bits);
+uint32_t jostle_body_get_mask(const jostle_world* world, jostle_body_id body);
+bool jostle_body_set_mask(jostle_world* world, jostle_body_id body, uint32_t bits);
+
+bool jostle_body_is_sensor(const jostle_world* world, jostle_body_id body);
+bool jostle_body_set_sensor(jostle_world* world, jostle_body_id body, bool sensor);
+
+/// The sum of the vectors that pushed the body out of others during the last step:
+/// separation.y < 0 in a y-down world means something held it up (it stands on it).
+jostle_vec2 jostle_body_get_separation(const jostle_world* world, jostle_body_id body);
+
+/// What a body touched in the last step, relative to gravity (jostle::Touching).
+typedef struct jostle_touching {
+    bool floor;      ///< below it, where gravity pulls
+    bool ceiling;    ///< above it
+    bool wall_left;  ///< on its left, looking along gravity's "down"
+    bool wall_right; ///< on its right
+} jostle_touching;
+
+/// Physical model (docs/events.md).
+jostle_touching jostle_body_get_touching(const jostle_world* world, jostle_body_id body);
+
+// === What the last step did (docs/events.md) ===============================================
+//
+// Each function returns an array filled by the last jostle_world_step and sets *count to
+// its length. The array belongs to the world: it stays valid and unchanged until the
+// next jostle_world_step, jostle_world_set_solver (which forgets them) or
+// jostle_world_destroy of that world; do not free it. When *count is 0 the pointer may
+// be NULL. On misuse (world or count NULL) they return NULL and set *count to 0 if count
+// is not NULL. Handles in events may be stale by the time you read them (a body
+// destroyed since, or the destroyed body of a contact end): check with
+// jostle_body_is_valid before using them.
+
+/// Two bodies that started or stopped touching.
+typedef struct jostle_contact_event {
+    jostle_body_id a;     ///< the body created first
+    jostle_body_id b;     ///< the other one
+    jostle_vec2 normal;   ///< unit, along x or y, pointing from b towards a
+    float approach_speed; ///< begin: how fast they met along the normal (>= 0); end: 0
+} jostle_contact_event;
+
+/// A body that started or stopped overlapping a sensor.
+typedef struct jostle_sensor_event {
+    jostle_body_id sensor;
+    jostle_body_id visitor;
+} jostle_sensor_event;
+
+/// A body squeezed between a moving kinematic body and something that would not give.
+typedef struct jostle_crush_event {
+    jostle_body_id body;
+    jostle_body_id by;      ///< the kinematic body pushing
+    jostle_body_id against; ///< what is on the other side
+} jostle_crush_event;
+
+/// Pairs that started touching in the last step (sensors excluded).
+const jostle_contact_event* jostle_world_contact_begins(const jostle_world* world, int* count);
+/// Pairs that stopped touching in the last step, or one of whose bodies was destroyed.
+const jostle_contact_event* jostle_world_contact_ends(const jostle_world* world, int* count);
+/// Bodies that started overlapping a sensor in the last step.
+const jostle_sensor_event* jostle_world_sensor_begins(const jostle_world* world, int* count);
+/// Bodies that stopped overlapping a sensor in the last step.
+const jostle_sensor_event* jostle_world_sensor_ends(const jostle_world* world, int* count);
+/// Bodies crushed in the last step (physical model): the game decides what happens.
+const jostle_crush_event* jostle_world_crushes(const jostle_world* world, int* count);
+
+// === The pre-solve callback ================================================================
+
+/// A pair about to collide, as the solver sees it before it responds (jostle::Collision).
+typedef struct jostle_collision {
+    jostle_body_id a;   ///< classic: the dynamic body that moved; physical: the older one
+    jostle_body_id b;   ///< the other body
+    jostle_vec2 normal; ///< unit, along x or y, pointing from b towards a
+    /// How deep they overlap along the normal; negative for a pair that will meet within
+    /// the step (-depth is the gap), 0 where the classic ccd sweep stopped a body.
+    float depth;
+    float bounce;   ///< the pair's bounce; the callback may change it (clamped to [0, 1])
+    float friction; ///< the pair's friction; the callback may change it (clamped to [0, 1])
+} jostle_collision;
+
+/// Called during jostle_world_step for every pair the solver is about to respond to.
+/// Return false to let the pair pass through each other this time (a one-way platform, a
+/// ghost, a team mate), true to let the solver respond. Changes to `bounce` and
+/// `friction` hold for this pair and this step only (NaN: left as they were); changes to
+/// the other fields are ignored. `collision` is valid during the call only.
+///
+/// From inside the callback you may call: every getter, every query, the event arrays
+/// (they still hold the previous step's events), jostle_body_create (the body joins from
+/// the next step), jostle_body_destroy (either body of the pair too: the pair is then
+/// dropped), the body setters, jostle_tile_map_set_tile, and the error functions.
+/// Refused, as misuse, are the functions that change the world as a whole:
+/// jostle_world_step (and jostle_fixed_step_update of this world), jostle_world_destroy,
+/// jostle_world_set_pre_solve and every other jostle_world_set_*. The callback must
+/// return normally: no longjmp out of it.
+typedef bool (*jostle_pre_solve_fn)(jostle_collision* collision, void* context);
+
+/// Installs the pre-solve callback of the world, with the `context` handed back to it;
+/// NULL removes it. Refused from inside a callback.
+bool jostle_world_set_pre_solve(jostle_world* world, jostle_pre_solve_fn callback, void* context);
+
+// === Queries (docs/queries.md; query.hpp is the reference of the rules) ===================
+//
+// Queries look at every body where it is now, change nothing, and filter bodies as
+// collisions do. Functions that find several bodies copy them into the caller's buffer
+// out[0 .. capacity) and return how many they found, which may be more than capacity:
+// the first `capacity` of them are in out, in the same order as a bigger buffer would
+// hold them. Grow the buffer and call again to get them all. out may be NULL when
+// capacity is 0; capacity < 0 is misuse. On misuse they return 0.
+//
+// Every query takes a filter; NULL means jostle_default_query_filter().
+
+/// Which bodies a query reports (jostle::QueryFilter). A body is reported when
+/// (body.category & filter.mask) != 0 and (filter.category & body.mask) != 0, it is not
+/// a sensor (unless include_sensors) and it is not `ignore`.
+typedef struct jostle_query_filter {
+    uint32_t mask;        ///< the categories to report, default 0xFFFFFFFF
+    uint32_t category;    ///< the query's own category, default 0xFFFFFFFF
+    bool include_sensors; ///< default false
+    /// A body never reported (the character doing the query); the null handle, the
+    /// default, ignores nothing; a stale one is misuse.
+    jostle_body_id ignore;
+    /// Set by jostle_default_query_filter(); leave it alone.
+    uint32_t internal_cookie;
+} jostle_query_filter;
+
+/// Every body except sensors.
+jostle_query_filter jostle_default_query_filter(void);
+
+/// The bodies whose box contains `point` (edges included), in creation order.
+int jostle_query_point(const jostle_world* world, jostle_vec2 point,
+                       const jostle_query_filter* filter, jostle_body_id* out, int capacity);
+
+/// The bodies that share some area with the box of centre `centre` and half extents
+/// `half` (each >= 0), in creation order; touching edge to edge is not overlapping.
+int jostle_query_box(const jostle_world* world, jostle_vec2 centre, jostle_vec2 half,
+                     const jostle_query_filter* filter, jostle_body_id* out, int capacity);
+
+/// jostle_query_box by corners: min <= max on both axes.
+int jostle_query_rect(const jostle_world* world, jostle_vec2 min, jostle_vec2 max,
+                      const jostle_query_filter* filter, jostle_body_id* out, int capacity);
+
+/// Where a ray meets a body.
+typedef struct jostle_ray_hit {
+    jostle_body_id body;
+    jostle_vec2 point;  ///< from + (to - from) * fraction, exactly on the face it meets
+    jostle_vec2 normal; ///< the outward normal of that face: unit, along x or y
+    float fraction;     ///< in [0, 1]
+} jostle_ray_hit;
+
+/// The first body on the segment from `from` to `to`: true and *hit filled if there is
+/// one; false, *hit untouched, if there is none (not misuse) or on misuse (hit NULL,
+/// numbers not finite...). The rules (a ray starting inside a box hits it at fraction 0,
+/// a zero-length ray hits nothing, ties go to the body created first) are rayCast's.
+bool jostle_ray_cast(const jostle_world* world, jostle_vec2 from, jostle_vec2 to,
+                     const jostle_query_filter* filter, jostle_ray_hit* hit);
+
+/// Every body on the segment, nearest first (ties in creation order), each once.
+int jostle_ray_cast_all(const jostle_world* world, jostle_vec2 from, jostle_vec2 to,
+                        const jostle_query_filter* filter, jostle_ray_hit* out, int capacity);
+
+/// Where a box swept along a translation first touches a body.
+typedef struct jostle_box_cast_hit {
+    jostle_body_id body;
+    jostle_vec2 centre; ///< where the box's centre stops, touching the body
+    jostle_vec2 normal; ///< unit, along x or y, pointing from the body towards the box
+    float fraction;     ///< the fraction of the translation travelled, in [0, 1]
+} jostle_box_cast_hit;
+
+/// Sweeps the box (half extents > 0) along `translation`: true and *hit filled if it
+/// runs into a body; false, *hit untouched, if it runs into none or on misuse. Touching
+/// is not running into: a box on a floor moving sideways is free (boxCast's rules).
+bool jostle_box_cast(const jostle_world* world, jostle_vec2 centre, jostle_vec2 half,
+                     jostle_vec2 translation, const jostle_query_filter* filter,
+                     jostle_box_cast_hit* hit);
+
+/// A body met by jostle_move_and_slide.
+typedef struct jostle_move_hit {
+    jostle_body_id body;
+    jostle_vec2 normal; ///< unit, along x or y, pointing from the body towards the box
+} jostle_move_hit;
+
+/// Moves a box by `translation` as bump.lua moves its items: until it runs into a body,
+/// then sliding along it for the rest of the way. Writes where the box ends up to
+/// *new_centre (required), copies the bodies met, in the order met, into hits[0 ..
+/// capacity) and returns how many it met (capacity may be 0 and hits NULL). Nothing in
+/// the world moves: set the character's position yourself, and name its body in
+/// filter->ignore. On misuse *new_centre is `centre` (if new_centre is not NULL) and it
+/// returns 0.
+int jostle_move_and_slide(const jostle_world* world, jostle_vec2 centre, jostle_vec2 half,
+                          jostle_vec2 translation, const jostle_query_filter* filter,
+                          jostle_vec2* new_centre, jostle_move_hit* hits, int capacity);
+
+// === Tile maps (docs/tilemaps.md) ==========================================================
+
+/// Everything that describes a tile map (jostle::TileMapDef). Start from
+/// jostle_default_tile_map_def(), then set tile, columns, rows and cells.
+///
+/// Tile (column, row) covers x + column * tile to x + (column + 1) * tile, and likewise
+/// in y: in a y-down world row 0 is the top row.
+typedef struct jostle_tile_map_def {
+    float x, y;  ///< the corner of tile (0, 0) with the smallest x and y
+    float tile;  ///< the side of a square tile, > 0
+    int columns; ///< >= 1
+    int rows;    ///< >= 1
+    /// columns * rows bytes, row by row, top row first: cells[row * columns + column] is
+    /// nonzero for a solid tile, 0 for an empty one. Read by jostle_tile_map_create only.
+    const unsigned char* cells;
+    // Settings of every static body of the map, fixed at creation (body defaults).
+    float friction;
+    float bounce;
+    uint32_t category;
+    uint32_t mask;
+    jostle_vec2 one_way; ///< {0, -1}: jump-through platforms in a y-down world
+    bool sensor;         ///< water, lava, a trigger zone drawn in tiles
+    void* user_data;     ///< given to every body of the map
+    /// Set by jostle_default_tile_map_def(); leave it alone.
+    uint32_t internal_cookie;
+} jostle_tile_map_def;
+
+/// The defaults: at {0, 0}, tile 0 and no cells (set them), friction 0.5, bounce 0,
+/// category 1, mask 0xFFFFFFFF.
+jostle_tile_map_def jostle_default_tile_map_def(void);
+
+/// Creates the map and the static bodies of its solid tiles (runs of solid tiles merged
+/// into few boxes); the null handle on misuse (def or cells NULL, columns or rows < 1,
+/// tile <= 0, a setting out of range).
+jostle_tile_map_id jostle_tile_map_create(jostle_world* world, const jostle_tile_map_def* def);
+
+/// Destroys the map and all its bodies; what rests on them wakes and falls.
+bool jostle_tile_map_destroy(jostle_world* world, jostle_tile_map_id map);
+
+/// True if `map` names a live tile map of this world; stale or null is an ordinary false.
+bool jostle_tile_map_is_valid(const jostle_world* world, jostle_tile_map_id map);
+
+/// Makes the tile at (column, row) solid or empty; the tile must be inside the map.
+/// Only the few boxes around the tile are rebuilt.
+bool jostle_tile_map_set_tile(jostle_world* world, jostle_tile_map_id map, int column, int row,
+                              bool solid);
+
+/// True if the tile is solid. Outside the map: false, not misuse (the map goes on empty
+/// forever).
+bool jostle_tile_map_is_solid(const jostle_world* world, jostle_tile_map_id map, int column,
+                              int row);
+
+/// The tile that contains `point` (on an edge: the larger column or row): true and
+/// *column, *row set (both required); false outside the map (not misuse) or on misuse.
+bool jostle_tile_map_tile_at(const jostle_world* world, jostle_tile_map_id map, jostle_vec2 point,
+                             int* column, int* row);
+
+/// The size of the map in tiles; 0 on misuse.
+int jostle_tile_map_columns(const jostle_world* world, jostle_tile_map_id map);
+int jostle_tile_map_rows(const jostle_world* world, jostle_tile_map_id map);
+
+/// Copies the static bodies the map is made of now, in creation order, into out[0 ..
+/// capacity) and returns how many there are (the buffer rule of queries). They belong to
+/// the map: do not destroy or change them.
+int jostle_tile_map_bodies(const jostle_world* world, jostle_tile_map_id map, jostle_body_id* out,
+                           int capacity);
+
+/// The map that `body` is part of, or the null handle if none (not misuse; a stale body
+/// is).
+jostle_tile_map_id jostle_tile_map_of(const jostle_world* world, jostle_body_id body);
+
+// === A fixed time step (docs/fixed-step.md) ================================================
+
+/// Turns variable frame times into a whole number of steps of a fixed dt
+/// (jostle::FixedStep). Opaque.
+typedef struct jostle_fixed_step jostle_fixed_step;
+
+/// A clock of step `dt` seconds, in [1e-6, 3600], giving at most `max_steps_per_frame`
+/// steps a frame, in [1, 100000] (8 is a good choice: see fixed_step.hpp). NULL on
+/// misuse.
+jostle_fixed_step* jostle_fixed_step_create(float dt, int max_steps_per_frame);
+
+/// Frees the clock. NULL does nothing and is not an error.
+void jostle_fixed_step_destroy(jostle_fixed_step* clock);
+
+/// Adds the time of one frame (finite, >= 0) and returns how many steps of dt to take
+/// now, from 0 to max_steps_per_frame; the time left over waits for later frames.
+int jostle_fixed_step_advance(jostle_fixed_step* clock, float frame_seconds);
+
+/// jostle_fixed_step_advance, then jostle_world_step(world, dt) that many times; returns
+/// the number of steps taken. If a step fails (from inside a callback, say), the steps
+/// left are not taken, their time is lost, the error is recorded and it returns the
+/// steps taken so far.
+int jostle_fixed_step_update(jostle_fixed_step* clock, jostle_world* world, float frame_seconds);
+
+/// How far the time left over reaches towards the next step, in [0, 1): draw bodies at
+/// previous + (current - previous) * alpha. 0 on misuse.
+float jostle_fixed_step_alpha(const jostle_fixed_step* clock);
+
+/// The seconds the last advance dropped because of the cap.
+double jostle_fixed_step_dropped_seconds(const jostle_fixed_step* clock);
+
+float jostle_fixed_step_dt(const jostle_fixed_step* clock);
+int jostle_fixed_step_max_steps_per_frame(const jostle_fixed_step* clock);
+
+/// Forgets the time left over and the dropped time (after a pause or a level load).
+bool jostle_fixed_step_reset(jostle_fixed_step* clock);
+
+#ifdef __cplusplus
+} // extern "C"
+#endif
+
+#endif // JOSTLE_JOSTLE_H

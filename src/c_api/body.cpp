@@ -1,0 +1,202 @@
+// The C API's bodies: creation, destruction, and every getter and setter World offers.
+#include "c_api.hpp"
+
+using namespace jostle;
+using namespace jostle::c_api;
+
+namespace {
+
+/// A getter: the world's answer, or `Result{}` (zero) on misuse.
+template <class Result, class Get>
+Result get(const char* function, const jostle_world* world, Get&& read) noexcept {
+    return guard(function, Result{}, [&] { return read(worldOf(world).world); });
+}
+
+/// A setter: true once `write` has run, false on misuse.
+template <class Set> bool set(const char* function, jostle_world* world, Set&& write) noexcept {
+    return guard(function, false, [&] {
+        write(worldOf(world).world);
+        return true;
+    });
+}
+
+} // namespace
+
+extern "C" {
+
+jostle_body_def jostle_default_body_def(void) {
+    return toC(BodyDef{});
+}
+
+jostle_body_id jostle_body_create(jostle_world* world, const jostle_body_def* def) {
+    return guard(__func__, jostle_body_id{}, [&] {
+        World& w = worldOf(world).world;
+        return toC(w.createBody(toCpp(required(def, "def"))));
+    });
+}
+
+bool jostle_body_destroy(jostle_world* world, jostle_body_id body) {
+    return set(__func__, world, [&](World& w) { w.destroyBody(toCpp(body)); });
+}
+
+bool jostle_body_is_valid(const jostle_world* world, jostle_body_id body) {
+    return get<bool>(__func__, world, [&](const World& w) { return w.isValid(toCpp(body)); });
+}
+
+jostle_body_def jostle_body_get_def(const jostle_world* world, jostle_body_id body) {
+    return get<jostle_body_def>(__func__, world,
+                                [&](const World& w) { return toC(w.bodyDef(toCpp(body))); });
+}
+
+jostle_body_type jostle_body_get_type(const jostle_world* world, jostle_body_id body) {
+    return get<jostle_body_type>(__func__, world,
+                                 [&](const World& w) { return toC(w.type(toCpp(body))); });
+}
+
+bool jostle_body_set_type(jostle_world* world, jostle_body_id body, jostle_body_type type) {
+    return set(__func__, world, [&](World& w) { w.setType(toCpp(body), toCpp(type)); });
+}
+
+jostle_vec2 jostle_body_get_position(const jostle_world* world, jostle_body_id body) {
+    return get<jostle_vec2>(__func__, world,
+                            [&](const World& w) { return toC(w.position(toCpp(body))); });
+}
+
+bool jostle_body_set_position(jostle_world* world, jostle_body_id body, jostle_vec2 centre) {
+    return set(__func__, world, [&](World& w) { w.setPosition(toCpp(body), toCpp(centre)); });
+}
+
+jostle_vec2 jostle_body_get_velocity(const jostle_world* world, jostle_body_id body) {
+    return get<jostle_vec2>(__func__, world,
+                            [&](const World& w) { return toC(w.velocity(toCpp(body))); });
+}
+
+bool jostle_body_set_velocity(jostle_world* world, jostle_body_id body, jostle_vec2 velocity) {
+    return set(__func__, world, [&](World& w) { w.setVelocity(toCpp(body), toCpp(velocity)); });
+}
+
+jostle_vec2 jostle_body_get_half_extents(const jostle_world* world, jostle_body_id body) {
+    return get<jostle_vec2>(__func__, world,
+                            [&](const World& w) { return toC(w.halfExtents(toCpp(body))); });
+}
+
+bool jostle_body_set_half_extents(jostle_world* world, jostle_body_id body, jostle_vec2 half) {
+    return set(__func__, world, [&](World& w) { w.setHalfExtents(toCpp(body), toCpp(half)); });
+}
+
+float jostle_body_get_bounce(const jostle_world* world, jostle_body_id body) {
+    return get<float>(__func__, world, [&](const World& w) { return w.bounce(toCpp(body)); });
+}
+
+bool jostle_body_set_bounce(jostle_world* world, jostle_body_id body, float bounce) {
+    return set(__func__, world, [&](World& w) { w.setBounce(toCpp(body), bounce); });
+}
+
+float jostle_body_get_friction(const jostle_world* world, jostle_body_id body) {
+    return get<float>(__func__, world, [&](const World& w) { return w.friction(toCpp(body)); });
+}
+
+bool jostle_body_set_friction(jostle_world* world, jostle_body_id body, float friction) {
+    return set(__func__, world, [&](World& w) { w.setFriction(toCpp(body), friction); });
+}
+
+float jostle_body_get_mass(const jostle_world* world, jostle_body_id body) {
+    return get<float>(__func__, world, [&](const World& w) { return w.mass(toCpp(body)); });
+}
+
+bool jostle_body_set_mass(jostle_world* world, jostle_body_id body, float mass) {
+    return set(__func__, world, [&](World& w) { w.setMass(toCpp(body), mass); });
+}
+
+bool jostle_body_set_density(jostle_world* world, jostle_body_id body, float density) {
+    return set(__func__, world, [&](World& w) { w.setDensity(toCpp(body), density); });
+}
+
+float jostle_body_get_gravity_scale(const jostle_world* world, jostle_body_id body) {
+    return get<float>(__func__, world, [&](const World& w) { return w.gravityScale(toCpp(body)); });
+}
+
+bool jostle_body_set_gravity_scale(jostle_world* world, jostle_body_id body, float scale) {
+    return set(__func__, world, [&](World& w) { w.setGravityScale(toCpp(body), scale); });
+}
+
+float jostle_body_get_damping(const jostle_world* world, jostle_body_id body) {
+    return get<float>(__func__, world, [&](const World& w) { return w.damping(toCpp(body)); });
+}
+
+bool jostle_body_set_damping(jostle_world* world, jostle_body_id body, float damping) {
+    return set(__func__, world, [&](World& w) { w.setDamping(toCpp(body), damping); });
+}
+
+bool jostle_body_is_bullet(const jostle_world* world, jostle_body_id body) {
+    return get<bool>(__func__, world, [&](const World& w) { return w.isBullet(toCpp(body)); });
+}
+
+bool jostle_body_set_bullet(jostle_world* world, jostle_body_id body, bool bullet) {
+    return set(__func__, world, [&](World& w) { w.setBullet(toCpp(body), bullet); });
+}
+
+bool jostle_body_is_awake(const jostle_world* world, jostle_body_id body) {
+    return get<bool>(__func__, world, [&](const World& w) { return w.isAwake(toCpp(body)); });
+}
+
+bool jostle_body_wake(jostle_world* world, jostle_body_id body) {
+    return set(__func__, world, [&](World& w) { w.wake(toCpp(body)); });
+}
+
+void* jostle_body_get_user_data(const jostle_world* world, jostle_body_id body) {
+    return get<void*>(__func__, world, [&](const World& w) { return w.userData(toCpp(body)); });
+}
+
+bool jostle_body_set_user_data(jostle_world* world, jostle_body_id body, void* data) {
+    return set(__func__, world, [&](World& w) { w.setUserData(toCpp(body), data); });
+}
+
+jostle_vec2 jostle_body_get_one_way(const jostle_world* world, jostle_body_id body) {
+    return get<jostle_vec2>(__func__, world,
+                            [&](const World& w) { return toC(w.oneWay(toCpp(body))); });
+}
+
+bool jostle_body_set_one_way(jostle_world* world, jostle_body_id body, jostle_vec2 normal) {
+    return set(__func__, world, [&](World& w) { w.setOneWay(toCpp(body), toCpp(normal)); });
+}
+
+bool jostle_body_drop_through(jostle_world* world, jostle_body_id body, float seconds) {
+    return set(__func__, world, [&](World& w) { w.dropThrough(toCpp(body), seconds); });
+}
+
+uint32_t jostle_body_get_category(const jostle_world* world, jostle_body_id body) {
+    return get<uint32_t>(__func__, world, [&](const World& w) { return w.category(toCpp(body)); });
+}
+
+bool jostle_body_set_category(jostle_world* world, jostle_body_id body, uint32_t bits) {
+    return set(__func__, world, [&](World& w) { w.setCategory(toCpp(body), bits); });
+}
+
+uint32_t jostle_body_get_mask(const jostle_world* world, jostle_body_id body) {
+    return get<uint32_t>(__func__, world, [&](const World& w) { return w.mask(toCpp(body)); });
+}
+
+bool jostle_body_set_mask(jostle_world* world, jostle_body_id body, uint32_t bits) {
+    return set(__func__, world, [&](World& w) { w.setMask(toCpp(body), bits); });
+}
+
+bool jostle_body_is_sensor(const jostle_world* world, jostle_body_id body) {
+    return get<bool>(__func__, world, [&](const World& w) { return w.isSensor(toCpp(body)); });
+}
+
+bool jostle_body_set_sensor(jostle_world* world, jostle_body_id body, bool sensor) {
+    return set(__func__, world, [&](World& w) { w.setSensor(toCpp(body), sensor); });
+}
+
+jostle_vec2 jostle_body_get_separation(const jostle_world* world, jostle_body_id body) {
+    return get<jostle_vec2>(__func__, world,
+                            [&](const World& w) { return toC(w.separation(toCpp(body))); });
+}
+
+jostle_touching jostle_body_get_touching(const jostle_world* world, jostle_body_id body) {
+    return get<jostle_touching>(__func__, world,
+                                [&](const World& w) { return toC(w.touching(toCpp(body))); });
+}
+
+} // extern "C"

@@ -1,0 +1,357 @@
+// The C API's internals, shared by src/c_api/*.cpp: the structs behind the opaque C
+// handles, the one place where C and C++ types are converted, and the guard that turns
+// every exception into a recorded error before it can reach C code.
+#pragma once
+
+#include "jostle/fixed_step.hpp"
+#include "jostle/jostle.h"
+#include "jostle/query.hpp"
+#include "jostle/tilemap.hpp"
+#include "jostle/world.hpp"
+
+#include <algorithm>
+#include <climits>
+#include <cstddef>
+#include <new>
+#include <span>
+#include <string>
+#include <vector>
+
+/// A C world: the C++ world and what the C layer keeps beside it.
+struct jostle_world {
+    explicit jostle_world(const jostle::WorldDef& def) : world(def) {}
+
+    jostle::World world;
+    jostle_pre_solve_fn preSolve = nullptr;
+    void* preSolveContext = nullptr;
+    /// True while jostle_world_step runs, so callbacks can be refused what would pull the
+    /// world out from under the step.
+    bool stepping = false;
+    // The last step's events in C layout. Converted once, after each step, so that the
+    // getters only read (and may run on several threads at once, as C++ getters may).
+    std::vector<jostle_contact_event> contactBegins;
+    std::vector<jostle_contact_event> contactEnds;
+    std::vector<jostle_sensor_event> sensorBegins;
+    std::vector<jostle_sensor_event> sensorEnds;
+    std::vector<jostle_crush_event> crushes;
+};
+
+struct jostle_fixed_step {
+    jostle::FixedStep clock;
+};
+
+namespace jostle::c_api {
+
+// --- Errors (errors.cpp) ------------------------------------------------------------------
+
+/// Records "function: message" as this thread's last error and calls the error handler.
+void report(const char* function, const char* message) noexcept;
+
+/// Runs `body` and returns what it returns; if it throws anything, reports it under the
+/// C function's name and returns `fallback` instead. Every C entry point runs in one, so
+/// no exception ever crosses into C.
+template <class Result, class Body>
+Result guard(const char* function, Result fallback, Body&& body) noexcept {
+    try {
+        return body();
+    } catch (const std::bad_alloc&) {
+        report(function, "out of memory");
+    } catch (const std::exception& e) {
+        report(function, e.what());
+    } catch (...) {
+        report(function, "unknown error");
+    }
+    return fallback;
+}
+
+/// Misuse found by the C layer itself: thrown inside a guard, reported by it.
+[[noreturn]] inline void misuse(const std::string& message) {
+    throw Error(message);
+}
+
+template <class T> T& required(T* pointer, const char* name) {
+    if (pointer == nullptr)
+        misuse(std::string(name) + " is NULL");
+    return *pointer;
+}
+
+inline jostle_world& worldOf(jostle_world* world) {
+    return required(world, "world");
+}
+inline const jostle_world& worldOf(const jostle_world* world) {
+    return required(world, "world");
+}
+
+/// For the functions that change the world as a whole, which a callback may not call.
+inline jostle_world& outsideStep(jostle_world* world) {
+    jostle_world& w = worldOf(world);
+    if (w.stepping)
+        misuse("called from a callback during jostle_world_step");
+    return w;
+}
+
+/// What jostle_default_*_def() writes into internal_cookie ("jost").
+inline constexpr std::uint32_t kCookie = 0x6A6F7374u;
+
+/// Catches a struct that is zeroed or uninitialised instead of made by its maker.
+inline void requireCookie(std::uint32_t cookie, const char* what, const char* maker) {
+    if (cookie != kCookie)
+        misuse(std::string(what) + " was not made by " + maker +
+               "() (start from it, then set the fields you need)");
+}
+
+/// The buffer rule of every function that returns several things.
+inline void checkBuffer(const void* out, int capacity) {
+    if (capacity < 0)
+        misuse("capacity must be >= 0, got " + std::to_string(capacity));
+    if (out == nullptr && capacity > 0)
+        misuse("out is NULL but capacity is " + std::to_string(capacity));
+}
+
+/// A size as a C count (counts beyond INT_MAX cannot happen in practice: say INT_MAX).
+inline int countOf(std::size_t size) {
+    return size > static_cast<std::size_t>(INT_MAX) ? INT_MAX : static_cast<int>(size);
+}
+
+/// Copies as many of `items` as fit, converted, and returns how many there are.
+template <class From, class To, class Convert>
+int copyOut(std::span<const From> items, To* out, int capacity, Convert&& convert) {
+    const std::size_t fit = std::min(items.size(), static_cast<std::size_t>(capacity));
+    for (std::size_t i = 0; i < fit; ++i)
+        out[i] = convert(items[i]);
+    return countOf(items.size());
+}
+
+// --- Conversions --------------------------------------------------------------------------
+
+inline Vec2 toCpp(jostle_vec2 v) {
+    return {v.x, v.y};
+}
+inline jostle_vec2 toC(Vec2 v) {
+    return {v.x, v.y};
+}
+
+inline BodyId toCpp(jostle_body_id id) {
+    return {id.index, id.generation};
+}
+inline jostle_body_id toC(BodyId id) {
+    return {id.index, id.generation};
+}
+
+inline TileMapId toCpp(jostle_tile_map_id id) {
+    return {id.index, id.generation};
+}
+inline jostle_tile_map_id toC(TileMapId id) {
+    return {id.index, id.generation};
+}
+
+// Enums from C may hold any int: each is checked before it becomes a C++ enum.
+inline BodyType toCpp(jostle_body_type type) {
+    switch (type) {
+    case JOSTLE_BODY_STATIC:
+        return BodyType::Static;
+    case JOSTLE_BODY_KINEMATIC:
+        return BodyType::Kinematic;
+    case JOSTLE_BODY_DYNAMIC:
+        return BodyType::Dynamic;
+    }
+    misuse("type must be JOSTLE_BODY_STATIC, JOSTLE_BODY_KINEMATIC or JOSTLE_BODY_DYNAMIC, got " +
+           std::to_string(static_cast<int>(type)));
+}
+inline jostle_body_type toC(BodyType type) {
+    switch (type) {
+    case BodyType::Static:
+        return JOSTLE_BODY_STATIC;
+    case BodyType::Kinematic:
+        return JOSTLE_BODY_KINEMATIC;
+    case BodyType::Dynamic:
+        return JOSTLE_BODY_DYNAMIC;
+    }
+    return JOSTLE_BODY_DYNAMIC; // not reached: the world holds only valid types
+}
+
+inline Solver toCpp(jostle_solver solver) {
+    switch (solver) {
+    case JOSTLE_SOLVER_CLASSIC:
+        return Solver::Classic;
+    case JOSTLE_SOLVER_PHYSICAL:
+        return Solver::Physical;
+    }
+    misuse("solver must be JOSTLE_SOLVER_CLASSIC or JOSTLE_SOLVER_PHYSICAL, got " +
+           std::to_string(static_cast<int>(solver)));
+}
+inline jostle_solver toC(Solver solver) {
+    return solver == Solver::Classic ? JOSTLE_SOLVER_CLASSIC : JOSTLE_SOLVER_PHYSICAL;
+}
+
+inline FrictionMix toCpp(jostle_friction_mix mix) {
+    switch (mix) {
+    case JOSTLE_FRICTION_MIX_MIN:
+        return FrictionMix::Min;
+    case JOSTLE_FRICTION_MIX_GEOMETRIC_MEAN:
+        return FrictionMix::GeometricMean;
+    }
+    misuse("friction_mix must be JOSTLE_FRICTION_MIX_MIN or JOSTLE_FRICTION_MIX_GEOMETRIC_MEAN, "
+           "got " +
+           std::to_string(static_cast<int>(mix)));
+}
+inline jostle_friction_mix toC(FrictionMix mix) {
+    return mix == FrictionMix::Min ? JOSTLE_FRICTION_MIX_MIN : JOSTLE_FRICTION_MIX_GEOMETRIC_MEAN;
+}
+
+inline ClassicOptions toCpp(const jostle_classic_options& o) {
+    return {.mass = o.mass, .coulomb = o.coulomb, .ccd = o.ccd};
+}
+inline jostle_classic_options toC(const ClassicOptions& o) {
+    return {o.mass, o.coulomb, o.ccd};
+}
+
+inline PhysicalOptions toCpp(const jostle_physical_options& o) {
+    return {.velocityIterations = o.velocity_iterations,
+            .positionIterations = o.position_iterations,
+            .slop = o.slop,
+            .correction = o.correction,
+            .restitutionThreshold = o.restitution_threshold,
+            .frictionMix = toCpp(o.friction_mix)};
+}
+inline jostle_physical_options toC(const PhysicalOptions& o) {
+    return {o.velocityIterations, o.positionIterations,   o.slop,
+            o.correction,         o.restitutionThreshold, toC(o.frictionMix)};
+}
+
+inline WorldDef toCpp(const jostle_world_def& d) {
+    requireCookie(d.internal_cookie, "def", "jostle_default_world_def");
+    return {.gravity = toCpp(d.gravity),
+            .maxVelocity = d.max_velocity,
+            .solver = toCpp(d.solver),
+            .classic = toCpp(d.classic),
+            .physical = toCpp(d.physical),
+            .sleeping = d.sleeping};
+}
+inline jostle_world_def toC(const WorldDef& d) {
+    return {toC(d.gravity),  d.maxVelocity, toC(d.solver), toC(d.classic),
+            toC(d.physical), d.sleeping,    kCookie};
+}
+
+inline BodyDef toCpp(const jostle_body_def& d) {
+    requireCookie(d.internal_cookie, "def", "jostle_default_body_def");
+    return {.type = toCpp(d.type),
+            .x = d.x,
+            .y = d.y,
+            .hw = d.hw,
+            .hh = d.hh,
+            .vx = d.vx,
+            .vy = d.vy,
+            .bounce = d.bounce,
+            .friction = d.friction,
+            .mass = d.mass,
+            .density = d.density,
+            .gravityScale = d.gravity_scale,
+            .damping = d.damping,
+            .bullet = d.bullet,
+            .oneWay = toCpp(d.one_way),
+            .category = d.category,
+            .mask = d.mask,
+            .sensor = d.sensor,
+            .userData = d.user_data};
+}
+inline jostle_body_def toC(const BodyDef& d) {
+    jostle_body_def c{};
+    c.type = toC(d.type);
+    c.x = d.x;
+    c.y = d.y;
+    c.hw = d.hw;
+    c.hh = d.hh;
+    c.vx = d.vx;
+    c.vy = d.vy;
+    c.bounce = d.bounce;
+    c.friction = d.friction;
+    c.mass = d.mass;
+    c.density = d.density;
+    c.gravity_scale = d.gravityScale;
+    c.damping = d.damping;
+    c.bullet = d.bullet;
+    c.one_way = toC(d.oneWay);
+    c.category = d.category;
+    c.mask = d.mask;
+    c.sensor = d.sensor;
+    c.user_data = d.userData;
+    c.internal_cookie = kCookie;
+    return c;
+}
+
+/// NULL is the default filter.
+inline QueryFilter toCpp(const jostle_query_filter* f) {
+    if (f == nullptr)
+        return {};
+    requireCookie(f->internal_cookie, "filter", "jostle_default_query_filter");
+    return {.mask = f->mask,
+            .category = f->category,
+            .includeSensors = f->include_sensors,
+            .ignore = toCpp(f->ignore)};
+}
+
+/// The solid-cells array becomes the C++ definition's rows of '#' and '.'.
+inline TileMapDef toCpp(const jostle_tile_map_def& d) {
+    requireCookie(d.internal_cookie, "def", "jostle_default_tile_map_def");
+    if (d.columns < 1)
+        misuse("def.columns must be >= 1, got " + std::to_string(d.columns));
+    if (d.rows < 1)
+        misuse("def.rows must be >= 1, got " + std::to_string(d.rows));
+    if (d.cells == nullptr)
+        misuse("def.cells is NULL");
+    TileMapDef def{.x = d.x,
+                   .y = d.y,
+                   .tile = d.tile,
+                   .rows = {},
+                   .friction = d.friction,
+                   .bounce = d.bounce,
+                   .category = d.category,
+                   .mask = d.mask,
+                   .oneWay = toCpp(d.one_way),
+                   .sensor = d.sensor,
+                   .userData = d.user_data};
+    const auto columns = static_cast<std::size_t>(d.columns);
+    def.rows.resize(static_cast<std::size_t>(d.rows), std::string(columns, '.'));
+    for (std::size_t row = 0; row < def.rows.size(); ++row)
+        for (std::size_t column = 0; column < columns; ++column)
+            if (d.cells[row * columns + column] != 0)
+                def.rows[row][column] = '#';
+    return def;
+}
+
+inline jostle_contact_event toC(const ContactEvent& e) {
+    return {toC(e.a), toC(e.b), toC(e.normal), e.approachSpeed};
+}
+inline jostle_sensor_event toC(const SensorEvent& e) {
+    return {toC(e.sensor), toC(e.visitor)};
+}
+inline jostle_crush_event toC(const CrushEvent& e) {
+    return {toC(e.body), toC(e.by), toC(e.against)};
+}
+inline jostle_touching toC(const Touching& t) {
+    return {t.floor, t.ceiling, t.wallLeft, t.wallRight};
+}
+inline jostle_collision toC(const Collision& c) {
+    return {toC(c.a), toC(c.b), toC(c.normal), c.depth, c.bounce, c.friction};
+}
+inline jostle_ray_hit toC(const RayHit& h) {
+    return {toC(h.body), toC(h.point), toC(h.normal), h.fraction};
+}
+inline jostle_box_cast_hit toC(const BoxCastHit& h) {
+    return {toC(h.body), toC(h.centre), toC(h.normal), h.fraction};
+}
+inline jostle_move_hit toC(const MoveHit& h) {
+    return {toC(h.body), toC(h.normal)};
+}
+
+// --- Worlds (world.cpp) and events (events.cpp) ------------------------------------------
+
+/// Steps the world (the checks and bookkeeping of jostle_world_step); throws on misuse.
+void stepWorld(jostle_world& world, float dt);
+
+/// Copies the C++ world's event arrays into the C world's, after a step or whatever else
+/// changed them.
+void publishEvents(jostle_world& world);
+
+} // namespace jostle::c_api

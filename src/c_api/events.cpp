@@ -1,0 +1,77 @@
+// The C API's events: the last step's arrays, kept in C layout by the C world.
+#include "c_api.hpp"
+
+using namespace jostle;
+using namespace jostle::c_api;
+
+namespace {
+
+template <class From, class To> void convert(std::span<const From> from, std::vector<To>& to) {
+    to.clear();
+    to.reserve(from.size());
+    for (const From& event : from)
+        to.push_back(toC(event));
+}
+
+/// The array and its length, or NULL and 0 on misuse.
+template <class Event>
+const Event* handOut(const char* function, const jostle_world* world, int* count,
+                     std::vector<Event> jostle_world::*events) {
+    return guard<const Event*>(function, nullptr, [&]() -> const Event* {
+        if (count != nullptr)
+            *count = 0;
+        const jostle_world& w = worldOf(world);
+        required(count, "count");
+        const std::vector<Event>& array = w.*events;
+        *count = countOf(array.size());
+        return array.data();
+    });
+}
+
+} // namespace
+
+namespace jostle::c_api {
+
+void publishEvents(jostle_world& w) {
+    try {
+        convert(w.world.contactBegins(), w.contactBegins);
+        convert(w.world.contactEnds(), w.contactEnds);
+        convert(w.world.sensorBegins(), w.sensorBegins);
+        convert(w.world.sensorEnds(), w.sensorEnds);
+        convert(w.world.crushes(), w.crushes);
+    } catch (...) {
+        // Out of memory: better no events than a mix of two steps'.
+        w.contactBegins.clear();
+        w.contactEnds.clear();
+        w.sensorBegins.clear();
+        w.sensorEnds.clear();
+        w.crushes.clear();
+        throw;
+    }
+}
+
+} // namespace jostle::c_api
+
+extern "C" {
+
+const jostle_contact_event* jostle_world_contact_begins(const jostle_world* world, int* count) {
+    return handOut(__func__, world, count, &jostle_world::contactBegins);
+}
+
+const jostle_contact_event* jostle_world_contact_ends(const jostle_world* world, int* count) {
+    return handOut(__func__, world, count, &jostle_world::contactEnds);
+}
+
+const jostle_sensor_event* jostle_world_sensor_begins(const jostle_world* world, int* count) {
+    return handOut(__func__, world, count, &jostle_world::sensorBegins);
+}
+
+const jostle_sensor_event* jostle_world_sensor_ends(const jostle_world* world, int* count) {
+    return handOut(__func__, world, count, &jostle_world::sensorEnds);
+}
+
+const jostle_crush_event* jostle_world_crushes(const jostle_world* world, int* count) {
+    return handOut(__func__, world, count, &jostle_world::crushes);
+}
+
+} // extern "C"

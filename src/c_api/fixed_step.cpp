@@ -1,0 +1,74 @@
+// The C API's fixed-step clock: jostle::FixedStep behind an opaque pointer.
+#include "c_api.hpp"
+
+using namespace jostle;
+using namespace jostle::c_api;
+
+namespace {
+
+jostle_fixed_step& clockOf(jostle_fixed_step* clock) {
+    return required(clock, "clock");
+}
+const jostle_fixed_step& clockOf(const jostle_fixed_step* clock) {
+    return required(clock, "clock");
+}
+
+} // namespace
+
+extern "C" {
+
+jostle_fixed_step* jostle_fixed_step_create(float dt, int max_steps_per_frame) {
+    return guard<jostle_fixed_step*>(__func__, nullptr, [&] {
+        return new jostle_fixed_step{FixedStep(dt, max_steps_per_frame)};
+    });
+}
+
+void jostle_fixed_step_destroy(jostle_fixed_step* clock) {
+    delete clock;
+}
+
+int jostle_fixed_step_advance(jostle_fixed_step* clock, float frame_seconds) {
+    return guard(__func__, 0, [&] { return clockOf(clock).clock.advance(frame_seconds); });
+}
+
+int jostle_fixed_step_update(jostle_fixed_step* clock, jostle_world* world, float frame_seconds) {
+    const char* function = __func__; // inside the lambdas, __func__ is theirs
+    return guard(function, 0, [&] {
+        FixedStep& c = clockOf(clock).clock;
+        jostle_world& w = outsideStep(world); // checked before the clock counts the frame
+        const int steps = c.advance(frame_seconds);
+        // A failing step (out of memory) is reported, and the steps taken stand.
+        int taken = 0;
+        guard(function, 0, [&] {
+            for (; taken < steps; ++taken)
+                stepWorld(w, c.dt());
+            return 0;
+        });
+        return taken;
+    });
+}
+
+float jostle_fixed_step_alpha(const jostle_fixed_step* clock) {
+    return guard(__func__, 0.0f, [&] { return clockOf(clock).clock.alpha(); });
+}
+
+double jostle_fixed_step_dropped_seconds(const jostle_fixed_step* clock) {
+    return guard(__func__, 0.0, [&] { return clockOf(clock).clock.droppedSeconds(); });
+}
+
+float jostle_fixed_step_dt(const jostle_fixed_step* clock) {
+    return guard(__func__, 0.0f, [&] { return clockOf(clock).clock.dt(); });
+}
+
+int jostle_fixed_step_max_steps_per_frame(const jostle_fixed_step* clock) {
+    return guard(__func__, 0, [&] { return clockOf(clock).clock.maxStepsPerFrame(); });
+}
+
+bool jostle_fixed_step_reset(jostle_fixed_step* clock) {
+    return guard(__func__, false, [&] {
+        clockOf(clock).clock.reset();
+        return true;
+    });
+}
+
+} // extern "C"
