@@ -1,0 +1,1015 @@
+// The C API from a program compiled as C11: worlds, bodies, events, the pre-solve
+// callback, queries, tile maps and the fixed step, each checked against values worked
+// out by hand, and every kind of misuse checked against the error contract of jostle.h.
+#include <jostle/jostle.h>
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+// --- Checks: print where and what, exit non-zero at the first failure --------------------
+
+#define CHECK(cond, what)                                                                          \
+    do {                                                                                           \
+        if (!(cond)) {                                                                             \
+            fprintf(stderr, "%s:%d: CHECK(%s) failed: %s\n  last error: \"%s\"\n", __FILE__,       \
+                    __LINE__, #cond, what, jostle_last_error());                                   \
+            exit(1);                                                                               \
+        }                                                                                          \
+    } while (0)
+
+#define CHECK_NEAR(actual, expected, tolerance)                                                    \
+    do {                                                                                           \
+        const double a_ = (double)(actual), e_ = (double)(expected);                               \
+        if (!(fabs(a_ - e_) <= (double)(tolerance))) {                                             \
+            fprintf(stderr, "%s:%d: %s = %.9g, expected %s = %.9g within %g\n", __FILE__,          \
+                    __LINE__, #actual, a_, #expected, e_, (double)(tolerance));                    \
+            exit(1);                                                                               \
+        }                                                                                          \
+    } while (0)
+
+/// The last error starts with the C function's name and contains `phrase`.
+#define CHECK_ERROR(function, phrase)                                                              \
+    do {                                                                                           \
+        const char* m_ = jostle_last_error();                                                      \
+        if (strncmp(m_, function ": ", strlen(function ": ")) != 0 || !strstr(m_, phrase)) {       \
+            fprintf(stderr, "%s:%d: expected an error from %s about \"%s\", got \"%s\"\n",         \
+                    __FILE__, __LINE__, function, phrase, m_);                                     \
+            exit(1);                                                                               \
+        }                                                                                          \
+        jostle_clear_error();                                                                      \
+    } while (0)
+
+#define CHECK_NO_ERROR() CHECK(jostle_last_error()[0] == '\0', "no error expected")
+
+static bool same(jostle_body_id a, jostle_body_id b) {
+    return jostle_body_id_equal(a, b);
+}
+
+// --- Scenes ------------------------------------------------------------------------------
+
+static const float kDt = 1.0f / 60.0f;
+static const float kG = 800.0f; // y grows downward
+
+static jostle_world* make_world(float gravity) {
+    jostle_world_def def = jostle_default_world_def();
+    def.gravity.y = gravity;
+    jostle_world* world = jostle_world_create(&def);
+    CHECK(world != NULL, "jostle_world_create");
+    return world;
+}
+
+static jostle_body_id add_box(jostle_world* world, jostle_body_type type, float x, float y,
+                              float hw, float hh) {
+    jostle_body_def def = jostle_default_body_def();
+    def.type = type;
+    def.x = x;
+    def.y = y;
+    def.hw = hw;
+    def.hh = hh;
+    jostle_body_id id = jostle_body_create(world, &def);
+    CHECK(!jostle_body_id_is_null(id), "jostle_body_create");
+    return id;
+}
+
+// --- Defaults ----------------------------------------------------------------------------
+
+static void test_defaults(void) {
+    jostle_world_def w = jostle_default_world_def();
+    CHECK(w.gravity.x == 0 && w.gravity.y == 0, "no gravity by default");
+    CHECK(isinf(w.max_velocity) && w.max_velocity > 0, "no velocity clamp by default");
+    CHECK(w.solver == JOSTLE_SOLVER_PHYSICAL, "the physical model by default");
+    CHECK(w.sleeping, "sleeping on by default");
+    CHECK(w.physical.velocity_iterations == 4 && w.physical.position_iterations == 3,
+          "physical iterations");
+    CHECK(w.physical.friction_mix == JOSTLE_FRICTION_MIX_MIN, "friction mix");
+    CHECK(!w.classic.mass && !w.classic.coulomb && !w.classic.ccd, "classic options off");
+
+    jostle_body_def b = jostle_default_body_def();
+    CHECK(b.type == JOSTLE_BODY_DYNAMIC, "dynamic by default");
+    CHECK(b.hw == 0 && b.hh == 0, "no size by default");
+    CHECK(b.friction == 0.5f && b.density == 1.0f && b.gravity_scale == 1.0f, "body numbers");
+    CHECK(b.category == 1u && b.mask == 0xFFFFFFFFu && !b.sensor && b.user_data == NULL,
+          "body filter");
+
+    jostle_query_filter f = jostle_default_query_filter();
+    CHECK(f.mask == 0xFFFFFFFFu && f.category == 0xFFFFFFFFu && !f.include_sensors &&
+              jostle_body_id_is_null(f.ignore),
+          "query filter");
+
+    jostle_tile_map_def t = jostle_default_tile_map_def();
+    CHECK(t.friction == 0.5f && t.bounce == 0 && t.mask == 0xFFFFFFFFu && t.cells == NULL,
+          "tile map def");
+    CHECK(jostle_last_error()[0] == '\0', "a fresh thread has no error");
+}
+
+// --- Falling and landing -----------------------------------------------------------------
+
+/// Semi-implicit Euler: v += g dt, then y += v dt. After n steps from rest,
+/// v = n g dt and y = g dt^2 (1 + 2 + ... + n) = g dt^2 n (n + 1) / 2.
+static void test_free_fall(void) {
+    jostle_world* world = make_world(kG);
+    jostle_body_id box = add_box(world, JOSTLE_BODY_DYNAMIC, 0, 0, 10, 10);
+    const int n = 30;
+    for (int i = 0; i < n; ++i)
+        CHECK(jostle_world_step(world, kDt), "step");
+    const double dt = (double)kDt;
+    const jostle_vec2 p = jostle_body_get_position(world, box);
+    const jostle_vec2 v = jostle_body_get_velocity(world, box);
+    CHECK_NEAR(p.x, 0.0, 0.0);
+    CHECK_NEAR(p.y, kG * dt * dt * n * (n + 1) / 2, 1e-3);
+    CHECK_NEAR(v.y, n * kG * dt, 1e-3);
+    CHECK(jostle_world_destroy(world), "destroy");
+    CHECK_NO_ERROR();
+}
+
+/// A box dropped from y = 0 onto a floor whose top is at y = 290 comes to rest at
+/// 290 - hh = 280 (within the slop, 0.01 hh), after one contact begin between the two
+/// whose approach speed is sqrt(2 g h), h = 280, within one step's gravity.
+static void test_landing_and_contact_events(void) {
+    jostle_world* world = make_world(kG);
+    jostle_body_id floor = add_box(world, JOSTLE_BODY_STATIC, 0, 300, 400, 10);
+    jostle_body_id box = add_box(world, JOSTLE_BODY_DYNAMIC, 0, 0, 10, 10);
+
+    int begins = 0;
+    for (int i = 0; i < 120; ++i) {
+        CHECK(jostle_world_step(world, kDt), "step");
+        int count = -1;
+        const jostle_contact_event* events = jostle_world_contact_begins(world, &count);
+        CHECK(count >= 0, "count written");
+        for (int k = 0; k < count; ++k) {
+            CHECK(same(events[k].a, floor), "a is the body created first");
+            CHECK(same(events[k].b, box), "b is the box");
+            CHECK(events[k].normal.x == 0 && events[k].normal.y == 1, "from b towards a");
+            CHECK_NEAR(events[k].approach_speed, sqrt(2.0 * kG * 280.0), kG * kDt);
+            ++begins;
+        }
+        // The array stays put until the next step.
+        int again = -1;
+        CHECK(jostle_world_contact_begins(world, &again) == events && again == count,
+              "the same array until the next step");
+    }
+    CHECK(begins == 1, "one contact begin when it lands, none while it rests");
+
+    const jostle_vec2 p = jostle_body_get_position(world, box);
+    CHECK_NEAR(p.y, 280.0, 0.1 + 1e-3);
+    const jostle_touching t = jostle_body_get_touching(world, box);
+    CHECK(t.floor && !t.ceiling && !t.wall_left && !t.wall_right, "touching the floor only");
+    CHECK(jostle_body_get_separation(world, box).y < 0, "pushed up by the floor");
+
+    // A jump ends the contact.
+    CHECK(jostle_body_set_velocity(world, box, (jostle_vec2){0, -300}), "jump");
+    int ends = 0;
+    for (int i = 0; i < 10; ++i) {
+        CHECK(jostle_world_step(world, kDt), "step");
+        int count = 0;
+        const jostle_contact_event* events = jostle_world_contact_ends(world, &count);
+        for (int k = 0; k < count; ++k) {
+            CHECK(same(events[k].a, floor) && same(events[k].b, box), "the pair that parted");
+            CHECK(events[k].approach_speed == 0, "an end has no approach speed");
+            ++ends;
+        }
+    }
+    CHECK(ends == 1, "one contact end after the jump");
+    CHECK(!jostle_body_get_touching(world, box).floor, "in the air");
+    CHECK(jostle_world_destroy(world), "destroy");
+    CHECK_NO_ERROR();
+}
+
+/// A box falls through a sensor zone (y 130 to 170) onto the floor (top 290): it enters
+/// the zone, leaves it, and the zone does not slow it down.
+static void test_sensor_events(void) {
+    jostle_world* world = make_world(kG);
+    add_box(world, JOSTLE_BODY_STATIC, 0, 300, 400, 10);
+    jostle_body_def zone_def = jostle_default_body_def();
+    zone_def.type = JOSTLE_BODY_STATIC;
+    zone_def.y = 150;
+    zone_def.hw = 50;
+    zone_def.hh = 20;
+    zone_def.sensor = true;
+    jostle_body_id zone = jostle_body_create(world, &zone_def);
+    CHECK(jostle_body_is_sensor(world, zone), "a sensor");
+    jostle_body_id box = add_box(world, JOSTLE_BODY_DYNAMIC, 0, 0, 10, 10);
+
+    int begins = 0, ends = 0;
+    for (int i = 0; i < 120; ++i) {
+        CHECK(jostle_world_step(world, kDt), "step");
+        int count = 0;
+        const jostle_sensor_event* in = jostle_world_sensor_begins(world, &count);
+        for (int k = 0; k < count; ++k, ++begins)
+            CHECK(same(in[k].sensor, zone) && same(in[k].visitor, box), "sensor begin");
+        const jostle_sensor_event* out = jostle_world_sensor_ends(world, &count);
+        for (int k = 0; k < count; ++k, ++ends)
+            CHECK(same(out[k].sensor, zone) && same(out[k].visitor, box), "sensor end");
+        int contacts = 0;
+        const jostle_contact_event* c = jostle_world_contact_begins(world, &contacts);
+        for (int k = 0; k < contacts; ++k)
+            CHECK(!same(c[k].a, zone) && !same(c[k].b, zone), "sensors make no contacts");
+    }
+    CHECK(begins == 1 && ends == 1, "entered and left the zone once");
+    CHECK_NEAR(jostle_body_get_position(world, box).y, 280.0, 0.1 + 1e-3);
+    CHECK(jostle_world_destroy(world), "destroy");
+    CHECK_NO_ERROR();
+}
+
+/// A kinematic block moving down onto a box that rests on the floor crushes it.
+static void test_crush_event(void) {
+    jostle_world* world = make_world(kG);
+    jostle_body_id floor = add_box(world, JOSTLE_BODY_STATIC, 0, 50, 1000, 50); // top at 0
+    jostle_body_id box = add_box(world, JOSTLE_BODY_DYNAMIC, 0, -5, 5, 5);
+    jostle_body_def block_def = jostle_default_body_def();
+    block_def.type = JOSTLE_BODY_KINEMATIC;
+    block_def.y = -40;
+    block_def.hw = 30;
+    block_def.hh = 10;
+    block_def.vy = 60;
+    jostle_body_id block = jostle_body_create(world, &block_def);
+
+    bool crushed = false;
+    for (int i = 0; i < 120 && !crushed; ++i) {
+        CHECK(jostle_world_step(world, kDt), "step");
+        int count = 0;
+        const jostle_crush_event* crushes = jostle_world_crushes(world, &count);
+        for (int k = 0; k < count; ++k) {
+            CHECK(same(crushes[k].body, box), "the box is crushed");
+            CHECK(same(crushes[k].by, block), "by the block");
+            CHECK(same(crushes[k].against, floor), "against the floor");
+            crushed = true;
+        }
+    }
+    CHECK(crushed, "a crush is reported");
+    CHECK(jostle_world_destroy(world), "destroy");
+    CHECK_NO_ERROR();
+}
+
+// --- World settings and body properties --------------------------------------------------
+
+static void test_world_settings(void) {
+    jostle_world* world = make_world(kG);
+    CHECK(jostle_world_set_gravity(world, (jostle_vec2){3, -4}), "set gravity");
+    jostle_vec2 g = jostle_world_get_gravity(world);
+    CHECK(g.x == 3 && g.y == -4, "gravity back");
+    CHECK(jostle_world_set_max_velocity(world, 500), "set max velocity");
+    CHECK(jostle_world_get_max_velocity(world) == 500, "max velocity back");
+    CHECK(jostle_world_set_solver(world, JOSTLE_SOLVER_CLASSIC), "set solver");
+    CHECK(jostle_world_get_solver(world) == JOSTLE_SOLVER_CLASSIC, "solver back");
+    CHECK(jostle_world_set_sleeping(world, false), "set sleeping");
+    CHECK(!jostle_world_get_sleeping(world), "sleeping back");
+
+    jostle_classic_options classic = {true, true, true};
+    CHECK(jostle_world_set_classic_options(world, classic), "set classic options");
+    classic = jostle_world_get_classic_options(world);
+    CHECK(classic.mass && classic.coulomb && classic.ccd, "classic options back");
+
+    jostle_physical_options physical = jostle_world_get_physical_options(world);
+    physical.velocity_iterations = 12;
+    physical.slop = 0.02f;
+    physical.friction_mix = JOSTLE_FRICTION_MIX_GEOMETRIC_MEAN;
+    CHECK(jostle_world_set_physical_options(world, physical), "set physical options");
+    physical = jostle_world_get_physical_options(world);
+    CHECK(physical.velocity_iterations == 12 && physical.slop == 0.02f &&
+              physical.friction_mix == JOSTLE_FRICTION_MIX_GEOMETRIC_MEAN,
+          "physical options back");
+    CHECK(jostle_world_destroy(world), "destroy");
+    CHECK_NO_ERROR();
+}
+
+static void test_body_properties(void) {
+    jostle_world* world = make_world(kG);
+    jostle_body_id a = add_box(world, JOSTLE_BODY_DYNAMIC, 1, 2, 3, 4);
+    jostle_body_id b = add_box(world, JOSTLE_BODY_STATIC, 0, 100, 50, 5);
+    int marker = 42;
+
+    CHECK(jostle_body_get_type(world, a) == JOSTLE_BODY_DYNAMIC, "type");
+    CHECK(jostle_body_set_position(world, a, (jostle_vec2){5, 6}), "set position");
+    CHECK(jostle_body_get_position(world, a).x == 5 && jostle_body_get_position(world, a).y == 6,
+          "position");
+    CHECK(jostle_body_set_velocity(world, a, (jostle_vec2){7, 8}), "set velocity");
+    CHECK(jostle_body_get_velocity(world, a).x == 7, "velocity");
+    CHECK(jostle_body_set_half_extents(world, a, (jostle_vec2){2, 3}), "set half extents");
+    CHECK(jostle_body_get_half_extents(world, a).x == 2 &&
+              jostle_body_get_half_extents(world, a).y == 3,
+          "half extents");
+    CHECK(jostle_body_set_bounce(world, a, 0.25f) && jostle_body_get_bounce(world, a) == 0.25f,
+          "bounce");
+    CHECK(jostle_body_set_friction(world, a, 0.75f) && jostle_body_get_friction(world, a) == 0.75f,
+          "friction");
+    // Mass: density x area, area = 4 hw hh = 24.
+    CHECK(jostle_body_get_mass(world, a) == 24.0f, "mass from density 1");
+    CHECK(jostle_body_set_mass(world, a, 5) && jostle_body_get_mass(world, a) == 5.0f, "mass");
+    CHECK(jostle_body_set_density(world, a, 2) && jostle_body_get_mass(world, a) == 48.0f,
+          "density drops the explicit mass");
+    CHECK(isinf(jostle_body_get_mass(world, b)), "a static body is infinitely heavy");
+    CHECK(jostle_body_set_gravity_scale(world, a, -1) &&
+              jostle_body_get_gravity_scale(world, a) == -1,
+          "gravity scale");
+    CHECK(jostle_body_set_damping(world, a, 0.5f) && jostle_body_get_damping(world, a) == 0.5f,
+          "damping");
+    CHECK(jostle_body_set_bullet(world, a, true) && jostle_body_is_bullet(world, a), "bullet");
+    CHECK(jostle_body_set_user_data(world, a, &marker) &&
+              jostle_body_get_user_data(world, a) == &marker,
+          "user data");
+    CHECK(jostle_body_set_one_way(world, b, (jostle_vec2){0, -1}) &&
+              jostle_body_get_one_way(world, b).y == -1,
+          "one way");
+    CHECK(jostle_body_drop_through(world, a, 0.5f), "drop through");
+    CHECK(jostle_body_set_category(world, a, 4) && jostle_body_get_category(world, a) == 4,
+          "category");
+    CHECK(jostle_body_set_mask(world, a, 6) && jostle_body_get_mask(world, a) == 6, "mask");
+    CHECK(jostle_body_set_sensor(world, a, true) && jostle_body_is_sensor(world, a), "sensor");
+    CHECK(jostle_body_set_type(world, a, JOSTLE_BODY_KINEMATIC) &&
+              jostle_body_get_type(world, a) == JOSTLE_BODY_KINEMATIC,
+          "type");
+    CHECK(jostle_body_is_awake(world, a), "awake");
+    CHECK(jostle_body_wake(world, a), "wake");
+
+    // A body's def makes a copy of it.
+    jostle_body_def def = jostle_body_get_def(world, a);
+    CHECK(def.x == 5 && def.hw == 2 && def.category == 4 && def.user_data == &marker &&
+              def.type == JOSTLE_BODY_KINEMATIC && def.density == 2,
+          "the def of a body");
+    jostle_body_id copy = jostle_body_create(world, &def);
+    CHECK(!jostle_body_id_is_null(copy), "created from a body's def");
+
+    // The body list, in creation order, with the buffer rule.
+    CHECK(jostle_world_body_count(world) == 3, "three bodies");
+    CHECK(jostle_world_bodies(world, NULL, 0) == 3, "the count alone");
+    jostle_body_id list[3] = {{0, 0}, {0, 0}, {0, 0}};
+    CHECK(jostle_world_bodies(world, list, 2) == 3, "the full count with a small buffer");
+    CHECK(same(list[0], a) && same(list[1], b) && jostle_body_id_is_null(list[2]),
+          "the first two, and nothing beyond the capacity");
+    CHECK(jostle_world_bodies(world, list, 3) == 3 && same(list[2], copy), "all three");
+
+    CHECK(jostle_body_destroy(world, a), "destroy a body");
+    CHECK(!jostle_body_is_valid(world, a), "stale after destroy");
+    CHECK(jostle_body_is_valid(world, b), "the other is alive");
+    CHECK(jostle_world_body_count(world) == 2, "two bodies");
+    CHECK(jostle_world_destroy(world), "destroy");
+    CHECK_NO_ERROR();
+}
+
+// --- Queries -----------------------------------------------------------------------------
+
+/// A static scene, so every answer follows from the numbers:
+///   floor: x -100..100, y 90..110 (top at 90)
+///   crate: x -10..10,   y 70..90 (standing on the floor)
+///   zone:  a sensor, x 45..55, y 45..55
+static void test_queries(void) {
+    jostle_world* world = make_world(0);
+    jostle_body_id floor = add_box(world, JOSTLE_BODY_STATIC, 0, 100, 100, 10);
+    jostle_body_id crate = add_box(world, JOSTLE_BODY_STATIC, 0, 80, 10, 10);
+    jostle_body_def zone_def = jostle_default_body_def();
+    zone_def.type = JOSTLE_BODY_STATIC;
+    zone_def.x = 50;
+    zone_def.y = 50;
+    zone_def.hw = 5;
+    zone_def.hh = 5;
+    zone_def.sensor = true;
+    jostle_body_id zone = jostle_body_create(world, &zone_def);
+    jostle_query_filter with_sensors = jostle_default_query_filter();
+    with_sensors.include_sensors = true;
+    jostle_body_id found[4];
+
+    // Points: inside the crate; on the seam of crate and floor, which belongs to both.
+    CHECK(jostle_query_point(world, (jostle_vec2){0, 80}, NULL, found, 4) == 1, "one body");
+    CHECK(same(found[0], crate), "the crate");
+    jostle_body_id sentinel = {77, 77};
+    found[1] = sentinel;
+    CHECK(jostle_query_point(world, (jostle_vec2){0, 90}, NULL, found, 1) == 2,
+          "both on the seam, counted though only one fits");
+    CHECK(same(found[0], floor) && same(found[1], sentinel), "floor first, nothing beyond");
+    CHECK(jostle_query_point(world, (jostle_vec2){50, 50}, NULL, NULL, 0) == 0,
+          "sensors are left out by default");
+    CHECK(jostle_query_point(world, (jostle_vec2){50, 50}, &with_sensors, found, 4) == 1 &&
+              same(found[0], zone),
+          "the sensor when asked");
+
+    // Boxes: one inside the crate reaches down to 85, short of the floor.
+    CHECK(jostle_query_box(world, (jostle_vec2){0, 80}, (jostle_vec2){5, 5}, NULL, found, 4) == 1 &&
+              same(found[0], crate),
+          "the crate only");
+    CHECK(jostle_query_rect(world, (jostle_vec2){-200, -200}, (jostle_vec2){200, 200}, NULL, found,
+                            4) == 2,
+          "floor and crate");
+    CHECK(jostle_query_rect(world, (jostle_vec2){-200, -200}, (jostle_vec2){200, 200},
+                            &with_sensors, found, 4) == 3,
+          "and the zone");
+    jostle_query_filter not_crate = jostle_default_query_filter();
+    not_crate.ignore = crate;
+    CHECK(jostle_query_rect(world, (jostle_vec2){-200, -200}, (jostle_vec2){200, 200}, &not_crate,
+                            found, 4) == 1 &&
+              same(found[0], floor),
+          "ignore leaves the crate out");
+
+    // A ray straight down from (0, 0) to (0, 200) meets the crate's top, y = 70, at
+    // fraction 70 / 200, and then the floor's top, y = 90, at 90 / 200.
+    jostle_ray_hit hit;
+    CHECK(jostle_ray_cast(world, (jostle_vec2){0, 0}, (jostle_vec2){0, 200}, NULL, &hit), "a hit");
+    CHECK(same(hit.body, crate), "the crate first");
+    CHECK(hit.point.x == 0 && hit.point.y == 70, "on its top face");
+    CHECK(hit.normal.x == 0 && hit.normal.y == -1, "facing the ray");
+    CHECK_NEAR(hit.fraction, 70.0 / 200.0, 1e-6);
+    jostle_ray_hit hits[2];
+    CHECK(jostle_ray_cast_all(world, (jostle_vec2){0, 0}, (jostle_vec2){0, 200}, NULL, hits, 2) ==
+              2,
+          "two on the way");
+    CHECK(same(hits[0].body, crate) && same(hits[1].body, floor), "nearest first");
+    CHECK_NEAR(hits[1].fraction, 90.0 / 200.0, 1e-6);
+    CHECK(jostle_ray_cast_all(world, (jostle_vec2){0, 0}, (jostle_vec2){0, 200}, NULL, hits, 1) ==
+              2,
+          "the full count with room for one");
+    // Down x = 50: the zone (top 45, fraction 45 / 200) only if sensors are asked for.
+    CHECK(
+        jostle_ray_cast(world, (jostle_vec2){50, 0}, (jostle_vec2){50, 200}, &with_sensors, &hit) &&
+            same(hit.body, zone),
+        "the zone");
+    CHECK_NEAR(hit.fraction, 45.0 / 200.0, 1e-6);
+    CHECK(jostle_ray_cast(world, (jostle_vec2){50, 0}, (jostle_vec2){50, 200}, NULL, &hit) &&
+              same(hit.body, floor),
+          "through the zone to the floor");
+    // A miss is an ordinary false: no error, and the hit is left as it was.
+    hit.fraction = -1;
+    CHECK(!jostle_ray_cast(world, (jostle_vec2){500, 0}, (jostle_vec2){500, 10}, NULL, &hit),
+          "a miss");
+    CHECK(hit.fraction == -1, "untouched");
+    CHECK_NO_ERROR();
+
+    // A box of half size 5 dropped from (-50, 0) by 200 stops on the floor: centre
+    // y = 90 - 5 = 85, fraction 85 / 200.
+    jostle_box_cast_hit cast;
+    CHECK(jostle_box_cast(world, (jostle_vec2){-50, 0}, (jostle_vec2){5, 5}, (jostle_vec2){0, 200},
+                          NULL, &cast),
+          "the box lands");
+    CHECK(same(cast.body, floor), "on the floor");
+    CHECK(cast.centre.x == -50 && cast.centre.y == 85, "touching it");
+    CHECK(cast.normal.x == 0 && cast.normal.y == -1, "pushed up");
+    CHECK_NEAR(cast.fraction, 85.0 / 200.0, 1e-6);
+
+    // Move and slide: from (-50, 80) by (30, 20). The box's bottom (85) meets the floor
+    // (90) a quarter of the way, at x = -42.5; it slides the rest of x along the floor,
+    // to x = -20 (its right side at -15, short of the crate at -10).
+    jostle_vec2 end;
+    jostle_move_hit met[2];
+    CHECK(jostle_move_and_slide(world, (jostle_vec2){-50, 80}, (jostle_vec2){5, 5},
+                                (jostle_vec2){30, 20}, NULL, &end, met, 2) == 1,
+          "one body met");
+    CHECK_NEAR(end.x, -20.0, 1e-4);
+    CHECK(end.y == 85, "on the floor");
+    CHECK(same(met[0].body, floor) && met[0].normal.y == -1, "the floor, from above");
+    CHECK(jostle_move_and_slide(world, (jostle_vec2){-50, 80}, (jostle_vec2){5, 5},
+                                (jostle_vec2){30, 20}, NULL, &end, NULL, 0) == 1,
+          "the count without a buffer");
+    CHECK(jostle_world_destroy(world), "destroy");
+    CHECK_NO_ERROR();
+}
+
+// --- Tile maps ---------------------------------------------------------------------------
+
+/// Tiles of 16 at the origin:      row 0  ........
+///                                 row 1  #......#
+///                                 row 2  ########   (top at y = 32)
+static void test_tile_map(void) {
+    jostle_world* world = make_world(kG);
+    static const char* const rows[3] = {"........", "#......#", "########"};
+    unsigned char cells[3 * 8];
+    for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 8; ++c)
+            cells[r * 8 + c] = rows[r][c] == '#';
+    jostle_tile_map_def def = jostle_default_tile_map_def();
+    def.tile = 16;
+    def.columns = 8;
+    def.rows = 3;
+    def.cells = cells;
+    jostle_tile_map_id map = jostle_tile_map_create(world, &def);
+    CHECK(!jostle_tile_map_id_is_null(map) && jostle_tile_map_is_valid(world, map), "created");
+    CHECK(jostle_tile_map_columns(world, map) == 8 && jostle_tile_map_rows(world, map) == 3,
+          "its size");
+    // Two wall tiles and the floor, whose extents differ: three boxes.
+    jostle_body_id parts[3];
+    CHECK(jostle_tile_map_bodies(world, map, NULL, 0) == 3, "three boxes");
+    CHECK(jostle_tile_map_bodies(world, map, parts, 3) == 3, "listed");
+    CHECK(jostle_tile_map_id_equal(jostle_tile_map_of(world, parts[2]), map), "part of the map");
+    CHECK(jostle_tile_map_is_solid(world, map, 0, 1) && !jostle_tile_map_is_solid(world, map, 1, 1),
+          "cells as given");
+    CHECK(!jostle_tile_map_is_solid(world, map, -1, 0) &&
+              !jostle_tile_map_is_solid(world, map, 8, 2),
+          "outside is empty");
+    int column = -1, row = -1;
+    CHECK(jostle_tile_map_tile_at(world, map, (jostle_vec2){56, 40}, &column, &row), "inside");
+    CHECK(column == 3 && row == 2, "tile (3, 2)");
+    CHECK(jostle_tile_map_tile_at(world, map, (jostle_vec2){48, 32}, &column, &row) &&
+              column == 3 && row == 2,
+          "a corner belongs to the larger column and row");
+    CHECK(!jostle_tile_map_tile_at(world, map, (jostle_vec2){-1, 0}, &column, &row), "outside");
+    CHECK_NO_ERROR();
+
+    // A box of half size 4 over column 3 lands on row 2's top: y = 32 - 4 = 28.
+    jostle_body_id box = add_box(world, JOSTLE_BODY_DYNAMIC, 56, 4, 4, 4);
+    CHECK(jostle_tile_map_id_is_null(jostle_tile_map_of(world, box)), "not part of a map");
+    for (int i = 0; i < 60; ++i)
+        CHECK(jostle_world_step(world, kDt), "step");
+    CHECK_NEAR(jostle_body_get_position(world, box).y, 28.0, 0.04 + 1e-3);
+    CHECK(jostle_body_get_touching(world, box).floor, "standing on the tiles");
+
+    // Dig the tile under it (x 48..64 holds the box's 52..60): it falls through.
+    CHECK(jostle_tile_map_set_tile(world, map, 3, 2, false), "dig");
+    CHECK(!jostle_tile_map_is_solid(world, map, 3, 2), "dug");
+    for (int i = 0; i < 30; ++i)
+        CHECK(jostle_world_step(world, kDt), "step");
+    CHECK(jostle_body_get_position(world, box).y > 48 + 4, "fallen below the map");
+
+    CHECK(jostle_tile_map_destroy(world, map), "destroy the map");
+    CHECK(!jostle_tile_map_is_valid(world, map), "stale");
+    CHECK(jostle_world_body_count(world) == 1, "its bodies are gone, the box remains");
+    CHECK_NO_ERROR();
+    CHECK(!jostle_tile_map_set_tile(world, map, 0, 0, true), "a stale map");
+    CHECK_ERROR("jostle_tile_map_set_tile", "stale");
+    CHECK(jostle_tile_map_columns(world, map) == 0, "no size");
+    CHECK_ERROR("jostle_tile_map_columns", "stale");
+
+    // Misuse of the def.
+    jostle_tile_map_def bad = def;
+    bad.cells = NULL;
+    CHECK(jostle_tile_map_id_is_null(jostle_tile_map_create(world, &bad)), "no cells");
+    CHECK_ERROR("jostle_tile_map_create", "def.cells is NULL");
+    bad = def;
+    bad.columns = 0;
+    CHECK(jostle_tile_map_id_is_null(jostle_tile_map_create(world, &bad)), "no columns");
+    CHECK_ERROR("jostle_tile_map_create", "def.columns must be >= 1");
+    bad = def;
+    bad.tile = 0;
+    CHECK(jostle_tile_map_id_is_null(jostle_tile_map_create(world, &bad)), "tile 0");
+    CHECK_ERROR("jostle_tile_map_create", "TileMapDef.tile");
+    map = jostle_tile_map_create(world, &def);
+    CHECK(!jostle_tile_map_set_tile(world, map, 8, 0, true), "outside the map");
+    CHECK_ERROR("jostle_tile_map_set_tile", "outside the map");
+    CHECK(jostle_world_destroy(world), "destroy");
+    CHECK_NO_ERROR();
+}
+
+// --- The pre-solve callback --------------------------------------------------------------
+
+typedef struct callback_state {
+    jostle_world* world;
+    int calls;
+    bool keep;          // what to return
+    float bounce;       // NaN: leave it
+    bool misbehave;     // try what is refused inside a callback
+    bool destroy_box;   // destroy the moving body of the pair
+    bool dig;           // remove the tile under the box
+    bool change_bodies; // call body setters on the pair
+    jostle_tile_map_id map;
+    jostle_body_id created;
+    int refused;
+} callback_state;
+
+static bool pre_solve(jostle_collision* c, void* context) {
+    callback_state* s = (callback_state*)context;
+    ++s->calls;
+    if (!isnan(s->bounce))
+        c->bounce = s->bounce;
+    if (s->misbehave && s->calls == 1) {
+        // Refused: whatever changes the world as a whole.
+        if (!jostle_world_step(s->world, kDt) &&
+            strstr(jostle_last_error(), "jostle_world_step: called from a callback during "
+                                        "jostle_world_step"))
+            ++s->refused;
+        if (!jostle_world_set_gravity(s->world, (jostle_vec2){0, 1}) &&
+            strstr(jostle_last_error(), "jostle_world_set_gravity: called from a callback"))
+            ++s->refused;
+        if (!jostle_world_set_pre_solve(s->world, NULL, NULL))
+            ++s->refused;
+        if (!jostle_world_destroy(s->world))
+            ++s->refused;
+        jostle_clear_error();
+        // Allowed: reading, querying, creating.
+        jostle_body_id found[2];
+        const jostle_vec2 at = jostle_body_get_position(s->world, c->b);
+        if (jostle_query_point(s->world, at, NULL, found, 2) < 1)
+            s->refused = -100;
+        jostle_body_def def = jostle_default_body_def();
+        def.x = 1000;
+        def.hw = 1;
+        def.hh = 1;
+        s->created = jostle_body_create(s->world, &def);
+    }
+    if (s->destroy_box)
+        jostle_body_destroy(s->world, c->b); // the box: created after the floor
+    if (s->change_bodies) {
+        // Allowed, as in C++: the solver takes the bodies as they are now. Each change to
+        // the dynamic body of the pair is undone but its size's, so that the pair keeps
+        // touching and the callback keeps coming.
+        const jostle_body_id body =
+            jostle_body_get_type(s->world, c->b) == JOSTLE_BODY_DYNAMIC ? c->b : c->a;
+        const float size = 10.0f + (float)(s->calls % 5);
+        jostle_body_set_type(s->world, body, JOSTLE_BODY_KINEMATIC);
+        jostle_body_set_type(s->world, body, JOSTLE_BODY_DYNAMIC);
+        jostle_body_set_sensor(s->world, body, true);
+        jostle_body_set_sensor(s->world, body, false);
+        jostle_body_set_half_extents(s->world, body, (jostle_vec2){size, 10});
+        jostle_body_set_position(s->world, body, jostle_body_get_position(s->world, body));
+        jostle_body_set_mass(s->world, body, size);
+        jostle_body_wake(s->world, body);
+    }
+    if (s->dig && s->calls == 1)
+        jostle_tile_map_set_tile(s->world, s->map, 3, 2, false);
+    return s->keep;
+}
+
+static callback_state callback_defaults(jostle_world* world) {
+    callback_state s;
+    memset(&s, 0, sizeof s);
+    s.world = world;
+    s.keep = true;
+    s.bounce = NAN;
+    return s;
+}
+
+/// The landing scene of test_landing_and_contact_events, with a callback.
+static jostle_world* landing_scene(callback_state* s, jostle_body_id* box) {
+    jostle_world* world = make_world(kG);
+    add_box(world, JOSTLE_BODY_STATIC, 0, 300, 400, 10);
+    *box = add_box(world, JOSTLE_BODY_DYNAMIC, 0, 0, 10, 10);
+    *s = callback_defaults(world);
+    CHECK(jostle_world_set_pre_solve(world, pre_solve, s), "set pre-solve");
+    return world;
+}
+
+static void run(jostle_world* world, int steps) {
+    for (int i = 0; i < steps; ++i)
+        CHECK(jostle_world_step(world, kDt), "step");
+}
+
+static float lowest_vy_after(jostle_world* world, jostle_body_id box, int steps) {
+    float lowest = 0;
+    for (int i = 0; i < steps; ++i) {
+        CHECK(jostle_world_step(world, kDt), "step");
+        const float vy = jostle_body_get_velocity(world, box).y;
+        if (vy < lowest)
+            lowest = vy;
+    }
+    return lowest;
+}
+
+static void test_pre_solve(void) {
+    callback_state s;
+    jostle_body_id box;
+
+    // Kept, bounce 0: the box lands and stays (never moves up faster than the slop's
+    // correction could make it).
+    jostle_world* world = landing_scene(&s, &box);
+    CHECK(lowest_vy_after(world, box, 90) > -1, "no bounce");
+    CHECK(s.calls > 0, "called");
+    CHECK(jostle_world_destroy(world), "destroy");
+
+    // Bounce 1 from the callback: it leaves the floor at about its landing speed, 669.
+    world = landing_scene(&s, &box);
+    s.bounce = 1;
+    CHECK(lowest_vy_after(world, box, 90) < -600, "bounced");
+    CHECK(jostle_world_destroy(world), "destroy");
+
+    // Vetoed: the box falls through the floor.
+    world = landing_scene(&s, &box);
+    s.keep = false;
+    run(world, 90);
+    CHECK(jostle_body_get_position(world, box).y > 310, "fell through");
+    CHECK(s.calls > 0, "asked");
+    CHECK(jostle_world_destroy(world), "destroy");
+
+    // What a callback may not do is refused; what it may do works.
+    world = landing_scene(&s, &box);
+    s.misbehave = true;
+    run(world, 90);
+    CHECK(s.refused == 4, "step, set_gravity, set_pre_solve and destroy refused");
+    CHECK(jostle_body_is_valid(world, s.created), "created from the callback");
+    CHECK(jostle_world_get_gravity(world).y == kG, "gravity unchanged");
+    CHECK(jostle_world_step(world, kDt), "stepping again after the callback");
+    CHECK(jostle_world_set_pre_solve(world, NULL, NULL), "removed outside a step");
+    CHECK(jostle_world_destroy(world), "destroy");
+    CHECK_NO_ERROR();
+
+    // Destroying the box from the callback is safe: it leaves the step at once.
+    world = landing_scene(&s, &box);
+    s.destroy_box = true;
+    run(world, 60);
+    CHECK(!jostle_body_is_valid(world, box), "destroyed");
+    CHECK(s.calls == 1, "asked once: the pair is gone");
+    CHECK(jostle_world_body_count(world) == 1, "the floor alone");
+    CHECK(jostle_world_destroy(world), "destroy");
+    CHECK_NO_ERROR();
+
+    // Body setters from the callback, in both models: the steps go on.
+    for (int model = 0; model < 2; ++model) {
+        world = landing_scene(&s, &box);
+        CHECK(
+            jostle_world_set_solver(world, model ? JOSTLE_SOLVER_CLASSIC : JOSTLE_SOLVER_PHYSICAL),
+            "model");
+        add_box(world, JOSTLE_BODY_DYNAMIC, 5, -30, 10, 10); // a pile, for more pairs
+        s.change_bodies = true;
+        run(world, 120);
+        // The box lands after 0.84 s, sqrt(2 * 280 / g), step 51 of 120; from then on the
+        // callback comes at least once a step.
+        CHECK(s.calls >= 120 - 51, "called step after step");
+        CHECK(jostle_world_destroy(world), "destroy");
+        CHECK_NO_ERROR();
+    }
+
+    // Digging a tile from the callback: the box falls through the hole.
+    world = make_world(kG);
+    unsigned char cells[3 * 8] = {0};
+    memset(cells + 2 * 8, 1, 8); // row 2 solid, at y 32..48 as in test_tile_map
+    jostle_tile_map_def def = jostle_default_tile_map_def();
+    def.tile = 16;
+    def.columns = 8;
+    def.rows = 3;
+    def.cells = cells;
+    s = callback_defaults(world);
+    s.map = jostle_tile_map_create(world, &def);
+    s.dig = true;
+    box = add_box(world, JOSTLE_BODY_DYNAMIC, 56, 4, 4, 4);
+    CHECK(jostle_world_set_pre_solve(world, pre_solve, &s), "set pre-solve");
+    run(world, 60);
+    CHECK(!jostle_tile_map_is_solid(world, s.map, 3, 2), "dug from the callback");
+    CHECK(jostle_body_get_position(world, box).y > 48 + 4, "fell through the hole");
+    CHECK(jostle_world_destroy(world), "destroy");
+    CHECK_NO_ERROR();
+}
+
+// --- The fixed step ----------------------------------------------------------------------
+
+static void test_fixed_step(void) {
+    jostle_fixed_step* clock = jostle_fixed_step_create(kDt, 8);
+    CHECK(clock != NULL, "created");
+    CHECK(jostle_fixed_step_dt(clock) == kDt && jostle_fixed_step_max_steps_per_frame(clock) == 8,
+          "its settings");
+    CHECK(jostle_fixed_step_advance(clock, kDt) == 1 && jostle_fixed_step_alpha(clock) == 0,
+          "a frame of dt is a step");
+    CHECK(jostle_fixed_step_advance(clock, kDt / 2) == 0, "half a step waits");
+    CHECK_NEAR(jostle_fixed_step_alpha(clock), 0.5, 1e-6);
+
+    // The other half, through update: one step of the world, v = g dt.
+    jostle_world* world = make_world(kG);
+    jostle_body_id box = add_box(world, JOSTLE_BODY_DYNAMIC, 0, 0, 1, 1);
+    CHECK(jostle_fixed_step_update(clock, world, kDt / 2) == 1, "one step");
+    CHECK_NEAR(jostle_body_get_velocity(world, box).y, kG * kDt, 1e-4);
+
+    // A second's frame is 60 steps, 8 taken, 52 dropped.
+    CHECK(jostle_fixed_step_advance(clock, 1.0f) == 8, "capped");
+    CHECK_NEAR(jostle_fixed_step_dropped_seconds(clock), 52.0 / 60.0, 1e-6);
+    CHECK(jostle_fixed_step_reset(clock) && jostle_fixed_step_alpha(clock) == 0, "reset");
+
+    // Misuse: nothing counted.
+    CHECK(jostle_fixed_step_advance(clock, kDt / 2) == 0, "half a step");
+    CHECK(jostle_fixed_step_update(clock, NULL, kDt / 2) == 0, "no world");
+    CHECK_ERROR("jostle_fixed_step_update", "world is NULL");
+    CHECK_NEAR(jostle_fixed_step_alpha(clock), 0.5, 1e-6); // the frame was not counted
+    CHECK(jostle_fixed_step_advance(clock, -1) == 0, "negative frame");
+    CHECK_ERROR("jostle_fixed_step_advance", "frameSeconds");
+    CHECK(jostle_fixed_step_create(0, 8) == NULL, "dt 0");
+    CHECK_ERROR("jostle_fixed_step_create", "dt");
+    CHECK(jostle_fixed_step_create(kDt, 0) == NULL, "no steps");
+    CHECK_ERROR("jostle_fixed_step_create", "maxStepsPerFrame");
+    CHECK(jostle_fixed_step_alpha(NULL) == 0, "no clock");
+    CHECK_ERROR("jostle_fixed_step_alpha", "clock is NULL");
+    jostle_fixed_step_destroy(NULL);
+    jostle_fixed_step_destroy(clock);
+    CHECK(jostle_world_destroy(world), "destroy");
+    CHECK_NO_ERROR();
+}
+
+// --- Misuse ------------------------------------------------------------------------------
+
+typedef struct handler_log {
+    int calls;
+    char last[512];
+} handler_log;
+
+static void log_error(const char* message, void* context) {
+    handler_log* log = (handler_log*)context;
+    ++log->calls;
+    snprintf(log->last, sizeof log->last, "%s", message);
+    // A misuse inside the handler is recorded, and does not call the handler again.
+    jostle_world_step(NULL, 0);
+}
+
+static void test_misuse(void) {
+    const jostle_vec2 nan2 = {NAN, 0};
+    jostle_body_def def = jostle_default_body_def();
+    def.hw = 1;
+    def.hh = 1;
+
+    // A NULL world: every kind of function.
+    CHECK(!jostle_world_step(NULL, kDt), "step");
+    CHECK_ERROR("jostle_world_step", "world is NULL");
+    CHECK(jostle_body_id_is_null(jostle_body_create(NULL, &def)), "create");
+    CHECK_ERROR("jostle_body_create", "world is NULL");
+    jostle_body_id some = {1, 1};
+    jostle_vec2 p = jostle_body_get_position(NULL, some);
+    CHECK(p.x == 0 && p.y == 0, "a zero vector");
+    CHECK_ERROR("jostle_body_get_position", "world is NULL");
+    CHECK(!jostle_body_set_position(NULL, some, p), "set");
+    CHECK_ERROR("jostle_body_set_position", "world is NULL");
+    CHECK(!jostle_body_is_valid(NULL, some), "is_valid");
+    CHECK_ERROR("jostle_body_is_valid", "world is NULL");
+    CHECK(jostle_world_body_count(NULL) == 0, "count");
+    CHECK_ERROR("jostle_world_body_count", "world is NULL");
+    CHECK(jostle_world_get_solver(NULL) == JOSTLE_SOLVER_CLASSIC, "the enum of value 0");
+    CHECK_ERROR("jostle_world_get_solver", "world is NULL");
+    CHECK(jostle_query_point(NULL, p, NULL, NULL, 0) == 0, "query");
+    CHECK_ERROR("jostle_query_point", "world is NULL");
+    int count = 5;
+    CHECK(jostle_world_contact_begins(NULL, &count) == NULL && count == 0, "events");
+    CHECK_ERROR("jostle_world_contact_begins", "world is NULL");
+    CHECK(jostle_tile_map_rows(NULL, (jostle_tile_map_id){1, 1}) == 0, "tile map");
+    CHECK_ERROR("jostle_tile_map_rows", "world is NULL");
+    CHECK(jostle_world_destroy(NULL), "destroying NULL is not an error, as with free");
+    CHECK_NO_ERROR();
+
+    // Worlds: a NULL, zeroed or out-of-range def.
+    CHECK(jostle_world_create(NULL) == NULL, "no def");
+    CHECK_ERROR("jostle_world_create", "def is NULL");
+    jostle_world_def wdef;
+    memset(&wdef, 0, sizeof wdef);
+    wdef.max_velocity = 1;
+    wdef.physical.velocity_iterations = 1;
+    wdef.physical.correction = 1;
+    CHECK(jostle_world_create(&wdef) == NULL, "a def not from jostle_default_world_def");
+    CHECK_ERROR("jostle_world_create", "def was not made by jostle_default_world_def()");
+    wdef = jostle_default_world_def();
+    wdef.max_velocity = 0;
+    CHECK(jostle_world_create(&wdef) == NULL, "max velocity 0");
+    CHECK_ERROR("jostle_world_create", "WorldDef.maxVelocity: must be > 0");
+    wdef = jostle_default_world_def();
+    wdef.solver = (jostle_solver)7;
+    CHECK(jostle_world_create(&wdef) == NULL, "an unknown solver");
+    CHECK_ERROR("jostle_world_create", "solver must be JOSTLE_SOLVER_CLASSIC");
+
+    jostle_world* world = make_world(kG);
+    jostle_body_id box = jostle_body_create(world, &def);
+
+    // Bodies: sizes, numbers, enums, a zeroed def.
+    jostle_body_def bad = def;
+    bad.hw = 0;
+    CHECK(jostle_body_id_is_null(jostle_body_create(world, &bad)), "hw 0");
+    CHECK(strcmp(jostle_last_error(), "jostle_body_create: createBody: BodyDef.hw: must be > 0") ==
+              0,
+          "the message names the function, the member and the rule");
+    jostle_clear_error();
+    bad = def;
+    bad.hh = -1;
+    CHECK(jostle_body_id_is_null(jostle_body_create(world, &bad)), "hh < 0");
+    CHECK_ERROR("jostle_body_create", "BodyDef.hh: must be > 0");
+    bad = def;
+    bad.x = NAN;
+    CHECK(jostle_body_id_is_null(jostle_body_create(world, &bad)), "NaN");
+    CHECK_ERROR("jostle_body_create", "BodyDef.x: must be a finite number");
+    bad = def;
+    bad.type = (jostle_body_type)7;
+    CHECK(jostle_body_id_is_null(jostle_body_create(world, &bad)), "an unknown type");
+    CHECK_ERROR("jostle_body_create", "got 7");
+    bad = def;
+    bad.type = JOSTLE_BODY_STATIC;
+    bad.vx = 1;
+    CHECK(jostle_body_id_is_null(jostle_body_create(world, &bad)), "a moving static body");
+    CHECK_ERROR("jostle_body_create", "static body cannot move");
+    memset(&bad, 0, sizeof bad);
+    bad.hw = 1;
+    bad.hh = 1;
+    bad.density = 1;
+    CHECK(jostle_body_id_is_null(jostle_body_create(world, &bad)), "a zeroed def");
+    CHECK_ERROR("jostle_body_create", "def was not made by jostle_default_body_def()");
+    CHECK(jostle_body_id_is_null(jostle_body_create(world, NULL)), "no def");
+    CHECK_ERROR("jostle_body_create", "def is NULL");
+    CHECK(jostle_world_body_count(world) == 1, "nothing was created");
+
+    // Setters: a refused value changes nothing.
+    CHECK(jostle_body_set_position(world, box, (jostle_vec2){3, 4}), "a good position");
+    CHECK(!jostle_body_set_position(world, box, nan2), "NaN");
+    CHECK_ERROR("jostle_body_set_position", "finite");
+    p = jostle_body_get_position(world, box);
+    CHECK(p.x == 3 && p.y == 4, "unchanged");
+    CHECK(!jostle_body_set_half_extents(world, box, (jostle_vec2){0, 1}), "size 0");
+    CHECK_ERROR("jostle_body_set_half_extents", "must be > 0");
+    CHECK(!jostle_body_set_bounce(world, box, 2), "bounce 2");
+    CHECK_ERROR("jostle_body_set_bounce", "[0, 1]");
+    CHECK(!jostle_body_set_type(world, box, (jostle_body_type)-1), "type -1");
+    CHECK_ERROR("jostle_body_set_type", "got -1");
+    CHECK(jostle_body_get_type(world, box) == JOSTLE_BODY_DYNAMIC, "type unchanged");
+    CHECK(!jostle_body_set_one_way(world, box, (jostle_vec2){1, 1}), "a diagonal one-way");
+    CHECK_ERROR("jostle_body_set_one_way", "normal");
+
+    // Stale handles: an ordinary false for is_valid, misuse anywhere else.
+    CHECK(jostle_body_destroy(world, box), "destroyed");
+    CHECK(!jostle_body_is_valid(world, box), "stale");
+    CHECK_NO_ERROR();
+    CHECK(!jostle_body_set_position(world, box, (jostle_vec2){0, 0}), "stale");
+    CHECK_ERROR("jostle_body_set_position", "stale or foreign BodyId");
+    CHECK(!jostle_body_destroy(world, box), "twice");
+    CHECK_ERROR("jostle_body_destroy", "stale");
+    p = jostle_body_get_velocity(world, box);
+    CHECK(p.x == 0 && p.y == 0, "zero");
+    CHECK_ERROR("jostle_body_get_velocity", "stale");
+    CHECK(!jostle_body_get_touching(world, box).floor, "zero");
+    CHECK_ERROR("jostle_body_get_touching", "stale");
+    jostle_body_def gone = jostle_body_get_def(world, box);
+    CHECK(gone.hw == 0 && gone.internal_cookie == 0, "all zeros");
+    CHECK_ERROR("jostle_body_get_def", "stale");
+    jostle_body_id null_id = {0, 0};
+    CHECK(!jostle_body_wake(world, null_id), "null handle");
+    CHECK_ERROR("jostle_body_wake", "null BodyId");
+
+    // Steps: dt <= 0, NaN, infinite.
+    CHECK(!jostle_world_step(world, 0), "dt 0");
+    CHECK_ERROR("jostle_world_step", "dt must be a finite number > 0");
+    CHECK(!jostle_world_step(world, -kDt), "dt < 0");
+    CHECK_ERROR("jostle_world_step", "dt must be");
+    CHECK(!jostle_world_step(world, NAN), "NaN");
+    CHECK_ERROR("jostle_world_step", "dt must be");
+    CHECK(!jostle_world_step(world, INFINITY), "infinite");
+    CHECK_ERROR("jostle_world_step", "dt must be");
+
+    // World settings.
+    CHECK(!jostle_world_set_gravity(world, nan2), "NaN gravity");
+    CHECK_ERROR("jostle_world_set_gravity", "finite");
+    CHECK(!jostle_world_set_max_velocity(world, -1), "max velocity < 0");
+    CHECK_ERROR("jostle_world_set_max_velocity", "maxVelocity must be > 0");
+    CHECK(!jostle_world_set_solver(world, (jostle_solver)2), "an unknown solver");
+    CHECK_ERROR("jostle_world_set_solver", "got 2");
+    jostle_physical_options options = jostle_world_get_physical_options(world);
+    options.slop = 0.9f;
+    CHECK(!jostle_world_set_physical_options(world, options), "slop out of range");
+    CHECK_ERROR("jostle_world_set_physical_options", "slop");
+    CHECK(jostle_world_get_physical_options(world).slop == 0.01f, "unchanged");
+    CHECK(jostle_world_get_gravity(world).y == kG, "unchanged");
+
+    // Buffers and output pointers.
+    jostle_body_id out[2];
+    CHECK(jostle_world_bodies(world, out, -1) == 0, "capacity < 0");
+    CHECK_ERROR("jostle_world_bodies", "capacity must be >= 0");
+    CHECK(jostle_query_point(world, p, NULL, NULL, 2) == 0, "NULL buffer with room");
+    CHECK_ERROR("jostle_query_point", "out is NULL but capacity is 2");
+    CHECK(jostle_world_contact_begins(world, NULL) == NULL, "no count");
+    CHECK_ERROR("jostle_world_contact_begins", "count is NULL");
+    CHECK(!jostle_ray_cast(world, p, (jostle_vec2){0, 1}, NULL, NULL), "no hit");
+    CHECK_ERROR("jostle_ray_cast", "hit is NULL");
+    jostle_ray_hit hit;
+    CHECK(!jostle_ray_cast(world, nan2, (jostle_vec2){0, 1}, NULL, &hit), "NaN ray");
+    CHECK_ERROR("jostle_ray_cast", "finite");
+    jostle_query_filter filter = jostle_default_query_filter();
+    filter.ignore = box; // destroyed above
+    CHECK(jostle_query_point(world, p, &filter, NULL, 0) == 0, "a stale ignore");
+    CHECK_ERROR("jostle_query_point", "QueryFilter.ignore");
+    memset(&filter, 0, sizeof filter);
+    CHECK(jostle_query_point(world, p, &filter, NULL, 0) == 0, "a zeroed filter");
+    CHECK_ERROR("jostle_query_point", "filter was not made by jostle_default_query_filter()");
+    jostle_vec2 end = {9, 9};
+    const jostle_vec2 from = {1, 2};
+    CHECK(jostle_move_and_slide(world, from, (jostle_vec2){0, 1}, (jostle_vec2){5, 0}, NULL, &end,
+                                NULL, 0) == 0,
+          "half 0");
+    CHECK_ERROR("jostle_move_and_slide", "half must be > 0");
+    CHECK(end.x == 1 && end.y == 2, "the box stays where it was");
+    CHECK(jostle_move_and_slide(world, from, (jostle_vec2){1, 1}, (jostle_vec2){5, 0}, NULL, NULL,
+                                NULL, 0) == 0,
+          "no new_centre");
+    CHECK_ERROR("jostle_move_and_slide", "new_centre is NULL");
+
+    // The error contract: sticky until cleared, and the handler sees every misuse.
+    CHECK(!jostle_world_step(world, 0), "a misuse");
+    CHECK(jostle_world_step(world, kDt), "a success after it");
+    CHECK_ERROR("jostle_world_step", "dt"); // still there
+    CHECK_NO_ERROR();
+
+    handler_log log;
+    memset(&log, 0, sizeof log);
+    jostle_set_error_handler(log_error, &log);
+    CHECK(!jostle_body_set_bounce(world, null_id, 0), "a misuse");
+    CHECK(log.calls == 1, "the handler was called once");
+    CHECK(strncmp(log.last, "jostle_body_set_bounce: ", 24) == 0, "with the message");
+    CHECK_ERROR("jostle_world_step", "world is NULL"); // the handler's own misuse
+    jostle_set_error_handler(NULL, NULL);
+    CHECK(!jostle_body_set_bounce(world, null_id, 0), "another misuse");
+    CHECK(log.calls == 1, "removed");
+    jostle_clear_error();
+
+    CHECK(jostle_world_destroy(world), "destroy");
+    CHECK_NO_ERROR();
+}
+
+int main(void) {
+    test_defaults();
+    test_free_fall();
+    test_landing_and_contact_events();
+    test_sensor_events();
+    test_crush_event();
+    test_world_settings();
+    test_body_properties();
+    test_queries();
+    test_tile_map();
+    test_pre_solve();
+    test_fixed_step();
+    test_misuse();
+    printf("test_c_api: all checks passed\n");
+    return 0;
+}
