@@ -96,6 +96,7 @@ bool toBoolean(lua_State* L, int index, const char* where, const char* prefix, c
 
 int toOption(lua_State* L, int index, const char* where, const char* prefix, const char* name,
              const char* const* names) {
+    index = absIndex(L, index); // the list of names below is pushed on top
     if (lua_type(L, index) == LUA_TSTRING) {
         const char* given = lua_tostring(L, index);
         for (int i = 0; names[i]; ++i)

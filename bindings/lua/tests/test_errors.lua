@@ -114,8 +114,10 @@ test("body definitions: the rules of scene files", function()
   t.raises({"World:newBody", "y: must be a finite number"}, newBody, {y = -math.huge, hw = 1, hh = 1})
   t.raises({"World:newBody", 'unknown field "frcition"'}, newBody, {hw = 1, hh = 1, frcition = 0.5})
   t.raises({"World:newBody", "unknown field [1]", "by name"}, newBody, {0, 0, 10, 10})
-  t.raises({"World:newBody", 'type: expected one of "static", "kinematic", "dynamic"'},
+  t.raises({"World:newBody", 'type: expected one of "static", "kinematic", "dynamic", got "box"'},
     newBody, {type = "box", hw = 1, hh = 1})
+  t.raises({"World:newBody", 'type: expected one of "static", "kinematic", "dynamic", got number'},
+    newBody, {type = 1, hw = 1, hh = 1})
   t.raises({"World:newBody", "bounce: must be in [0, 1]"}, newBody, {hw = 1, hh = 1, bounce = 2})
   t.raises({"World:newBody", "mass: must be > 0"}, newBody, {hw = 1, hh = 1, mass = 0})
   t.raises({"World:newBody", 'give "mass" or "density", not both'},
@@ -152,7 +154,7 @@ test("world definitions", function()
   t.raises({"jostle.newWorld", "physical.velocityIterations: expected a whole number"},
     newWorld_, {physical = {velocityIterations = 2.5}})
   t.raises({"jostle.newWorld", "physical.slop"}, newWorld_, {physical = {slop = 0.9}})
-  t.raises({"jostle.newWorld", 'physical.frictionMix: expected one of "min", "geometricMean"'},
+  t.raises({"jostle.newWorld", 'physical.frictionMix: expected one of "min", "geometricMean", got "max"'},
     newWorld_, {physical = {frictionMix = "max"}})
   t.raises({"jostle.newWorld", "physical: expected a table, got boolean"}, newWorld_, {physical = true})
   local world = jostle.newWorld()
