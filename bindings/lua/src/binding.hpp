@@ -159,17 +159,21 @@ void pushHandle(lua_State* L, int env, int cacheSlot, char tag, const char* type
         lua_remove(L, cache);
         return;
     }
-    // Not the slot's current userdata: perhaps a retired one.
+    // Not the slot's current userdata. A destroyed body's may be among the retired; a
+    // live body's never is (only a newer body of its slot could have pushed it out), so
+    // the common case makes no key.
     lua_rawgeti(L, env, kSlotRetired);
     const int retired = lua_gettop(L);
-    pushRetiredKey(L, tag, id.index, id.generation);
-    lua_rawget(L, retired);
-    if (!lua_isnil(L, -1)) {
-        lua_replace(L, cache);
-        lua_settop(L, cache);
-        return;
+    if (!live) {
+        pushRetiredKey(L, tag, id.index, id.generation);
+        lua_rawget(L, retired);
+        if (!lua_isnil(L, -1)) {
+            lua_replace(L, cache);
+            lua_settop(L, cache);
+            return;
+        }
+        lua_pop(L, 1);
     }
-    lua_pop(L, 1);
 
     new (newUserdata(L, sizeof(Handle))) Handle{world, id};
     const int created = lua_gettop(L);
