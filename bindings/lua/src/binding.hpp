@@ -10,7 +10,8 @@
 //   points to freed memory. After world:destroy() the pointer in the World userdata is
 //   null, and every method of its bodies raises "the body's world was destroyed".
 // - The same body is always the same userdata while Lua holds it (a weak-valued cache
-//   per world, by storage slot), so == works and bodies can be table keys.
+//   per world, by storage slot, and one of destroyed bodies pushed out of it by newer
+//   ones: pushHandle), so == works and bodies can be table keys.
 #pragma once
 
 #include "args.hpp"
@@ -40,7 +41,7 @@ enum Slot : int {
     kSlotUserData = 4,    ///< body storage slot -> the value of body:setUserData
     kSlotUserDataGen = 5, ///< body storage slot -> the generation that value belongs to
     kSlotPreSolve = 6,    ///< the pre-solve function, or nil
-    kSlotRetired = 7,     ///< "b<slot>:<generation>" -> an older Body userdata (weak values)
+    kSlotRetired = 7,     ///< "b12:3", "m0:1" -> a destroyed body's or map's userdata (weak values)
     kSlotCount = 7,
 };
 

@@ -11,12 +11,6 @@
 
 namespace jostle::lua {
 
-#if LUA_VERSION_NUM >= 502
-constexpr bool kLua51 = false;
-#else
-constexpr bool kLua51 = true;
-#endif
-
 /// A full userdata with room for one user value (5.4) or an environment table (5.1).
 inline void* newUserdata(lua_State* L, std::size_t size) {
 #if LUA_VERSION_NUM >= 504
