@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <string>
 
 namespace jostle {
@@ -66,9 +68,35 @@ World::World(const WorldDef& def) : state_(std::make_unique<WorldState>()) {
     state_->firstGeneration = nextFirstGeneration();
 }
 
-World::~World() = default;
+namespace {
+
+// A world destroyed or overwritten from inside its own step would pull its state from
+// under the solver; a destructor cannot throw, so this stops the program with a message.
+void refuseWhileStepping(const std::unique_ptr<WorldState>& state, const char* what) {
+    if (state && state->stepping) {
+        std::fprintf(stderr, "jostle: %s from a callback during step(): stopping\n", what);
+        std::abort();
+    }
+}
+
+// The world's settings change only between steps: the step reads them throughout.
+void requireNotStepping(const WorldState& w, const char* function) {
+    if (w.stepping)
+        fail(function, "called from a callback during step(): change the world's settings "
+                       "after step() returns");
+}
+
+} // namespace
+
+World::~World() {
+    refuseWhileStepping(state_, "World destroyed");
+}
 World::World(World&&) noexcept = default;
-World& World::operator=(World&&) noexcept = default;
+World& World::operator=(World&& other) noexcept {
+    refuseWhileStepping(state_, "World overwritten");
+    state_ = std::move(other.state_);
+    return *this;
+}
 
 // --- Handles ---------------------------------------------------------------------------
 
@@ -433,6 +461,7 @@ Vec2 World::gravity() const {
 }
 
 void World::setGravity(Vec2 gravity) {
+    requireNotStepping(*state_, "setGravity");
     requireFinite("setGravity", "gravity", gravity);
     state_->def.gravity = gravity;
     wakeAll(*state_);
@@ -443,6 +472,7 @@ float World::maxVelocity() const {
 }
 
 void World::setMaxVelocity(float maxVelocity) {
+    requireNotStepping(*state_, "setMaxVelocity");
     if (std::isnan(maxVelocity) || maxVelocity <= 0.0f)
         fail("setMaxVelocity", "maxVelocity must be > 0 (infinity for no clamp)");
     state_->def.maxVelocity = maxVelocity;
@@ -453,6 +483,7 @@ Solver World::solver() const {
 }
 
 void World::setSolver(Solver solver) {
+    requireNotStepping(*state_, "setSolver");
     if (solver != Solver::Classic && solver != Solver::Physical)
         fail("setSolver", "solver must be classic or physical");
     state_->def.solver = solver;
@@ -466,6 +497,7 @@ bool World::sleeping() const {
 }
 
 void World::setSleeping(bool enabled) {
+    requireNotStepping(*state_, "setSleeping");
     state_->def.sleeping = enabled;
     if (!enabled)
         wakeAll(*state_);
@@ -476,6 +508,7 @@ ClassicOptions World::classicOptions() const {
 }
 
 void World::setClassicOptions(ClassicOptions options) {
+    requireNotStepping(*state_, "setClassicOptions");
     state_->def.classic = options;
 }
 
@@ -484,6 +517,7 @@ PhysicalOptions World::physicalOptions() const {
 }
 
 void World::setPhysicalOptions(PhysicalOptions options) {
+    requireNotStepping(*state_, "setPhysicalOptions");
     WorldDef def = state_->def;
     def.physical = options;
     if (auto problem = checkWorldDef(def))
@@ -492,6 +526,7 @@ void World::setPhysicalOptions(PhysicalOptions options) {
 }
 
 void World::setPreSolve(PreSolveFn callback) {
+    requireNotStepping(*state_, "setPreSolve");
     state_->preSolve = std::move(callback);
 }
 

@@ -3,7 +3,10 @@
 
 #include <gtest/gtest.h>
 
+#include <functional>
 #include <limits>
+#include <memory>
+#include <string>
 #include <vector>
 
 namespace jostle {
@@ -242,6 +245,70 @@ TEST(DuringStep, SteppingFromACallbackIsRefused) {
     });
     s.world.step(1.0f / 60);
     EXPECT_TRUE(threw);
+}
+
+// Found by the C API's tests under ASan: replacing the pre-solve callback from inside
+// itself destroyed the running function, and switching the model cleared the events the
+// step was filling. Every world setting now waits for the step to end.
+TEST(DuringStep, ChangingTheWorldsSettingsFromACallbackIsRefused) {
+    for (Solver solver : {Solver::Classic, Solver::Physical}) {
+        Scene s;
+        s.world.setSolver(solver);
+        const Vec2 gravity = s.world.gravity();
+        const float maxVelocity = s.world.maxVelocity();
+        const bool sleeping = s.world.sleeping();
+        int refused = 0;
+        int calls = 0;
+        s.world.setPreSolve([&](Collision&) {
+            ++calls;
+            const std::function<void()> changes[] = {
+                [&] { s.world.setPreSolve({}); },
+                [&] { s.world.setSolver(Solver::Classic); },
+                [&] { s.world.setSolver(Solver::Physical); },
+                [&] {
+                    s.world.setGravity({0, -1});
+                },
+                [&] { s.world.setMaxVelocity(1); },
+                [&] { s.world.setSleeping(false); },
+                [&] { s.world.setClassicOptions({.mass = true}); },
+                [&] { s.world.setPhysicalOptions({.velocityIterations = 1}); },
+            };
+            for (const auto& change : changes) {
+                try {
+                    change();
+                } catch (const Error& e) {
+                    EXPECT_NE(std::string(e.what()).find("during step()"), std::string::npos);
+                    ++refused;
+                }
+            }
+            return true;
+        });
+        s.world.step(1.0f / 60);
+        ASSERT_GT(calls, 0);
+        EXPECT_EQ(refused, 8 * calls);
+        EXPECT_EQ(s.world.gravity(), gravity);
+        EXPECT_EQ(s.world.solver(), solver);
+        EXPECT_EQ(s.world.maxVelocity(), maxVelocity);
+        EXPECT_EQ(s.world.sleeping(), sleeping);
+        s.world.setPreSolve({}); // and after the step, all of them are fine
+        s.world.setSolver(Solver::Classic);
+    }
+}
+
+TEST(DuringStepDeathTest, DestroyingTheWorldFromItsOwnCallbackStopsWithAMessage) {
+    EXPECT_DEATH(
+        {
+            auto world = std::make_unique<World>(WorldDef{.gravity = {0, 10}});
+            world->createBody({.type = BodyType::Static, .y = 2, .hw = 10, .hh = 1});
+            world->createBody({.hw = 1, .hh = 1});
+            world->setPreSolve([&](Collision&) {
+                world.reset();
+                return true;
+            });
+            for (int i = 0; i < 60; ++i)
+                world->step(1.0f / 60);
+        },
+        "World destroyed from a callback during step");
 }
 
 TEST(DuringStep, AnExceptionFromACallbackLeavesTheWorldUsable) {

@@ -9,7 +9,8 @@
 //     for (int i = 0; i < 60; ++i) world.step(1.0f / 60.0f);
 //     jostle::Vec2 p = world.position(box);
 //
-// Misuse (a stale BodyId, NaN, dt <= 0, ...) throws jostle::Error: see error.hpp.
+// Misuse (a stale BodyId, NaN, dt <= 0, a setting changed mid-step, ...) throws
+// jostle::Error: see error.hpp.
 // Same inputs give the same results bit for bit: bodies are processed in creation order.
 #pragma once
 
@@ -277,7 +278,12 @@ public:
     // --- The world ---------------------------------------------------------------------
 
     /// Advances the world by dt seconds (dt > 0 and finite, else jostle::Error).
-    /// Calling step() from inside a callback of this world throws jostle::Error.
+    ///
+    /// From inside a callback of this world (the pre-solve), bodies may be read, created,
+    /// destroyed and changed, tiles set, and queries asked. Calling step() or any of the
+    /// world's setters below (gravity to pre-solve) throws jostle::Error: the step reads
+    /// them throughout. Destroying or move-assigning the World itself from its callback
+    /// stops the program with a message (a destructor cannot throw).
     void step(float dt);
 
     Vec2 gravity() const;
