@@ -48,7 +48,9 @@ struct Png {
     std::vector<std::uint8_t> rgb;
 
     Rgb at(int x, int y) const {
-        const std::size_t i = (static_cast<std::size_t>(y) * width + x) * 3;
+        const std::size_t i = (static_cast<std::size_t>(y) * static_cast<std::size_t>(width) +
+                               static_cast<std::size_t>(x)) *
+                              3;
         return {rgb[i], rgb[i + 1], rgb[i + 2]};
     }
 };
