@@ -266,7 +266,9 @@ private:
         std::optional<std::pair<Hit, std::uint32_t>> first;
         for (std::uint32_t s : candidates_) {
             const Body& obstacle = w_.slots[s];
-            if (obstacle.sensor || body.sensor || !canCollide(body, obstacle))
+            // The grids are not rebuilt within a sweep: one destroyed by the callback of
+            // an earlier hit is still in them.
+            if (!w_.isLive(s) || obstacle.sensor || body.sensor || !canCollide(body, obstacle))
                 continue;
             const Vec2 obstacleMotion = obstacle.velocity * (dt_ * remaining);
             const Box from{obstacle.position - obstacleMotion, obstacle.half};
