@@ -72,8 +72,10 @@ std::optional<FieldError> checkBodyDef(const BodyDef& def) {
         return FieldError{"damping", "must be >= 0"};
     if (!isValidOneWay(def.oneWay))
         return FieldError{"oneWay", "must be [0, 0] or one of [1, 0], [-1, 0], [0, 1], [0, -1]"};
-    // A body so large that its area overflows would get an infinite density mass.
-    if (def.mass == 0.0f && !std::isfinite(4.0f * def.hw * def.hh * def.density))
+    // A body so large that its area overflows would get an infinite density mass. The
+    // product is the one World's mass uses, in its order: another order overflows for
+    // other bodies (density x 4 first, for a thin and very dense one).
+    if (def.mass == 0.0f && !std::isfinite(def.density * 4.0f * def.hw * def.hh))
         return FieldError{"density", "gives an infinite mass (density x area overflows)"};
     return std::nullopt;
 }

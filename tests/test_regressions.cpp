@@ -32,5 +32,19 @@ TEST(Regressions, ClassicSweepLeavesOutABodyDestroyedByThePreSolve) {
     EXPECT_FLOAT_EQ(world.position(box).y, 20.0f);
 }
 
+// Found by fuzz_api with JOSTLE_FUZZ_OPEN=float-range (tests/fuzz/corpus/api/
+// density-mass-overflow-unchecked). checkBodyDef refused a density x area that
+// overflows, but multiplied in another order than the mass the solver uses: with a thin,
+// very dense body the check's product was finite and the mass infinite.
+TEST(Regressions, TheDensityMassThatIsCheckedIsTheOneUsed) {
+    // density × 4 overflows first: the mass density × 4 × hw × hh is infinite, however
+    // small hw × hh is.
+    const BodyDef def{.hw = 1e-30f, .hh = 50.5f, .density = 3e38f};
+    EXPECT_TRUE(checkBodyDef(def).has_value());
+    World world;
+    EXPECT_THROW(world.createBody(def), Error);
+    EXPECT_EQ(world.bodyCount(), 0u);
+}
+
 } // namespace
 } // namespace jostle
