@@ -40,6 +40,13 @@ float dynamicMass(const Body& body) {
     return body.mass > 0.0f ? body.mass : body.density * 4.0f * body.half.x * body.half.y;
 }
 
+/// createBody's rule (checkBodyDef) for the setters that change a density mass: it must
+/// not overflow.
+void requireFiniteDensityMass(const char* function, float density, Vec2 half) {
+    if (!std::isfinite(density * 4.0f * half.x * half.y))
+        fail(function, "gives an infinite mass (density x area overflows)");
+}
+
 void wakeAll(WorldState& world) {
     for (BodyId id : world.order)
         world.wakeIsland(id.index);
@@ -251,6 +258,8 @@ void World::setHalfExtents(BodyId id, Vec2 halfExtents) {
     requireFinite("setHalfExtents", "halfExtents", halfExtents);
     if (halfExtents.x <= 0.0f || halfExtents.y <= 0.0f)
         fail("setHalfExtents", "halfExtents must be > 0");
+    if (b.mass == 0.0f)
+        requireFiniteDensityMass("setHalfExtents", b.density, halfExtents);
     state_->disturb(id.index); // what rested on it, as it was
     b.half = halfExtents;
     updateMass(b);
@@ -299,6 +308,7 @@ void World::setDensity(BodyId id, float density) {
     requireFinite("setDensity", "density", density);
     if (density <= 0.0f)
         fail("setDensity", "density must be > 0");
+    requireFiniteDensityMass("setDensity", density, b.half);
     b.mass = 0.0f;
     b.density = density;
     updateMass(b);

@@ -46,5 +46,22 @@ TEST(Regressions, TheDensityMassThatIsCheckedIsTheOneUsed) {
     EXPECT_EQ(world.bodyCount(), 0u);
 }
 
+// Found by fuzz_api with JOSTLE_FUZZ_OPEN=float-range (tests/fuzz/corpus/api/
+// setter-density-mass-overflow). createBody refuses a body whose density × area
+// overflows, but setHalfExtents and setDensity made one: a dynamic body of infinite
+// mass, which the solver treats as immovable and divides by.
+TEST(Regressions, SettersRefuseAnInfiniteDensityMassAsCreateBodyDoes) {
+    World world;
+    BodyId box = world.createBody({.hw = 10, .hh = 10});
+    EXPECT_THROW(world.setHalfExtents(box, {1e20f, 1e20f}), Error);
+    EXPECT_EQ(world.halfExtents(box), (Vec2{10, 10}));
+    EXPECT_THROW(world.setDensity(box, 3e38f), Error);
+    EXPECT_EQ(world.mass(box), 400.0f);
+    // With an explicit mass, the size does not matter to the mass.
+    world.setMass(box, 2);
+    world.setHalfExtents(box, {1e20f, 1e20f});
+    EXPECT_EQ(world.mass(box), 2.0f);
+}
+
 } // namespace
 } // namespace jostle
