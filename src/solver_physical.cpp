@@ -350,6 +350,13 @@ private:
             }
             contacts_.push_back(c);
         }
+        // A callback may have destroyed a body after its contact was made: the body is left
+        // out of the rest of the step (no impulses, no events, no cached contact whose
+        // generations would be those of the slot's next body).
+        if (w_.preSolve)
+            std::erase_if(contacts_, [&](const Contact& c) {
+                return !w_.isLive(bodies_[c.ia].slot) || !w_.isLive(bodies_[c.ib].slot);
+            });
     }
 
     /// Support levels (see the top of the file), by a breadth-first search from the
