@@ -127,6 +127,17 @@ void StepEvents::publish(const WorldState& world, bool anyAwake) {
     // Nothing awake and nothing gone: every pair of the last step carries over as it was.
     if (!anyAwake && !destroyedSincePublish && contactsNow.empty() && sensorsNow.empty())
         return;
+    if (destroyedSincePublish) {
+        // A pair recorded before a callback destroyed one of its bodies, later in the
+        // step (the classic model records pairs as it resolves them): the body is gone,
+        // and a pair that touched before this step ends (below), one that had just met is
+        // dropped.
+        auto gone = [&](const TouchRecord& r) {
+            return !world.isCurrent(r.a) || !world.isCurrent(r.b);
+        };
+        std::erase_if(contactsNow, gone);
+        std::erase_if(sensorsNow, gone);
+    }
     destroyedSincePublish = false;
     sortByPair(contactsNow, scratch_, counts_, world.slots.size());
     compare(

@@ -97,5 +97,29 @@ TEST(Regressions, ABodyDestroyedByThePreSolveBeginsNoContact) {
     }
 }
 
+// Found by fuzz_api (tests/fuzz/corpus/api/classic-contact-begin-names-destroyed-body).
+// The same in the classic model, where a pair is recorded as it is resolved: a body
+// resolved against the floor and then destroyed by the pre-solve of a later pair was
+// reported as beginning a contact, under its stale handle, and as ending it one step
+// later.
+TEST(Regressions, ClassicBodyDestroyedByThePreSolveBeginsNoContact) {
+    World world(WorldDef{.gravity = {0, 800}, .solver = Solver::Classic});
+    world.createBody({.type = BodyType::Static, .x = 0, .y = 10, .hw = 100, .hh = 10});
+    // The victim comes first in creation order, so it is resolved first.
+    BodyId victim = world.createBody({.x = -20, .y = -0.5f, .hw = 1, .hh = 1, .vy = 100});
+    BodyId other = world.createBody({.x = 20, .y = -0.5f, .hw = 1, .hh = 1, .vy = 100});
+    world.setPreSolve([&](Collision& c) {
+        if (c.a == other && world.isValid(victim))
+            world.destroyBody(victim);
+        return true;
+    });
+    world.step(1.0f / 60.0f);
+    ASSERT_FALSE(world.isValid(victim));
+    ASSERT_EQ(world.contactBegins().size(), 1u);
+    EXPECT_EQ(world.contactBegins()[0].b, other);
+    world.step(1.0f / 60.0f);
+    EXPECT_TRUE(world.contactEnds().empty());
+}
+
 } // namespace
 } // namespace jostle
