@@ -72,6 +72,9 @@ std::optional<FieldError> checkBodyDef(const BodyDef& def) {
         return FieldError{"damping", "must be >= 0"};
     if (!isValidOneWay(def.oneWay))
         return FieldError{"oneWay", "must be [0, 0] or one of [1, 0], [-1, 0], [0, 1], [0, -1]"};
+    if (def.type == BodyType::Static && (def.vx != 0.0f || def.vy != 0.0f))
+        return FieldError{def.vx != 0.0f ? "vx" : "vy",
+                          "a static body cannot move (make it kinematic)"};
     // A body so large that its area overflows would get an infinite density mass. The
     // product is the one World's mass uses, in its order: another order overflows for
     // other bodies (density x 4 first, for a thin and very dense one).

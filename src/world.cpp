@@ -115,8 +115,6 @@ bool World::isValid(BodyId id) const {
 BodyId World::createBody(const BodyDef& def) {
     if (auto problem = checkBodyDef(def))
         fail("createBody", "BodyDef." + problem->field + ": " + problem->problem);
-    if (def.type == BodyType::Static && (def.vx != 0.0f || def.vy != 0.0f))
-        fail("createBody", "BodyDef.vx, vy: a static body cannot move (make it kinematic)");
 
     WorldState& w = *state_;
     std::uint32_t slot;

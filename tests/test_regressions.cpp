@@ -121,5 +121,19 @@ TEST(Regressions, ClassicBodyDestroyedByThePreSolveBeginsNoContact) {
     EXPECT_TRUE(world.contactEnds().empty());
 }
 
+// Found by fuzz_scene (tests/fuzz/corpus/scene/static-body-with-velocity). checkBodyDef,
+// which promises nothing for a definition createBody accepts, passed a static body with a
+// velocity, which createBody refuses: a scene file with one loaded, and addBodies, which
+// checks every body with checkBodyDef before it creates any, threw halfway through,
+// leaving the world half filled.
+TEST(Regressions, CheckBodyDefRefusesAMovingStaticBodyAsCreateBodyDoes) {
+    const BodyDef moving{.type = BodyType::Static, .hw = 1, .hh = 1, .vy = 1};
+    ASSERT_TRUE(checkBodyDef(moving).has_value());
+    EXPECT_EQ(checkBodyDef(moving)->field, "vy");
+    World world;
+    EXPECT_THROW(world.createBody(moving), Error);
+    EXPECT_FALSE(checkBodyDef({.type = BodyType::Kinematic, .hw = 1, .hh = 1, .vy = 1}));
+}
+
 } // namespace
 } // namespace jostle
