@@ -52,22 +52,33 @@ std::optional<FieldError> checkBodyDef(const BodyDef& def) {
         {"oneWay", def.oneWay.x},
         {"oneWay", def.oneWay.y},
     };
-    for (const auto& [field, value] : numbers)
+    for (const auto& [field, value] : numbers) {
         if (!std::isfinite(value))
             return FieldError{field, "must be a finite number"};
+        if (!inRange(value)) // math.hpp: the range jostle works in
+            return FieldError{field, "must be of magnitude <= 1e9"};
+    }
 
     if (def.hw <= 0.0f)
         return FieldError{"hw", "must be > 0"};
     if (def.hh <= 0.0f)
         return FieldError{"hh", "must be > 0"};
+    if (def.hw < kMinMagnitude)
+        return FieldError{"hw", "must be >= 1e-9"};
+    if (def.hh < kMinMagnitude)
+        return FieldError{"hh", "must be >= 1e-9"};
     if (def.bounce < 0.0f || def.bounce > 1.0f)
         return FieldError{"bounce", "must be in [0, 1]"};
     if (def.friction < 0.0f || def.friction > 1.0f)
         return FieldError{"friction", "must be in [0, 1]"};
     if (def.mass < 0.0f)
         return FieldError{"mass", "must be >= 0 (0: from density)"};
+    if (def.mass > 0.0f && def.mass < kMinMagnitude)
+        return FieldError{"mass", "must be 0 (from density) or >= 1e-9"};
     if (def.density <= 0.0f)
         return FieldError{"density", "must be > 0"};
+    if (def.density < kMinMagnitude)
+        return FieldError{"density", "must be >= 1e-9"};
     if (def.damping < 0.0f)
         return FieldError{"damping", "must be >= 0"};
     if (!isValidOneWay(def.oneWay))
@@ -75,11 +86,8 @@ std::optional<FieldError> checkBodyDef(const BodyDef& def) {
     if (def.type == BodyType::Static && (def.vx != 0.0f || def.vy != 0.0f))
         return FieldError{def.vx != 0.0f ? "vx" : "vy",
                           "a static body cannot move (make it kinematic)"};
-    // A body so large that its area overflows would get an infinite density mass. The
-    // product is the one World's mass uses, in its order: another order overflows for
-    // other bodies (density x 4 first, for a thin and very dense one).
-    if (def.mass == 0.0f && !std::isfinite(def.density * 4.0f * def.hw * def.hh))
-        return FieldError{"density", "gives an infinite mass (density x area overflows)"};
+    // Within the range, a density mass is at most 1e9 × 4 × 1e9 × 1e9 = 4e27 and at least
+    // 4e-27: finite, and so is its inverse.
     return std::nullopt;
 }
 

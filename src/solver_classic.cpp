@@ -21,6 +21,10 @@ void integrateVelocity(const WorldDef& def, Body& body, float dt) {
         const float k = 1.0f + body.damping * dt;
         body.velocity = {body.velocity.x / k, body.velocity.y / k};
     }
+    // The hard limit of math.hpp first, per axis: gravity x scale x dt can reach 1e27,
+    // whose square (in the length below) would overflow.
+    body.velocity.x = std::clamp(body.velocity.x, -kMaxMagnitude, kMaxMagnitude);
+    body.velocity.y = std::clamp(body.velocity.y, -kMaxMagnitude, kMaxMagnitude);
     // clampVec(xv, yv, maxVelocity): scale the vector down to the largest speed.
     if (std::isfinite(def.maxVelocity)) {
         const float d = length(body.velocity);

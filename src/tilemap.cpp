@@ -209,12 +209,17 @@ std::optional<FieldError> checkTileMapDef(const TileMapDef& def) {
         {"oneWay", def.oneWay.x},
         {"oneWay", def.oneWay.y},
     };
-    for (const auto& [field, value] : numbers)
+    for (const auto& [field, value] : numbers) {
         if (!std::isfinite(value))
             return FieldError{field, "must be a finite number"};
-    // Half a tile is the smallest half extent a box gets: it must be > 0 as a float.
-    if (!(def.tile > 0.0f) || !(def.tile / 2.0f > 0.0f))
+        if (!inRange(value)) // math.hpp: the range jostle works in
+            return FieldError{field, "must be of magnitude <= 1e9"};
+    }
+    if (!(def.tile > 0.0f))
         return FieldError{"tile", "must be > 0"};
+    // Half a tile is the smallest half extent a box gets: a body's smallest size.
+    if (def.tile / 2.0f < kMinMagnitude)
+        return FieldError{"tile", "must be >= 2e-9"};
 
     if (def.rows.empty())
         return FieldError{"rows", "must have at least one row"};
@@ -237,14 +242,13 @@ std::optional<FieldError> checkTileMapDef(const TileMapDef& def) {
                                          " columns, rows[0] has " + std::to_string(columns)};
     }
 
-    // The far corner, and the area of the largest box (World::createBody refuses a body
-    // whose area overflows), must be finite floats.
+    // The far corner must be in the range jostle works in (math.hpp), like every body.
     const double width = static_cast<double>(columns) * static_cast<double>(def.tile);
     const double height = static_cast<double>(def.rows.size()) * static_cast<double>(def.tile);
-    constexpr double kLargest = static_cast<double>(std::numeric_limits<float>::max());
+    constexpr double kLargest = static_cast<double>(kMaxMagnitude);
     if (!(std::fabs(static_cast<double>(def.x) + width) <= kLargest &&
-          std::fabs(static_cast<double>(def.y) + height) <= kLargest && width * height <= kLargest))
-        return FieldError{"tile", "makes the map too large for floats"};
+          std::fabs(static_cast<double>(def.y) + height) <= kLargest))
+        return FieldError{"tile", "puts the map's far corner beyond 1e9 (math.hpp)"};
 
     if (def.friction < 0.0f || def.friction > 1.0f)
         return FieldError{"friction", "must be in [0, 1]"};

@@ -40,11 +40,23 @@ float dynamicMass(const Body& body) {
     return body.mass > 0.0f ? body.mass : body.density * 4.0f * body.half.x * body.half.y;
 }
 
-/// createBody's rule (checkBodyDef) for the setters that change a density mass: it must
-/// not overflow.
-void requireFiniteDensityMass(const char* function, float density, Vec2 half) {
-    if (!std::isfinite(density * 4.0f * half.x * half.y))
-        fail(function, "gives an infinite mass (density x area overflows)");
+// The edge of the world (math.hpp): a body that reaches ±kMaxMagnitude on an axis stops
+// there, and no speed exceeds it, so that no later sum overflows. Games never get near.
+void keepInsideTheWorld(WorldState& world) {
+    for (BodyId id : world.order) {
+        Body& b = world.slots[id.index];
+        if (b.type == BodyType::Static || b.asleep)
+            continue;
+        auto keep = [](float& position, float& velocity) {
+            velocity = std::clamp(velocity, -kMaxMagnitude, kMaxMagnitude);
+            if (std::abs(position) > kMaxMagnitude) {
+                position = std::copysign(kMaxMagnitude, position);
+                velocity = 0.0f;
+            }
+        };
+        keep(b.position.x, b.velocity.x);
+        keep(b.position.y, b.velocity.y);
+    }
 }
 
 void wakeAll(WorldState& world) {
@@ -253,11 +265,8 @@ Vec2 World::halfExtents(BodyId id) const {
 
 void World::setHalfExtents(BodyId id, Vec2 halfExtents) {
     Body& b = lookUp(*state_, id, "setHalfExtents");
-    requireFinite("setHalfExtents", "halfExtents", halfExtents);
-    if (halfExtents.x <= 0.0f || halfExtents.y <= 0.0f)
-        fail("setHalfExtents", "halfExtents must be > 0");
-    if (b.mass == 0.0f)
-        requireFiniteDensityMass("setHalfExtents", b.density, halfExtents);
+    requireSize("setHalfExtents", "halfExtents.x", halfExtents.x);
+    requireSize("setHalfExtents", "halfExtents.y", halfExtents.y);
     state_->disturb(id.index); // what rested on it, as it was
     b.half = halfExtents;
     updateMass(b);
@@ -293,9 +302,7 @@ float World::mass(BodyId id) const {
 
 void World::setMass(BodyId id, float mass) {
     Body& b = lookUp(*state_, id, "setMass");
-    requireFinite("setMass", "mass", mass);
-    if (mass <= 0.0f)
-        fail("setMass", "mass must be > 0");
+    requireSize("setMass", "mass", mass);
     b.mass = mass;
     updateMass(b);
     state_->disturb(id.index);
@@ -303,10 +310,7 @@ void World::setMass(BodyId id, float mass) {
 
 void World::setDensity(BodyId id, float density) {
     Body& b = lookUp(*state_, id, "setDensity");
-    requireFinite("setDensity", "density", density);
-    if (density <= 0.0f)
-        fail("setDensity", "density must be > 0");
-    requireFiniteDensityMass("setDensity", density, b.half);
+    requireSize("setDensity", "density", density);
     b.mass = 0.0f;
     b.density = density;
     updateMass(b);
@@ -451,6 +455,8 @@ void World::step(float dt) {
         fail("step", "called from a callback during step()");
     if (!std::isfinite(dt) || dt <= 0.0f)
         fail("step", "dt must be a finite number > 0");
+    if (dt < kMinMagnitude || dt > kMaxMagnitude)
+        fail("step", "dt must be in [1e-9, 1e9] (math.hpp)");
 
     StepScope scope(w);
     // A sleeping body keeps the separation of its last awake step: what held it up
@@ -462,6 +468,7 @@ void World::step(float dt) {
         stepClassic(w, dt);
     else
         stepPhysical(w, dt);
+    keepInsideTheWorld(w);
 }
 
 Vec2 World::gravity() const {

@@ -22,14 +22,24 @@ struct WorldAccess {
     throw Error(std::string(function) + ": " + message);
 }
 
+/// A number given to the API: finite, of magnitude <= kMaxMagnitude (math.hpp).
 inline void requireFinite(const char* function, const char* what, float value) {
-    if (!std::isfinite(value))
-        fail(function, std::string(what) + " must be a finite number");
+    if (!inRange(value))
+        fail(function, std::string(what) + " must be a finite number of magnitude <= 1e9");
 }
 
 inline void requireFinite(const char* function, const char* what, Vec2 value) {
-    if (!isFinite(value))
-        fail(function, std::string(what) + " must be finite numbers");
+    if (!inRange(value))
+        fail(function, std::string(what) + " must be finite numbers of magnitude <= 1e9");
+}
+
+/// A size, density, mass or dt: in [kMinMagnitude, kMaxMagnitude] (math.hpp).
+inline void requireSize(const char* function, const char* what, float value) {
+    requireFinite(function, what, value);
+    if (value <= 0.0f)
+        fail(function, std::string(what) + " must be > 0");
+    if (value < kMinMagnitude)
+        fail(function, std::string(what) + " must be >= 1e-9");
 }
 
 /// The live body `id` names, or jostle::Error (null, stale or foreign handle).

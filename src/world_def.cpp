@@ -65,6 +65,8 @@ std::optional<FieldError> checkPhysicalOptions(const PhysicalOptions& p) {
 std::optional<FieldError> checkWorldDef(const WorldDef& def) {
     if (!isFinite(def.gravity))
         return FieldError{"gravity", "must be finite numbers"};
+    if (!inRange(def.gravity)) // math.hpp: the range jostle works in
+        return FieldError{"gravity", "must be of magnitude <= 1e9"};
     // Infinity is allowed here: it is how "no clamp" is spelt.
     if (std::isnan(def.maxVelocity) || def.maxVelocity <= 0.0f)
         return FieldError{"maxVelocity", "must be > 0"};

@@ -49,10 +49,19 @@ TEST(CheckBodyDef, EveryRule) {
               "gravityScale: must be a finite number");
     EXPECT_EQ(problemWith([](BodyDef& d) { d.type = static_cast<BodyType>(7); }),
               "type: must be static, kinematic or dynamic");
-    EXPECT_EQ(problemWith([](BodyDef& d) { d.hw = d.hh = 1e30f; }),
-              "density: gives an infinite mass (density x area overflows)");
-    // ... unless the mass is explicit.
-    EXPECT_EQ(problemWith([](BodyDef& d) { d.hw = d.hh = 1e30f, d.mass = 1; }), "ok");
+    // The range of math.hpp: magnitudes up to 1e9, sizes, densities and masses from 1e-9.
+    EXPECT_EQ(problemWith([](BodyDef& d) { d.hw = d.hh = 1e9f; }), "ok");
+    EXPECT_EQ(problemWith([](BodyDef& d) { d.hw = 1.0001e9f; }), "hw: must be of magnitude <= 1e9");
+    EXPECT_EQ(problemWith([](BodyDef& d) { d.x = -1e30f; }), "x: must be of magnitude <= 1e9");
+    EXPECT_EQ(problemWith([](BodyDef& d) { d.vy = 3e38f; }), "vy: must be of magnitude <= 1e9");
+    EXPECT_EQ(problemWith([](BodyDef& d) { d.gravityScale = -2e9f; }),
+              "gravityScale: must be of magnitude <= 1e9");
+    EXPECT_EQ(problemWith([](BodyDef& d) { d.hw = 1e-9f; }), "ok");
+    EXPECT_EQ(problemWith([](BodyDef& d) { d.hh = 1e-10f; }), "hh: must be >= 1e-9");
+    EXPECT_EQ(problemWith([](BodyDef& d) { d.hw = 1e-45f; }), "hw: must be >= 1e-9");
+    EXPECT_EQ(problemWith([](BodyDef& d) { d.density = 1e-12f; }), "density: must be >= 1e-9");
+    EXPECT_EQ(problemWith([](BodyDef& d) { d.mass = 1e-12f; }),
+              "mass: must be 0 (from density) or >= 1e-9");
 }
 
 TEST(CheckWorldDef, Rules) {

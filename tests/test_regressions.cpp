@@ -59,7 +59,7 @@ TEST(Regressions, SettersRefuseAnInfiniteDensityMassAsCreateBodyDoes) {
     EXPECT_EQ(world.mass(box), 400.0f);
     // With an explicit mass, the size does not matter to the mass.
     world.setMass(box, 2);
-    world.setHalfExtents(box, {1e20f, 1e20f});
+    world.setHalfExtents(box, {1e9f, 1e9f});
     EXPECT_EQ(world.mass(box), 2.0f);
 }
 

@@ -198,9 +198,12 @@ TEST(TileMapChecks, EveryBadDefinitionIsNamed) {
     EXPECT_EQ(with([](TileMapDef& d) { d.tile = 0; }), "tile: must be > 0");
     EXPECT_EQ(with([](TileMapDef& d) { d.tile = -16; }), "tile: must be > 0");
     EXPECT_EQ(with([](TileMapDef& d) { d.tile = std::numeric_limits<float>::denorm_min(); }),
-              "tile: must be > 0");
-    EXPECT_EQ(with([](TileMapDef& d) { d.tile = 1e38f; }),
-              "tile: makes the map too large for floats");
+              "tile: must be >= 2e-9");
+    EXPECT_EQ(with([](TileMapDef& d) { d.tile = 1e38f; }), "tile: must be of magnitude <= 1e9");
+    // Two tiles of 6e8 from x = 0 end at 1.2e9, beyond the range of math.hpp.
+    EXPECT_EQ(with([](TileMapDef& d) { d.tile = 6e8f; }),
+              "tile: puts the map's far corner beyond 1e9 (math.hpp)");
+    EXPECT_EQ(with([](TileMapDef& d) { d.tile = 4e8f; }), "");
     EXPECT_EQ(with([](TileMapDef& d) { d.rows.clear(); }), "rows: must have at least one row");
     EXPECT_EQ(with([](TileMapDef& d) {
                   d.rows = {"", ""};

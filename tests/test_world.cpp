@@ -326,3 +326,70 @@ TEST(DuringStep, AnExceptionFromACallbackLeavesTheWorldUsable) {
 
 } // namespace
 } // namespace jostle
+
+namespace jostle {
+namespace {
+
+// --- The range jostle works in (math.hpp) ------------------------------------------------
+
+TEST(Range, NumbersBeyondItAreRefusedByEverySetter) {
+    World world;
+    BodyId box = world.createBody({.hw = 1, .hh = 1});
+    EXPECT_THROW(world.setPosition(box, {2e9f, 0}), Error);
+    EXPECT_THROW(world.setVelocity(box, {0, -1e10f}), Error);
+    EXPECT_THROW(world.setHalfExtents(box, {1e-10f, 1}), Error);
+    EXPECT_THROW(world.setMass(box, 1e-10f), Error);
+    EXPECT_THROW(world.setDensity(box, 2e9f), Error);
+    EXPECT_THROW(world.setGravityScale(box, 1e30f), Error);
+    EXPECT_THROW(world.setGravity({1e10f, 0}), Error);
+    EXPECT_THROW(world.step(1e-10f), Error);
+    EXPECT_THROW(world.step(2e9f), Error);
+    EXPECT_EQ(world.position(box), (Vec2{0, 0}));
+    EXPECT_EQ(world.halfExtents(box), (Vec2{1, 1}));
+    // The ends themselves are fine.
+    world.setPosition(box, {1e9f, -1e9f});
+    world.setHalfExtents(box, {1e-9f, 1e9f});
+    world.step(1e-9f);
+    world.step(1e9f);
+}
+
+TEST(Range, ABodyStopsAtTheEdgeOfTheWorld) {
+    for (Solver solver : {Solver::Classic, Solver::Physical}) {
+        World world(WorldDef{.solver = solver});
+        // 1e9 - 100 + 1e9 × 1 is far past the edge: it stops at 1e9, its speed along x gone.
+        BodyId box = world.createBody({.x = 1e9f - 100, .hw = 1, .hh = 1, .vx = 1e9f, .vy = 3});
+        world.step(1.0f);
+        EXPECT_EQ(world.position(box).x, 1e9f);
+        EXPECT_EQ(world.velocity(box).x, 0.0f);
+        EXPECT_EQ(world.velocity(box).y, 3.0f); // the other axis goes on
+        EXPECT_EQ(world.position(box).y, 3.0f);
+    }
+}
+
+TEST(Range, TheLargestNumbersTogetherStayFinite) {
+    // Gravity 1e9 × scale 1e9 × dt 1e9 adds 1e27 to a speed: it is held to 1e9 per axis,
+    // and the body stops at the edge; every number stays finite step after step.
+    for (Solver solver : {Solver::Classic, Solver::Physical}) {
+        World world(WorldDef{.gravity = {1e9f, -1e9f}, .solver = solver});
+        world.createBody({.type = BodyType::Static, .x = 0, .y = 0, .hw = 1e9f, .hh = 1e-9f});
+        BodyId heavy = world.createBody(
+            {.x = 5, .y = 5, .hw = 1e9f, .hh = 1e9f, .density = 1e9f, .gravityScale = 1e9f});
+        BodyId light = world.createBody({.x = -5,
+                                         .y = 5,
+                                         .hw = 1e-9f,
+                                         .hh = 1e-9f,
+                                         .vx = -1e9f,
+                                         .density = 1e-9f,
+                                         .gravityScale = -1e9f});
+        for (int i = 0; i < 20; ++i) {
+            world.step(i % 2 == 0 ? 1e9f : 1e-9f);
+            for (BodyId id : {heavy, light}) {
+                ASSERT_TRUE(inRange(world.position(id))) << i;
+                ASSERT_TRUE(inRange(world.velocity(id))) << i;
+            }
+        }
+    }
+}
+
+} // namespace
+} // namespace jostle

@@ -1,7 +1,9 @@
 // jostle/error.hpp: how jostle reports misuse.
 //
-// Every public function checks its arguments. A bad argument (a stale or null BodyId,
-// a NaN or infinite number, a size <= 0, a value out of its range, dt <= 0) throws
+// Every public function checks its arguments. A bad argument (a stale, null or foreign
+// BodyId, a NaN or infinite number, a number beyond the range jostle works in (magnitude
+// above 1e9, or a size below 1e-9: math.hpp), a size <= 0, a value out of its range,
+// dt <= 0, a world setting changed from a callback during step()) throws
 // jostle::Error, whose what() names the argument and the rule it breaks, e.g.
 // "createBody: BodyDef.hw: must be > 0". The world is left as it was before the call.
 #pragma once

@@ -50,4 +50,27 @@ inline bool isFinite(Vec2 a) {
     return std::isfinite(a.x) && std::isfinite(a.y);
 }
 
+/// The range of numbers jostle works in. Every number given to it (a coordinate, a size,
+/// a speed, gravity, a mass, a density, a gravity scale, damping, dt) must have a
+/// magnitude of at most kMaxMagnitude, and sizes (half extents, tile sides), densities,
+/// explicit masses and dt must be at least kMinMagnitude; anything else throws
+/// jostle::Error. Within this range the arithmetic of a step stays finite whatever the
+/// mix (no sum overflows to infinity, no inverse mass does, no NaN appears), which the
+/// fuzzers check (docs/reliability.md). A billion is far beyond any game world in pixels
+/// or metres: floats there are already 64 units apart.
+///
+/// Bodies stay in the range too: a dynamic body's speed along each axis is held to
+/// kMaxMagnitude whatever WorldDef::maxVelocity says, and a body that reaches
+/// ±kMaxMagnitude on an axis stops there, at the edge of the world.
+inline constexpr float kMaxMagnitude = 1e9f;
+inline constexpr float kMinMagnitude = 1e-9f;
+
+/// True when |v| <= kMaxMagnitude (false for NaN and infinities).
+inline bool inRange(float v) {
+    return std::abs(v) <= kMaxMagnitude;
+}
+inline bool inRange(Vec2 a) {
+    return inRange(a.x) && inRange(a.y);
+}
+
 } // namespace jostle

@@ -474,6 +474,8 @@ Scene readScene(const Json& root) {
             scene.dt = readFloat(value, name);
             if (!(scene.dt > 0.0f))
                 fail(name, "must be > 0");
+            if (scene.dt < kMinMagnitude || scene.dt > kMaxMagnitude)
+                fail(name, "must be in [1e-9, 1e9]"); // what World::step accepts
         } else if (name == "solver") {
             auto solver = solverFromString(readString(value, name));
             if (!solver)

@@ -164,15 +164,16 @@ TEST(SceneParse, IdsDefaultToTheIndex) {
     EXPECT_EQ(scene.bodies[2].id, "2");
 }
 
-TEST(SceneParse, IntegersAndTheFloatExtremesAreNumbers) {
-    // 3.4028235e38 is FLT_MAX as printed with 8 digits: it must read back as FLT_MAX.
-    const Scene scene =
-        parseScene(withBodies(R"({"hw": 1, "hh": 1, "x": 3.4028235e38, "y": -3.4028235e38,
-                                  "vx": -7, "vy": 12345678901})"));
-    EXPECT_EQ(scene.bodies[0].def.x, FLT_MAX);
-    EXPECT_EQ(scene.bodies[0].def.y, -FLT_MAX);
+TEST(SceneParse, IntegersAndTheRangeLimitsAreNumbers) {
+    // The ends of the range of math.hpp read back exactly; 999999999 is an integer that
+    // is not a float: it reads as the nearest one, 1e9.
+    const Scene scene = parseScene(
+        withBodies(R"({"hw": 1e-9, "hh": 1, "x": 1e9, "y": -1e9, "vx": -7, "vy": 999999999})"));
+    EXPECT_EQ(scene.bodies[0].def.hw, 1e-9f);
+    EXPECT_EQ(scene.bodies[0].def.x, 1e9f);
+    EXPECT_EQ(scene.bodies[0].def.y, -1e9f);
     EXPECT_EQ(scene.bodies[0].def.vx, -7.0f);
-    EXPECT_EQ(scene.bodies[0].def.vy, 12345678901.0f); // an integer beyond int32
+    EXPECT_EQ(scene.bodies[0].def.vy, 1e9f);
 }
 
 TEST(SceneParse, ByteOrderMarkAndWhitespaceAreFine) {
@@ -405,6 +406,16 @@ TEST(SceneErrors, JustAboveTheLargestFloatIsNotAFloat) {
               "bodies[0].x: must be a finite number");
 }
 
+TEST(SceneErrors, NumbersBeyondTheRangeAreNamed) {
+    // The largest float is a number, but beyond the range jostle works in (math.hpp).
+    EXPECT_EQ(errorOf(withBodies(R"({"hw": 1, "hh": 1, "x": 3.4028235e38})")),
+              "bodies[0].x: must be of magnitude <= 1e9");
+    EXPECT_EQ(errorOf(withBodies(R"({"hw": 1e-10, "hh": 1})")), "bodies[0].hw: must be >= 1e-9");
+    EXPECT_EQ(errorOf(R"({"gravity": [0, 2e9], "bodies": []})"),
+              "gravity: must be of magnitude <= 1e9");
+    EXPECT_EQ(errorOf(R"({"dt": 1e-12, "bodies": []})"), "dt: must be in [1e-9, 1e9]");
+}
+
 TEST(SceneErrors, MassAndDensity) {
     EXPECT_EQ(errorOf(withBodies(R"({"hw": 1, "hh": 1, "mass": 0})")),
               "bodies[0].mass: must be > 0");
@@ -509,7 +520,9 @@ TEST(SceneErrors, TileMaps) {
     EXPECT_EQ(map(R"("tile": "big", "rows": ["#"])"),
               "tilemap.tile: expected a number, got string");
     EXPECT_EQ(map(R"("tile": 1e30, "rows": ["##########"])"),
-              "tilemap.tile: makes the map too large for floats");
+              "tilemap.tile: must be of magnitude <= 1e9");
+    EXPECT_EQ(map(R"("tile": 2e8, "rows": ["##########"])"),
+              "tilemap.tile: puts the map's far corner beyond 1e9 (math.hpp)");
     EXPECT_EQ(map(R"("tile": 16, "x": 1e39, "rows": ["#"])"), "tilemap.x: must be a finite number");
     EXPECT_EQ(map(R"("tile": 16, "rows": ["#"], "friction": 2)"),
               "tilemap.friction: must be in [0, 1]");
