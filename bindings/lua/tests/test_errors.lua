@@ -131,7 +131,7 @@ test("body definitions: the rules of scene files", function()
     newBody, {hw = 1, hh = 1, category = 2 ^ 40})
   t.raises({"World:newBody", "sensor: expected true or false, got string"},
     newBody, {hw = 1, hh = 1, sensor = "yes"})
-  t.raises({"World:newBody", "vx, vy: a static body cannot move"},
+  t.raises({"World:newBody", "vx: a static body cannot move"},
     newBody, {type = "static", hw = 1, hh = 1, vx = 5})
   t.equal(world:getBodyCount(), 2, "nothing was created")
 end)
