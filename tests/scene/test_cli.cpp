@@ -219,6 +219,20 @@ TEST_F(Cli, TheTutorialExampleRuns) {
     EXPECT_THAT(r.out, HasSubstr("classic"));
 }
 
+// Determinism as a user sees it: two processes, the same scene, the same trace, byte for
+// byte (every float printed to read back exactly: FloatsArePrintedToReadBackExactly).
+TEST_F(Cli, TheTraceIsTheSameRunAfterRun) {
+    for (const char* scene : {"/tutorial-physical.json", "/pyramid.json"}) {
+        const std::string command =
+            "run " + quote(std::string(JOSTLE_SCENES_DIR) + scene) + " --steps 600 --trace -";
+        const Result first = run(command);
+        const Result second = run(command);
+        ASSERT_EQ(first.status, 0) << first.err;
+        EXPECT_GT(first.out.size(), 10000u); // a real trace, not an empty one
+        EXPECT_TRUE(first.out == second.out) << scene;
+    }
+}
+
 TEST_F(Cli, TileMapsAreTakenIntoTheWorld) {
     const std::string scene = write("tiles.json", R"({"gravity": [0, 800],
         "tilemap": {"x": 0, "y": 100, "tile": 16, "rows": ["....", "####"]},
