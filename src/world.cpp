@@ -464,10 +464,17 @@ void World::step(float dt) {
     for (BodyId id : w.order)
         if (!w.slots[id.index].asleep)
             w.slots[id.index].separation = {};
-    if (w.def.solver == Solver::Classic)
-        stepClassic(w, dt);
-    else
-        stepPhysical(w, dt);
+    try {
+        if (w.def.solver == Solver::Classic)
+            stepClassic(w, dt);
+        else
+            stepPhysical(w, dt);
+    } catch (...) {
+        // A callback's exception ends the step where it got to: bodies already moved
+        // still stop at the edge of the world.
+        keepInsideTheWorld(w);
+        throw;
+    }
     keepInsideTheWorld(w);
 }
 
