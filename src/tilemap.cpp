@@ -249,6 +249,24 @@ std::optional<FieldError> checkTileMapDef(const TileMapDef& def) {
     if (!(std::fabs(static_cast<double>(def.x) + width) <= kLargest &&
           std::fabs(static_cast<double>(def.y) + height) <= kLargest))
         return FieldError{"tile", "puts the map's far corner beyond 1e9 (math.hpp)"};
+    // Each box's half extent, worked out as createTileMap does (edges in double, then a
+    // float), must be a size createBody accepts: away from the origin the edges of a small
+    // tile round towards each other. A box of one tile is the narrowest; every column and
+    // every row is looked at, since the rounding differs from one to the next.
+    auto narrowest = [&](float origin, std::size_t count) {
+        const double tile = static_cast<double>(def.tile);
+        float smallest = std::numeric_limits<float>::infinity();
+        for (std::size_t i = 0; i < count; ++i) {
+            const double low = static_cast<double>(origin) + static_cast<double>(i) * tile;
+            const double high = static_cast<double>(origin) + static_cast<double>(i + 1) * tile;
+            smallest = std::min(smallest, static_cast<float>((high - low) / 2));
+        }
+        return smallest;
+    };
+    if (narrowest(def.x, columns) < kMinMagnitude ||
+        narrowest(def.y, def.rows.size()) < kMinMagnitude)
+        return FieldError{"tile", "is too small for the map's position: its boxes would be "
+                                  "narrower than 2e-9 (math.hpp)"};
 
     if (def.friction < 0.0f || def.friction > 1.0f)
         return FieldError{"friction", "must be in [0, 1]"};
