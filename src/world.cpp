@@ -45,13 +45,17 @@ float dynamicMass(const Body& body) {
 void keepInsideTheWorld(WorldState& world) {
     for (BodyId id : world.order) {
         Body& b = world.slots[id.index];
-        if (b.type == BodyType::Static || b.asleep)
+        // Sleeping bodies too: a body can fall asleep in the very step that carried it
+        // past the edge (slow enough to rest, with a long enough dt).
+        if (b.type == BodyType::Static)
             continue;
-        auto keep = [](float& position, float& velocity) {
+        auto keep = [&](float& position, float& velocity) {
             velocity = std::clamp(velocity, -kMaxMagnitude, kMaxMagnitude);
             if (std::abs(position) > kMaxMagnitude) {
                 position = std::copysign(kMaxMagnitude, position);
                 velocity = 0.0f;
+                if (b.asleep)
+                    world.restingDirty = true; // it moved within the grid of resting bodies
             }
         };
         keep(b.position.x, b.velocity.x);

@@ -1,5 +1,6 @@
 // Bugs the fuzzers found (tests/fuzz), each as the smallest case that shows it. The input
 // that found it is kept in tests/fuzz/corpus/, named after it.
+#include "jostle/query.hpp"
 #include "jostle/tilemap.hpp"
 #include "jostle/world.hpp"
 
@@ -178,6 +179,20 @@ TEST(Regressions, ATileMapThatChecksBuilds) {
             EXPECT_NO_THROW(createTileMap(world, def)) << "tile " << tile << " at x " << x;
         }
     }
+}
+
+// Found by fuzz_api (tests/fuzz/corpus/api/edge-of-the-world-asleep). The edge of the
+// world left sleeping bodies alone, but a body can fall asleep in the very step that
+// carries it past the edge: slow enough to be at rest, with a dt long enough (up to 1e9 s)
+// to take it there. It stayed beyond the edge, asleep.
+TEST(Regressions, ABodyThatFallsAsleepPastTheEdgeStopsAtIt) {
+    World world; // sleeping is on
+    // 1.5 units a second is rest for a box of half extent 40 (0.05 × 40 = 2 per second).
+    const BodyId box = world.createBody({.hw = 40, .hh = 40, .vx = 1.5f});
+    world.step(1e9f);
+    EXPECT_LE(world.position(box).x, kMaxMagnitude);
+    // Where it stopped, the queries find it.
+    EXPECT_EQ(queryPoint(world, world.position(box)).size(), 1u);
 }
 
 } // namespace
