@@ -764,6 +764,8 @@ private:
                 return;
             } catch (const CallbackThrow&) {
                 thrown = true; // the world must still be whole and steppable
+                if (verbosity() >= 2)
+                    std::fprintf(stderr, "  (the callback threw)\n");
             }
             inStep_ = false;
             if (!valid)
@@ -1234,6 +1236,9 @@ private:
     void installCallback() {
         callbackMode_ = in_.byte() % 12;
         callbackParam_ = in_.byte();
+        if (verbosity() >= 1)
+            std::fprintf(stderr, "callback: mode %d, parameter %d\n", callbackMode_,
+                         callbackParam_);
         if (callbackMode_ == 0) {
             world_.setPreSolve({});
             return;
@@ -1399,6 +1404,7 @@ public:
         last_.resize(boxes.size());
         restTime_.assign(boxes.size(), 0.0f);
         lastDepth_.assign(boxes.size(), kInf);
+        deepTime_.assign(boxes.size(), 0.0f);
         for (std::size_t k = 0; k < boxes.size(); ++k)
             last_[k] = world.position(boxes[k]);
         // Long enough for piles of 16 to come to rest.
@@ -1451,9 +1457,14 @@ public:
                 continue;
             }
             // Settled and awake: deeper than the slop only while position correction is
-            // still taking it out, a little less deep at every step.
+            // still taking it out, a little less deep at every step, or for moments: a
+            // resting pile of small boxes trembles by a few hundredths of the slop. A body
+            // deeper all through the time rest is judged over (0.5 s), and not on its way
+            // out, is deeper than the slop lets it be.
             const std::optional<check::Penetration> p = check::deepInStatic(world, id);
-            if (settled && p && !(p->depth < lastDepth_[k]) && !check::excusedAsSqueezed(world, id))
+            deepTime_[k] = p ? deepTime_[k] + dt : 0.0f;
+            if (settled && p && !(p->depth < lastDepth_[k]) && deepTime_[k] >= kTimeToSleep &&
+                !check::excusedAsSqueezed(world, id))
                 fail(world, id, *p, i);
             lastDepth_[k] = p ? p->depth : kInf;
         }
@@ -1462,11 +1473,12 @@ public:
 private:
     Input& in_;
     float s_ = 1;
-    // Per box: where it was after the last step, how long it has rested, and how deep
-    // beyond the slop it sat in a static body (infinity: not beyond).
+    // Per box: where it was after the last step, how long it has rested, how deep beyond
+    // the slop it sat in a static body (infinity: not beyond), and since when.
     std::vector<Vec2> last_;
     std::vector<float> restTime_;
     std::vector<float> lastDepth_;
+    std::vector<float> deepTime_; ///< how long it has been deeper than the slop
     float down_ = 1;
 
     /// A point `height` above the floor's top (y = 0) in this world's "up".

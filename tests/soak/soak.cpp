@@ -20,7 +20,7 @@
 // squeezed-into-static.
 //
 // Memory: VmRSS and VmHWM (/proc/self/status) are read every simulated minute after a
-// warm-up (two minutes, or half the run if shorter), and must stay within kRssTolerance
+// warm-up (two minutes, or half the run if shorter), and must stay within kRssToleranceKiB
 // of their value at the end of it. Under AddressSanitizer, whose quarantine keeps freed
 // memory for a while, RSS says nothing about leaks (LeakSanitizer checks them there), so
 // the check is skipped.
@@ -79,11 +79,11 @@ constexpr float kDeep = 0.1f;
 
 // Memory may grow this much after the warm-up, of RSS and of its peak. A step allocates
 // nothing once its buffers have grown to the busiest step seen, so what is left is the
-// allocator's own noise: glibc keeps freed chunks in its bins and trims the heap top
-// in steps of 128 KiB, and a busier moment than the warm-up saw (a bigger pile, more
-// contacts) grows a buffer for good. 4 MiB covers that several times over; a leak of even
-// 24 bytes a step (a contact, a handle) is 5 MiB over the hour, beyond it.
-constexpr long kRssToleranceKiB = 4 * 1024;
+// allocator's noise (glibc keeps freed chunks in its bins and trims the top of the heap in
+// steps of 128 KiB) and a busier moment than the warm-up saw growing a buffer for good:
+// about 0.1 MiB over the hour of scripts/soak.sh. 1 MiB is ten times that, and a leak of
+// 5 bytes a step (a 32-byte block every six steps) is more over the hour.
+constexpr long kRssToleranceKiB = 1024;
 
 struct Memory {
     long rssKiB = 0;
@@ -468,13 +468,10 @@ private:
                     static_cast<double>(worstRestDepth_), static_cast<double>(kDeep),
                     static_cast<double>(world_.physicalOptions().slop), beyondSlop_, squeezedSeen_);
         if (baseline_)
-            std::printf("  memory             RSS %.1f MiB after warm-up, %.1f MiB at the end "
-                        "(max %.1f); peak (VmHWM) %.1f -> %.1f MiB%s\n",
-                        static_cast<double>(baseline_->rssKiB) / 1024,
-                        static_cast<double>(end.rssKiB) / 1024,
-                        static_cast<double>(maxRssKiB_) / 1024,
-                        static_cast<double>(baseline_->hwmKiB) / 1024,
-                        static_cast<double>(end.hwmKiB) / 1024,
+            std::printf("  memory             RSS %ld KiB after warm-up, %ld KiB at the end "
+                        "(max %ld); peak (VmHWM) %ld -> %ld KiB; tolerance %ld KiB%s\n",
+                        baseline_->rssKiB, end.rssKiB, maxRssKiB_, baseline_->hwmKiB, end.hwmKiB,
+                        kRssToleranceKiB,
                         kAddressSanitizer ? " (AddressSanitizer: not checked)" : "");
         std::printf("  wall time          %.1f s\n", wall);
     }
