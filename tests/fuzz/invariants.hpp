@@ -62,7 +62,7 @@ struct Penetration {
 };
 
 /// The penetration the physical model leaves alone between two boxes at rest, along the
-/// axis of least penetration: the slop, a fraction of the pair's smaller half extent on
+/// contact normal (contactAlongX): the slop, a fraction of the pair's smaller half extent on
 /// that axis (docs/physical-model.md, PhysicalOptions::slop); plus what collide.hpp calls
 /// float noise, kMinimumSkin = 1e-4 of that half extent (the solver's own sums of
 /// impulses and corrections round: a heavy pile on a light box rests a few 1e-6 of its
@@ -77,9 +77,27 @@ inline float allowedPenetration(float slop, float halfA, float halfB, float cent
     return (slop + kFloatNoise) * std::min(halfA, halfB) + 4.0f * ulp;
 }
 
+/// The axis of the contact normal between two overlapping boxes, as the physical model
+/// chooses it (collide.hpp, contactAxis): overlap within the contact skin (twice the slop
+/// times the smaller half extent on that axis) is touching, not penetrating. Penetrating
+/// on both axes: the axis of least penetration, a tie going to y. On one axis only: the
+/// boxes are side by side along the other (a box resting across the seam of two floor
+/// boxes overlaps the next one's corner a little sideways, and rests on it along y).
+/// Touching on both: y.
+inline bool contactAlongX(float overlapX, float overlapY, float slop, Vec2 h, Vec2 k) {
+    constexpr float kMinimumSkin = 1e-4f; // collide.hpp's, of the smaller half extent
+    const float skinX = std::max(2.0f * slop, kMinimumSkin) * std::min(h.x, k.x);
+    const float skinY = std::max(2.0f * slop, kMinimumSkin) * std::min(h.y, k.y);
+    const bool realX = overlapX > skinX, realY = overlapY > skinY;
+    if (realX && realY)
+        return overlapX < overlapY;
+    return realY && !realX;
+}
+
 /// The deepest overlap of `body` with a static body that the two collide with (filters
 /// allow it, neither is a sensor, the static one is not a one-way platform, which a body
-/// may stand inside of), if it is deeper than allowedPenetration plus `extra`.
+/// may stand inside of), if it is deeper along the contact normal than allowedPenetration
+/// plus `extra`.
 inline std::optional<Penetration> deepInStatic(const World& world, BodyId body,
                                                float extra = 0.0f) {
     if (world.isSensor(body))
@@ -103,8 +121,7 @@ inline std::optional<Penetration> deepInStatic(const World& world, BodyId body,
         };
         const float overlapX = overlap(h.x, k.x, p.x, q.x);
         const float overlapY = overlap(h.y, k.y, p.y, q.y);
-        // The axis of least penetration; a tie goes to y, as in the solver.
-        const bool alongX = overlapX < overlapY;
+        const bool alongX = contactAlongX(overlapX, overlapY, slop, h, k);
         const float depth = alongX ? overlapX : overlapY;
         const float allowed = extra + (alongX ? allowedPenetration(slop, h.x, k.x, p.x, q.x)
                                               : allowedPenetration(slop, h.y, k.y, p.y, q.y));
@@ -127,7 +144,7 @@ inline bool squeezed(const World& world, BodyId body) {
         const Vec2 q = world.position(other), k = world.halfExtents(other);
         const float overlapX = h.x + k.x - std::abs(p.x - q.x);
         const float overlapY = h.y + k.y - std::abs(p.y - q.y);
-        const bool alongX = overlapX < overlapY;
+        const bool alongX = contactAlongX(overlapX, overlapY, slop, h, k);
         const bool deep = alongX ? overlapX > allowedPenetration(slop, h.x, k.x, p.x, q.x)
                                  : overlapY > allowedPenetration(slop, h.y, k.y, p.y, q.y);
         if (!deep)
