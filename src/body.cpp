@@ -1,6 +1,8 @@
 // Names of body types and the rules a BodyDef must follow.
 #include "jostle/body.hpp"
 
+#include "range_check.hpp"
+
 #include <cmath>
 
 namespace jostle {
@@ -34,8 +36,8 @@ std::optional<FieldError> checkBodyDef(const BodyDef& def) {
         def.type != BodyType::Dynamic)
         return FieldError{"type", "must be static, kinematic or dynamic"};
 
-    // Finite first, so that the range rules below never see a NaN (every comparison
-    // with NaN is false, which would let it slip through).
+    // In the range first, so that the rules below never see a NaN (every comparison with
+    // NaN is false, which would let it slip through).
     const std::pair<const char*, float> numbers[] = {
         {"x", def.x},
         {"y", def.y},
@@ -52,12 +54,9 @@ std::optional<FieldError> checkBodyDef(const BodyDef& def) {
         {"oneWay", def.oneWay.x},
         {"oneWay", def.oneWay.y},
     };
-    for (const auto& [field, value] : numbers) {
-        if (!std::isfinite(value))
-            return FieldError{field, "must be a finite number"};
-        if (!inRange(value)) // math.hpp: the range jostle works in
-            return FieldError{field, "must be of magnitude <= 1e9"};
-    }
+    for (const auto& [field, value] : numbers)
+        if (const char* problem = rangeProblem(value))
+            return FieldError{field, problem};
 
     if (def.hw <= 0.0f)
         return FieldError{"hw", "must be > 0"};

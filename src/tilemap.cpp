@@ -3,6 +3,7 @@
 // tile map's bodies are ordinary static bodies to everything else in the library.
 #include "tilemap.hpp"
 
+#include "range_check.hpp"
 #include "world_access.hpp"
 
 #include <algorithm>
@@ -209,12 +210,9 @@ std::optional<FieldError> checkTileMapDef(const TileMapDef& def) {
         {"oneWay", def.oneWay.x},
         {"oneWay", def.oneWay.y},
     };
-    for (const auto& [field, value] : numbers) {
-        if (!std::isfinite(value))
-            return FieldError{field, "must be a finite number"};
-        if (!inRange(value)) // math.hpp: the range jostle works in
-            return FieldError{field, "must be of magnitude <= 1e9"};
-    }
+    for (const auto& [field, value] : numbers)
+        if (const char* problem = rangeProblem(value))
+            return FieldError{field, problem};
     if (!(def.tile > 0.0f))
         return FieldError{"tile", "must be > 0"};
     // Half a tile is the smallest half extent a box gets: a body's smallest size.

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "jostle/world.hpp"
+#include "range_check.hpp"
 #include "world_state.hpp"
 
 #include <cmath>
@@ -24,13 +25,13 @@ struct WorldAccess {
 
 /// A number given to the API: finite, of magnitude <= kMaxMagnitude (math.hpp).
 inline void requireFinite(const char* function, const char* what, float value) {
-    if (!inRange(value))
-        fail(function, std::string(what) + " must be a finite number of magnitude <= 1e9");
+    if (const char* problem = rangeProblem(value))
+        fail(function, std::string(what) + " " + problem);
 }
 
 inline void requireFinite(const char* function, const char* what, Vec2 value) {
-    if (!inRange(value))
-        fail(function, std::string(what) + " must be finite numbers of magnitude <= 1e9");
+    if (const char* problem = rangeProblem(value))
+        fail(function, std::string(what) + " " + problem);
 }
 
 /// A size, density, mass or dt: in [kMinMagnitude, kMaxMagnitude] (math.hpp).

@@ -1,5 +1,6 @@
 // Names of solvers and the rules a WorldDef must follow.
 #include "jostle/world.hpp"
+#include "range_check.hpp"
 
 #include <cmath>
 
@@ -63,10 +64,8 @@ std::optional<FieldError> checkPhysicalOptions(const PhysicalOptions& p) {
 } // namespace
 
 std::optional<FieldError> checkWorldDef(const WorldDef& def) {
-    if (!isFinite(def.gravity))
-        return FieldError{"gravity", "must be finite numbers"};
-    if (!inRange(def.gravity)) // math.hpp: the range jostle works in
-        return FieldError{"gravity", "must be of magnitude <= 1e9"};
+    if (const char* problem = rangeProblem(def.gravity))
+        return FieldError{"gravity", problem};
     // Infinity is allowed here: it is how "no clamp" is spelt.
     if (std::isnan(def.maxVelocity) || def.maxVelocity <= 0.0f)
         return FieldError{"maxVelocity", "must be > 0"};
