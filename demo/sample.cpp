@@ -26,9 +26,14 @@ WorldBox withHeadroom(WorldBox box, float fraction) {
     return box;
 }
 
-Pane paneFromScene(const Scene& scene, std::string title, float headroom) {
+Pane paneWithWorld(const WorldDef& def) {
     Pane pane;
-    pane.world = std::make_unique<World>(scene.world);
+    pane.world = std::make_unique<World>(def);
+    return pane;
+}
+
+Pane paneFromScene(const Scene& scene, std::string title, float headroom) {
+    Pane pane = paneWithWorld(scene.world);
     addTileMaps(*pane.world, scene);
     addBodies(*pane.world, scene);
     pane.view = withHeadroom(boundsOf(*pane.world), headroom);

@@ -70,6 +70,10 @@ WorldBox boundsOf(const World& world);
 /// boxes into with the mouse.
 WorldBox withHeadroom(WorldBox box, float fraction);
 
+/// A pane holding a new, empty world made from `def`: the sample fills it, and sets its
+/// view.
+Pane paneWithWorld(const WorldDef& def);
+
 /// A pane holding a new world made from `scene`, showing all its bodies.
 Pane paneFromScene(const Scene& scene, std::string title, float headroom);
 

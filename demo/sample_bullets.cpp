@@ -28,8 +28,7 @@ public:
         shots_.clear();
         untilNextShot_ = 0.0f;
         shotCount_ = 0;
-        Pane pane;
-        pane.world = std::make_unique<World>(WorldDef{.gravity = {0.0f, 800.0f}});
+        Pane pane = paneWithWorld({.gravity = {0.0f, 800.0f}});
         World& world = *pane.world;
         const auto solid = [&world](float x, float y, float hw, float hh) {
             world.createBody({.type = BodyType::Static, .x = x, .y = y, .hw = hw, .hh = hh});

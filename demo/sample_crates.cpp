@@ -21,8 +21,7 @@ public:
 
     void reset() override {
         panes_.clear();
-        Pane pane;
-        pane.world = std::make_unique<World>(WorldDef{.gravity = {0.0f, kJump.gravity()}});
+        Pane pane = paneWithWorld({.gravity = {0.0f, kJump.gravity()}});
         World& world = *pane.world;
         world.createBody({.type = BodyType::Static, .x = 500, .y = 520, .hw = 520, .hh = 20});
         world.createBody({.type = BodyType::Static, .x = -10, .y = 300, .hw = 10, .hh = 240});

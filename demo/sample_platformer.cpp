@@ -47,8 +47,7 @@ public:
 
     void reset() override {
         panes_.clear();
-        Pane pane;
-        pane.world = std::make_unique<World>(WorldDef{.gravity = {0.0f, kJump.gravity()}});
+        Pane pane = paneWithWorld({.gravity = {0.0f, kJump.gravity()}});
         World& world = *pane.world;
         createTileMap(world, levelMap());
 

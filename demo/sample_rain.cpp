@@ -24,8 +24,7 @@ public:
 
     void reset() override {
         panes_.clear();
-        Pane pane;
-        pane.world = std::make_unique<World>(WorldDef{.gravity = {0.0f, 10.0f}});
+        Pane pane = paneWithWorld({.gravity = {0.0f, 10.0f}});
         World& world = *pane.world;
         // Floor with its top at y = 0, and walls standing on it.
         world.createBody({.type = BodyType::Static, .x = 0, .y = 1, .hw = kHalfWidth + 2, .hh = 1});
