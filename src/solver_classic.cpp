@@ -75,8 +75,10 @@ public:
         // Kinematic bodies move by their own velocity before the dynamic ones.
         for (std::uint32_t s : statics_) {
             Body& k = w_.slots[s];
-            if (k.type == BodyType::Kinematic)
+            if (k.type == BodyType::Kinematic) {
                 k.position += k.velocity * dt_;
+                stopAtTheEdge(k);
+            }
         }
         buildGrids();
 
@@ -88,8 +90,10 @@ public:
             Body& d = w_.slots[a];
             if (w_.def.classic.ccd && sweepMove(a) == Outcome::Destroyed)
                 continue;
-            if (!w_.def.classic.ccd)
+            if (!w_.def.classic.ccd) {
                 d.position += d.velocity * dt_;
+                stopAtTheEdge(d);
+            }
             if (resolveAgainstStatics(a) == Outcome::Destroyed)
                 continue;
             resolveAgainstLaterDynamics(a, i);
@@ -238,10 +242,12 @@ private:
                 firstHit(a, motion, remaining);
             if (!first) {
                 body.position += motion;
+                stopAtTheEdge(body);
                 return Outcome::Kept;
             }
             const auto [hit, hitSlot] = *first;
             body.position += motion * hit.time;
+            stopAtTheEdge(body);
             remaining *= 1.0f - hit.time;
             const Vec2 va = body.velocity;
             const Vec2 vb = w_.slots[hitSlot].velocity;
@@ -351,6 +357,7 @@ private:
             ba.position.x = ba.position.x + sx;
             ba.position.y = ba.position.y + sy;
             ba.separation += Vec2{sx, sy};
+            stopAtTheEdge(ba);
         }
 
         // penetration component

@@ -40,8 +40,9 @@ float dynamicMass(const Body& body) {
     return body.mass > 0.0f ? body.mass : body.density * 4.0f * body.half.x * body.half.y;
 }
 
-// The edge of the world (math.hpp): a body that reaches ±kMaxMagnitude on an axis stops
-// there, and no speed exceeds it, so that no later sum overflows. Games never get near.
+// The edge of the world (math.hpp): no speed exceeds kMaxMagnitude, so that no later sum
+// overflows, and a body that reaches ±kMaxMagnitude on an axis stops there. Games never
+// get near.
 void keepInsideTheWorld(WorldState& world) {
     for (BodyId id : world.order) {
         Body& b = world.slots[id.index];
@@ -49,19 +50,30 @@ void keepInsideTheWorld(WorldState& world) {
         // past the edge (slow enough to rest, with a long enough dt).
         if (b.type == BodyType::Static)
             continue;
-        auto keep = [&](float& position, float& velocity) {
-            velocity = std::clamp(velocity, -kMaxMagnitude, kMaxMagnitude);
-            if (std::abs(position) > kMaxMagnitude) {
-                position = std::copysign(kMaxMagnitude, position);
-                velocity = 0.0f;
-                if (b.asleep)
-                    world.restingDirty = true; // it moved within the grid of resting bodies
-            }
-        };
-        keep(b.position.x, b.velocity.x);
-        keep(b.position.y, b.velocity.y);
+        b.velocity.x = std::clamp(b.velocity.x, -kMaxMagnitude, kMaxMagnitude);
+        b.velocity.y = std::clamp(b.velocity.y, -kMaxMagnitude, kMaxMagnitude);
+        if (stopAtTheEdge(b) && b.asleep)
+            world.restingDirty = true; // it moved within the grid of resting bodies
     }
 }
+
+} // namespace
+
+bool stopAtTheEdge(Body& body) {
+    bool stopped = false;
+    auto stop = [&](float& position, float& velocity) {
+        if (std::abs(position) > kMaxMagnitude) {
+            position = std::copysign(kMaxMagnitude, position);
+            velocity = 0.0f;
+            stopped = true;
+        }
+    };
+    stop(body.position.x, body.velocity.x);
+    stop(body.position.y, body.velocity.y);
+    return stopped;
+}
+
+namespace {
 
 void wakeAll(WorldState& world) {
     for (BodyId id : world.order)

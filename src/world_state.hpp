@@ -175,6 +175,12 @@ void findPairs(WorldState& world, float dt, std::vector<BodyPair>& pairs);
 /// The physical model's step. solver_physical.cpp.
 void stepPhysical(WorldState& world, float dt);
 
+/// The edge of the world (math.hpp): a body beyond ±kMaxMagnitude on an axis is put back
+/// on it, and loses its speed along that axis. True if it was beyond. The end of every
+/// step applies it to all bodies; the classic model also after each move, so that the
+/// pre-solve callbacks it calls as it goes see no body beyond the edge. world.cpp.
+bool stopAtTheEdge(Body& body);
+
 /// Gravity, damping and the velocity clamp for one dynamic body, as both models apply
 /// them at the start of a step.
 void integrateVelocity(const WorldDef& def, Body& body, float dt);

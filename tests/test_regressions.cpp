@@ -195,5 +195,40 @@ TEST(Regressions, ABodyThatFallsAsleepPastTheEdgeStopsAtIt) {
     EXPECT_EQ(queryPoint(world, world.position(box)).size(), 1u);
 }
 
+// Found by fuzz_api (tests/fuzz/corpus/api/classic-presolve-beyond-the-edge). The
+// classic model calls the pre-solve as it resolves each body, after moving it; the edge
+// of the world stopped bodies only at the end of the step, so the callback saw a body
+// beyond it, and a query at its position threw out of the step.
+TEST(Regressions, TheClassicPreSolveSeesNoBodyBeyondTheEdge) {
+    for (const bool ccd : {false, true}) {
+        World world(
+            WorldDef{.gravity = {0, 0}, .solver = Solver::Classic, .classic = {.ccd = ccd}});
+        // A floor reaching past the edge of the world, its top at y = 15, and a box 5
+        // above it, falling 10 units a step, and going right at the largest speed: 1.7e7
+        // units in the step, far past the edge, where it stops, on the floor.
+        world.createBody({.type = BodyType::Static,
+                          .x = kMaxMagnitude,
+                          .y = 1015,
+                          .hw = kMaxMagnitude,
+                          .hh = 1000});
+        world.createBody({.x = kMaxMagnitude - 3000,
+                          .y = 0,
+                          .hw = 10,
+                          .hh = 10,
+                          .vx = kMaxMagnitude,
+                          .vy = 600});
+        int calls = 0;
+        world.setPreSolve([&](Collision& c) {
+            ++calls;
+            EXPECT_TRUE(inRange(world.position(c.a)));
+            EXPECT_TRUE(inRange(world.position(c.b)));
+            EXPECT_NO_THROW(queryBox(world, world.position(c.a), {10, 10}));
+            return true;
+        });
+        world.step(1.0f / 60.0f);
+        EXPECT_GE(calls, 1) << "ccd " << ccd;
+    }
+}
+
 } // namespace
 } // namespace jostle
