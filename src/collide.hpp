@@ -4,6 +4,9 @@
 #include "jostle/math.hpp"
 
 #include <algorithm>
+#include <bit>
+#include <cmath>
+#include <cstdint>
 #include <optional>
 
 namespace jostle {
@@ -22,6 +25,12 @@ struct Box {
 std::optional<Vec2> shortestSeparation(const Box& a, const Box& b);
 
 inline constexpr float kMinimumSkin = 1e-4f; ///< of the smaller half extent: float noise
+
+/// The gap from |x| to the next float up: how finely coordinates near x are resolved.
+inline float ulpOf(float x) {
+    const float a = std::abs(x);
+    return std::bit_cast<float>(std::bit_cast<std::uint32_t>(a) + 1u) - a;
+}
 
 /// The physical model's contact skin of two boxes along one axis, given their half
 /// extents on it and the world's slop (a fraction of the smaller half extent): overlap up

@@ -97,6 +97,9 @@ struct PhysicalScratch {
     std::vector<SolverBody> bodies;
     std::vector<std::uint32_t> solverIndex; ///< by slot
     std::vector<std::uint32_t> levels;      ///< support level by solver body
+    std::vector<std::uint8_t> backing;      ///< by solver body: sides touching a static one
+    std::vector<std::uint8_t> sweepFlags;   ///< by slot: moves where its contacts did not look
+    std::vector<Contact> sweptContacts;     ///< found by the sweeps, not among the step's
     std::vector<std::uint32_t> offsets, neighbours, fill, queue, counts;
     std::vector<std::uint32_t> parent; ///< union-find of islands, by slot
     std::vector<float> islandTime;

@@ -4,17 +4,22 @@
 //   2. contacts: every pair that overlaps, touches, or will touch within the step
 //      (speculative contacts: the solver lets such a pair close its gap, no more);
 //   3. support levels: static and kinematic bodies are level 0, a dynamic body touching
-//      a level-k body is level k+1; contacts are solved from the ground up;
+//      a level-k body is level k+1; contacts are solved from the ground up, and in each
+//      one body may hold the other (the lower along gravity; else one with a static body
+//      right behind it);
 //   4. sequential impulses: a few passes over all contacts; each pass nudges the
 //      accumulated normal impulse (never pulling: >= 0) and the friction impulse
 //      (Coulomb: |friction| <= mu × normal), starting from last step's (warm starting);
-//   5. shock propagation: one last normal pass, from the ground up, in which the lower
-//      body of each contact is held fixed: what the passes before left unresolved, the
-//      upper body takes, so a heavy box cannot squash a light one into the floor;
-//   6. positions from velocities;
-//   7. position correction: overlap beyond the slop is removed by moving the bodies
-//      (the upper one, across support levels; both, by inverse mass, within a level);
-//      velocities are left alone, so no energy is added.
+//   5. shock propagation: one last normal pass, from the ground up, in which the body
+//      that holds the other is held fixed: what the passes before left unresolved, the
+//      other takes, so a heavy box cannot squash a light one into the floor;
+//   6. sweeps: a body moving further than its half size, or somewhere its contacts did
+//      not look, is swept against static and kinematic bodies; what it meets becomes a
+//      contact of the step;
+//   7. positions from velocities;
+//   8. position correction: overlap beyond the slop is removed by moving the bodies
+//      (the held one stays; else both move, by inverse mass); velocities are left
+//      alone, so no energy is added.
 //
 // Boxes do not rotate, so a contact is one normal along x or y and one tangent: the
 // effective mass of a contact is 1 / (invMassA + invMassB) and nothing else.
@@ -57,9 +62,21 @@ public:
         for (int i = 0; i < options_.velocityIterations; ++i)
             solveVelocities();
         propagateShock();
-        for (const SolverBody& body : bodies_)
-            w_.slots[body.slot].velocity = {body.velocity[0], body.velocity[1]};
-        sweepFastBodies();
+        sweepFlags_.assign(w_.slots.size(), 0);
+        for (const SolverBody& body : bodies_) {
+            Vec2& velocity = w_.slots[body.slot].velocity;
+            const Vec2 solved{body.velocity[0], body.velocity[1]};
+            if (body.invMass > 0.0f && movesUnforeseen(w_.slots[body.slot], velocity, solved))
+                sweepFlags_[body.slot] = 1;
+            velocity = solved;
+        }
+        sweepBodies();
+        // Contacts the sweeps found join the step's, for position correction and events.
+        if (!sweptContacts_.empty()) {
+            contacts_.insert(contacts_.end(), sweptContacts_.begin(), sweptContacts_.end());
+            sweptContacts_.clear();
+            orderBySupport();
+        }
         integratePositions();
         for (SolverBody& body : bodies_) {
             body.position[0] = w_.slots[body.slot].position.x;
@@ -397,6 +414,7 @@ private:
                 }
             }
         }
+        findBacking();
         // A stable counting sort by level; unsupported contacts (floating piles) last.
         // Contacts are large: the sort finds each one's destination, then moves them
         // there in place, along the cycles of the permutation.
@@ -406,14 +424,33 @@ private:
             const std::uint32_t la = levels_[c.ia];
             const std::uint32_t lb = levels_[c.ib];
             c.supporter = la < lb ? 1 : lb < la ? 2 : 0;
-            // A body holds the other up only from below: one reached through a sideways
-            // contact (a box leaning on a wall) is not a floor. Counting it as one, a box
-            // between two supporters would be pushed both ways by position correction,
-            // and stay squeezed. (Without gravity there is no below: levels alone decide.)
-            const float down = dot(c.normal(), w_.def.gravity); // > 0: a is below b
-            if (w_.def.gravity != Vec2{} &&
-                ((c.supporter == 1 && !(down > 0.0f)) || (c.supporter == 2 && !(down < 0.0f))))
-                c.supporter = 0;
+            if (w_.def.gravity != Vec2{}) {
+                const float down = dot(c.normal(), w_.def.gravity); // > 0: a is below b
+                // A body holds the other up only from below: one reached through a
+                // sideways contact (a box leaning on a wall) is not a floor. Counting it as
+                // one, a box between two supporters would be pushed both ways by position
+                // correction, and stay squeezed.
+                if ((c.supporter == 1 && !(down > 0.0f)) || (c.supporter == 2 && !(down < 0.0f)))
+                    c.supporter = 0;
+                // Within a level, the lower body of a contact along gravity holds the upper
+                // one up. Both touch the ground, so the upper one reaches down into the
+                // lower one or beside it into the ground: a heavy box that landed across a
+                // plank and the floor. Sharing by inverse mass would push the plank into the
+                // floor as hard as the floor pushes it out, and it would stay there.
+                if (la == lb && la != unsupported && down != 0.0f)
+                    c.supporter = down > 0.0f ? 1 : 2;
+            }
+            // (Without gravity there is no below: levels alone decide.)
+            // Neither holding the other up, a body with a static or kinematic body right
+            // behind it, on the side the contact pushes it to, holds the other: a light
+            // box pressed against a wall by a heavy one. Sharing by inverse mass, the light
+            // box would be pushed back into the wall nearly as far as the wall pushes it
+            // out, and the pair would creep apart at a hundredth of the rate.
+            if (c.supporter == 0) {
+                const bool aHeld = isBacked(c.ia, c.axis, c.sign);
+                const bool bHeld = isBacked(c.ib, c.axis, -c.sign);
+                c.supporter = aHeld && !bHeld ? 1 : bHeld && !aHeld ? 2 : 0;
+            }
             if (levelOf(c) != unsupported)
                 top = std::max(top, levelOf(c) + 1);
         }
@@ -438,6 +475,29 @@ private:
         }
     }
 
+    /// Which solver bodies touch a static or kinematic body, and on which sides: a bit
+    /// per axis and direction (backingBit).
+    void findBacking() {
+        backing_.assign(bodies_.size(), 0);
+        for (const Contact& c : contacts_) {
+            // The normal points from b towards a: b lies on a's side -sign, a on b's +sign.
+            if (c.invMassB == 0.0f)
+                backing_[c.ia] |= backingBit(c.axis, -c.sign);
+            if (c.invMassA == 0.0f)
+                backing_[c.ib] |= backingBit(c.axis, c.sign);
+        }
+    }
+
+    static std::uint8_t backingBit(int axis, float direction) {
+        return std::uint8_t(1u << (2 * axis + (direction > 0.0f ? 1 : 0)));
+    }
+
+    /// Whether solver body `i` has a static or kinematic body next to it along `axis`,
+    /// in `direction` (its sign).
+    bool isBacked(std::uint32_t i, int axis, float direction) const {
+        return (backing_[i] & backingBit(axis, direction)) != 0;
+    }
+
     /// Applies `impulse` along the contact's normal (n = 0) or tangent (n = 1) axis.
     void applyImpulse(const Contact& c, int axis, float impulse) {
         bodies_[c.ia].velocity[axis] += impulse * c.invMassA;
@@ -455,25 +515,30 @@ private:
         }
     }
 
+    // The passes below clamp the accumulated impulse by clamping the change to it, not by
+    // clamping the sum and taking the difference: a light body under a heavy one needs a
+    // change far below the float step of the impulse that holds the heavy one up, and
+    // the difference of two sums would round it away, leaving the light body sinking.
+
     void solveVelocities() {
         for (Contact& c : contacts_) {
             // Normal: push (never pull) until the pair stops approaching.
             {
                 const float speed = c.sign * relativeSpeed(c, c.axis);
-                const float impulse = -c.effectiveMass * (speed - c.targetSpeed);
-                const float total = std::max(c.normalImpulse + impulse, 0.0f);
-                applyImpulse(c, c.axis, c.sign * (total - c.normalImpulse));
-                c.normalImpulse = total;
+                const float impulse =
+                    std::max(-c.effectiveMass * (speed - c.targetSpeed), -c.normalImpulse);
+                applyImpulse(c, c.axis, c.sign * impulse);
+                c.normalImpulse += impulse;
             }
             // Friction: stop the sliding, within Coulomb's cone.
             {
                 const int tangent = 1 - c.axis;
                 const float speed = c.tangentSign * relativeSpeed(c, tangent);
-                const float impulse = -c.effectiveMass * speed;
                 const float limit = c.friction * c.normalImpulse;
-                const float total = std::clamp(c.tangentImpulse + impulse, -limit, limit);
-                applyImpulse(c, tangent, c.tangentSign * (total - c.tangentImpulse));
-                c.tangentImpulse = total;
+                const float impulse = std::clamp(
+                    -c.effectiveMass * speed, -limit - c.tangentImpulse, limit - c.tangentImpulse);
+                applyImpulse(c, tangent, c.tangentSign * impulse);
+                c.tangentImpulse = std::clamp(c.tangentImpulse + impulse, -limit, limit);
             }
         }
     }
@@ -487,32 +552,83 @@ private:
             if (invMass <= 0.0f)
                 continue;
             const float speed = c.sign * relativeSpeed(c, c.axis);
-            const float total = std::max(c.normalImpulse - (speed - c.targetSpeed) / invMass, 0.0f);
-            const float impulse = c.sign * (total - c.normalImpulse);
+            const float impulse = std::max(-(speed - c.targetSpeed) / invMass, -c.normalImpulse);
             if (c.supporter == 1)
-                bodies_[c.ib].velocity[c.axis] -= impulse * c.invMassB;
+                bodies_[c.ib].velocity[c.axis] -= c.sign * impulse * c.invMassB;
             else
-                bodies_[c.ia].velocity[c.axis] += impulse * c.invMassA;
-            c.normalImpulse = total;
+                bodies_[c.ia].velocity[c.axis] += c.sign * impulse * c.invMassA;
+            c.normalImpulse += impulse;
         }
     }
 
-    /// Continuous collision: a body that moves more than its own half size in this step
-    /// is swept along its motion against static and kinematic bodies (and, if it is a
+    /// Whether the solver sent `body` where its contacts did not look: they were made
+    /// for bodies it could reach moving `before` (this step's velocity, before the
+    /// solver), and it now moves `after`, further along an axis than its skin allows. A
+    /// light box rammed down by a heavy one that lands on it, while the box itself was
+    /// on its way up, meets a floor that no contact of the step knows of.
+    bool movesUnforeseen(const Body& body, Vec2 before, Vec2 after) const {
+        auto beyond = [&](float was, float now, float half) {
+            const float unforeseen =
+                was * now < 0.0f ? std::abs(now) : std::abs(now) - std::abs(was);
+            return unforeseen * dt_ > skinOf(half, half);
+        };
+        return beyond(before.x, after.x, body.half.x) || beyond(before.y, after.y, body.half.y);
+    }
+
+    /// Continuous collision: a body that moves more than its own half size in this step,
+    /// or that the solver sent where its contacts did not look (movesUnforeseen), is
+    /// swept along its motion against static and kinematic bodies (and, if it is a
     /// bullet, dynamic ones), and stopped where it first meets one, its velocity into
     /// that body removed. Contacts already stop what they foresee; this catches the rest,
-    /// so nothing passes through a wall however fast it goes.
-    void sweepFastBodies() {
+    /// so nothing passes through a wall however fast it goes, nor is pushed into one.
+    void sweepBodies() {
         for (std::uint32_t slot : w_.movingSlots) {
             Body& body = w_.slots[slot];
             if (!body.isDynamic() || !w_.isLive(slot))
                 continue;
             const Vec2 motion = body.velocity * dt_;
             const float size = std::min(body.half.x, body.half.y);
-            if (std::abs(motion.x) <= size && std::abs(motion.y) <= size)
+            if (std::abs(motion.x) <= size && std::abs(motion.y) <= size && !sweepFlags_[slot])
                 continue;
             sweep(slot, motion);
         }
+    }
+
+    /// A contact for a hit of the sweep of `slot` on `obstacle`, along `normal` (from the
+    /// obstacle towards the body), met at `speed`: it holds the body on the obstacle's
+    /// side when position correction pushes it there from the other side, and reports
+    /// the touch. Unless a contact of the pair is in the step already.
+    void addSweptContact(std::uint32_t slot, std::uint32_t obstacle, Vec2 normal, float speed) {
+        const bool bodyFirst = w_.rank[slot] < w_.rank[obstacle];
+        const std::uint32_t slotA = bodyFirst ? slot : obstacle;
+        const std::uint32_t slotB = bodyFirst ? obstacle : slot;
+        const std::uint32_t ia = solverBodyOf(slotA), ib = solverBodyOf(slotB);
+        // The contact graph of orderBySupport holds the step's contacts so far.
+        if (const std::size_t known = offsets_.size() - 1; ia < known && ib < known)
+            for (std::uint32_t k = offsets_[ia]; k < offsets_[ia + 1]; ++k)
+                if (neighbours_[k] == ib)
+                    return;
+        for (const Contact& c : sweptContacts_)
+            if (c.ia == ia && c.ib == ib)
+                return;
+        const Body& a = w_.slots[slotA];
+        const Body& b = w_.slots[slotB];
+        Contact c;
+        c.ia = ia;
+        c.ib = ib;
+        c.axis = normal.x != 0.0f ? 0 : 1;
+        c.sign = (c.axis == 0 ? normal.x : normal.y) * (bodyFirst ? 1.0f : -1.0f);
+        c.tangentSign = c.axis == 0 ? c.sign : -c.sign;
+        c.extent = c.axis == 0 ? a.half.x + b.half.x : a.half.y + b.half.y;
+        c.slop = options_.slop *
+                 (c.axis == 0 ? std::min(a.half.x, b.half.x) : std::min(a.half.y, b.half.y));
+        c.friction = combineFriction(options_.frictionMix, a.friction, b.friction);
+        c.invMassA = a.invMass;
+        c.invMassB = b.invMass;
+        c.effectiveMass = 1.0f / (a.invMass + b.invMass);
+        c.targetSpeed = 0.0f;
+        c.approachSpeed = speed;
+        sweptContacts_.push_back(c);
     }
 
     /// Sweeps the body along `motion`; at the first hit, moves it there and takes away
@@ -537,6 +653,7 @@ private:
             const float into = dot(body.velocity - obstacle.velocity, hit.normal);
             if (into < 0.0f)
                 body.velocity -= hit.normal * into;
+            addSweptContact(slot, hitSlot, hit.normal, std::max(0.0f, -into));
             motion = body.velocity * dt_;
         }
         if (firstHit(slot, motion))
@@ -607,11 +724,15 @@ private:
             // went on through what it pushed): pushing "out" would push through.
             if (overlap > c.extent)
                 continue;
-            const float largest = 0.25f * (c.extent - c.slop);
-            const float correction =
-                std::clamp(options_.correction * (overlap - c.slop), 0.0f, largest);
-            if (correction <= 0.0f)
+            const float excess = overlap - c.slop;
+            if (!(excess > 0.0f))
                 continue;
+            // An excess within float noise goes at once: a fraction of it would round to
+            // nothing, and a pair pushed from both sides (a box between a wall and a pile)
+            // would stay a few float steps beyond the slop for good, and never sleep.
+            const float correction = excess <= noiseOf(c) ? excess
+                                                          : std::min(options_.correction * excess,
+                                                                     0.25f * (c.extent - c.slop));
             // Across support levels the supporter stays put; within a level the two share
             // the correction by inverse mass.
             const float shareA = c.supporter == 1   ? 0.0f
@@ -725,6 +846,24 @@ private:
         cache.endRebuild();
     }
 
+    /// Float noise in the overlap of contact `c` where the solver bodies are now: a hair
+    /// of the smaller half extent along the normal (kMinimumSkin), and four float steps
+    /// at the pair's coordinates. Overlap within the slop and this is within the slop.
+    float noiseOf(const Contact& c) const {
+        const float pa = bodies_[c.ia].position[c.axis], pb = bodies_[c.ib].position[c.axis];
+        const float largest = std::max({std::abs(pa), std::abs(pb), c.extent});
+        return c.slop * noisePerSlop_ + 4.0f * ulpOf(largest);
+    }
+
+    /// Whether the pair overlaps deeper than the slop where the step leaves it, beyond
+    /// float noise.
+    bool beyondSlop(const Contact& c) const {
+        const float overlap =
+            c.extent - c.sign * (bodies_[c.ia].position[c.axis] - bodies_[c.ib].position[c.axis]);
+        // Centres that have passed each other: position correction leaves them alone.
+        return overlap <= c.extent && overlap - c.slop > noiseOf(c);
+    }
+
     /// Islands of awake dynamic bodies joined by contacts fall asleep together once every
     /// body of the island has been slow for kTimeToSleep. A body touching a moving
     /// kinematic body never sleeps: its platform may carry it off.
@@ -749,6 +888,12 @@ private:
             const std::uint32_t slotA = bodies_[c.ia].slot, slotB = bodies_[c.ib].slot;
             Body& a = w_.slots[slotA];
             Body& b = w_.slots[slotB];
+            // Position correction has not finished with the pair: not at rest, however
+            // slowly it moves them. Asleep, they would keep that overlap until woken.
+            if (beyondSlop(c)) {
+                a.sleepTime = 0.0f;
+                b.sleepTime = 0.0f;
+            }
             if (a.isDynamic() && b.isDynamic()) {
                 std::uint32_t ra = find(slotA), rb = find(slotB);
                 if (ra != rb) {
@@ -815,12 +960,17 @@ private:
     WorldState& w_;
     const PhysicalOptions options_; // a copy: a callback may change the world's
     float dt_;
+    /// kMinimumSkin of the smaller half extent, as a multiple of a contact's slop.
+    const float noisePerSlop_ = options_.slop > 0.0f ? kMinimumSkin / options_.slop : 0.0f;
     std::vector<BodyPair>& pairs_ = w_.pairs;
     std::vector<Contact>& contacts_ = w_.physical.contacts;
     static constexpr std::uint32_t kNoSolverBody = UINT32_MAX;
     std::vector<SolverBody>& bodies_ = w_.physical.bodies;
     std::vector<std::uint32_t>& solverIndex_ = w_.physical.solverIndex;
     std::vector<std::uint32_t>& levels_ = w_.physical.levels;
+    std::vector<std::uint8_t>& backing_ = w_.physical.backing;
+    std::vector<std::uint8_t>& sweepFlags_ = w_.physical.sweepFlags;
+    std::vector<Contact>& sweptContacts_ = w_.physical.sweptContacts;
     std::vector<std::uint32_t>& offsets_ = w_.physical.offsets;
     std::vector<std::uint32_t>& neighbours_ = w_.physical.neighbours;
     std::vector<std::uint32_t>& fill_ = w_.physical.fill;

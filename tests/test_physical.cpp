@@ -351,6 +351,120 @@ TEST(Stacks, ABoxSqueezedBetweenTwoIsPushedOutOfBoth) {
     }
 }
 
+// Found by fuzz_api (tests/fuzz/corpus/api/squeezed-into-static-2): a heavy box that
+// lands with one end on a plank and the rest over the floor. The plank touches the floor,
+// and so, nearly, does the box: both are on the first support level, and position
+// correction used to share their overlap by inverse mass, pushing the plank into the
+// floor as hard as the floor pushed it out (0.55 deep here, for good). The lower body of
+// a contact along gravity holds the upper one up: the plank stays on the floor and the
+// box on the plank, one unit (the plank's height) above the floor.
+TEST(Stacks, AHeavyBoxLandingAcrossAPlankAndTheFloorRestsOnThePlank) {
+    World world = physicalWorld({0, 800});
+    BodyId floor = addFloor(world);
+    BodyId plank = world.createBody({.x = 0, .y = -0.5f, .hw = 3.5f, .hh = 0.5f, .mass = 1});
+    BodyId box = world.createBody({.x = 8, .y = -30, .hw = 8, .hh = 8, .mass = 500});
+    // The slop: 0.01 of the smaller half height, with the float resolution of a correction.
+    const float plankSlop = 0.01f * 0.5f + 1e-4f;
+    for (int i = 0; i < 600; ++i) {
+        world.step(1.0f / 60.0f);
+        ASSERT_LE(overlapY(world, plank, floor), plankSlop) << "step " << i;
+    }
+    EXPECT_LE(overlapY(world, box, plank), plankSlop);
+    EXPECT_NEAR(overlapY(world, box, floor), -1.0f, plankSlop);
+}
+
+// Found by fuzz_api (its reproducer is kept as tests/fuzz/corpus/api/
+// rammed-into-a-hole): a light box lying across a hole narrower than itself, on its way
+// up, is rammed down by a heavy one. No contact of the step held it to the floor (it was
+// moving away from it), and position correction pushed it on down into the hole, where
+// the sides of the hole held it, 12 deep. The sweep now catches a body that the solver
+// sends where its contacts did not look, and the contact it finds holds the box up.
+TEST(Stacks, ALightBoxRammedDownOntoTheEdgesOfAHoleStaysOnThem) {
+    World world = physicalWorld({0, 800});
+    // Two floor boxes 5 high with a hole 10 wide between them, and a floor under it.
+    BodyId left =
+        world.createBody({.type = BodyType::Static, .x = -20, .y = 2.5f, .hw = 15, .hh = 2.5f});
+    world.createBody({.type = BodyType::Static, .x = 20, .y = 2.5f, .hw = 15, .hh = 2.5f});
+    world.createBody({.type = BodyType::Static, .x = 0, .y = 10, .hw = 40, .hh = 5});
+    // 18 wide, half a unit above the edges, going up; the heavy one, a unit above it,
+    // coming down at 600 units/s.
+    BodyId light = world.createBody({.x = 0, .y = -9.5f, .hw = 9, .hh = 9, .vy = -300, .mass = 1});
+    world.createBody({.x = 0, .y = -28.5f, .hw = 9, .hh = 9, .vy = 600, .mass = 100});
+    // Touching, not deeper: twice the slop, 0.01 of the smaller half height 2.5.
+    const float skin = 2.0f * 0.01f * 2.5f;
+    for (int i = 0; i < 300; ++i) {
+        world.step(1.0f / 60.0f);
+        ASSERT_LE(overlapY(world, light, left), skin) << "step " << i;
+    }
+    EXPECT_LE(overlapY(world, light, left), 0.01f * 2.5f + 1e-4f);
+}
+
+// Found by fuzz_api (tests/fuzz/corpus/api/squeezed-into-static-1, -3, -4): a small box
+// created inside the bottom of a big one that stands on the floor. The big one pushed it
+// into the floor (2.2 of its 4 units, for good, when it was 100 times lighter). Both now
+// end where they would have been had the small box been there first: it on the floor,
+// the big one on it.
+TEST(Stacks, ABoxCreatedInsideTheBottomOfAnotherEndsUnderIt) {
+    for (const float mass : {1.0f, 100.0f}) {
+        World world = physicalWorld({0, 800});
+        BodyId floor = addFloor(world);
+        BodyId big = world.createBody({.x = 0, .y = -20, .hw = 20, .hh = 20, .mass = 100});
+        BodyId small = world.createBody({.x = 5, .y = -2, .hw = 2, .hh = 2, .mass = mass});
+        // The slop: 0.01 of the smaller half height, 2, with the float resolution.
+        const float slop = 0.01f * 2.0f + 1e-4f;
+        for (int i = 0; i < 600; ++i) {
+            world.step(1.0f / 60.0f);
+            ASSERT_LE(overlapY(world, small, floor), slop) << "mass " << mass << ", step " << i;
+        }
+        EXPECT_LE(overlapY(world, big, small), slop) << "mass " << mass;
+        // Held 4 units (the small box's height) above the floor, less the slop.
+        EXPECT_NEAR(overlapY(world, big, floor), -4.0f, slop) << "mass " << mass;
+    }
+}
+
+// Found by fuzz_api: a box 6400 times lighter than the plank resting on it. The impulse
+// that holds the plank up is so much larger than the one that stops the light box that
+// the difference of the two accumulated sums rounded the latter away: the pair sank into
+// the floor at a constant 1e-4 units/s. At rest they stay exactly at rest.
+TEST(Stacks, ABoxFarLighterThanThePlankOnItStaysExactlyAtRest) {
+    World world = physicalWorld({0, 12.5f});
+    BodyId floor = world.createBody({.type = BodyType::Static, .x = 0, .y = 1, .hw = 10, .hh = 1});
+    // Masses 0.1 × 0.0156² = 2.4e-5 and 10 × 0.25 × 0.0625 = 0.156: 6400 times more.
+    BodyId light = world.createBody(
+        {.x = 0, .y = -0.0078125f, .hw = 0.0078125f, .hh = 0.0078125f, .density = 0.1f});
+    BodyId plank = world.createBody(
+        {.x = 0.09375f, .y = -0.046875f, .hw = 0.125f, .hh = 0.03125f, .density = 10});
+    for (int i = 0; i < 600; ++i)
+        world.step(1.0f / 30.0f);
+    EXPECT_EQ(world.position(light).y, -0.0078125f);
+    EXPECT_EQ(world.position(plank).y, -0.046875f);
+    EXPECT_LE(overlapY(world, light, floor), 0.0f);
+}
+
+// Found by fuzz_api (tests/fuzz/corpus/api/pressed-against-a-wall-1 to -4): a light box
+// against a wall, overlapped by a heavy one beside it. Position correction shared the
+// overlap by inverse mass, so the light box was pushed back into the wall nearly as far
+// as the wall pushed it out; the pair crept apart at a hundredth of the rate, and fell
+// asleep first, the light box 0.127 deep in the wall (the slop is 0.08). A body with a
+// static one right behind it holds: the heavy box gives way.
+TEST(Stacks, ALightBoxPressedAgainstAWallByAHeavyOneStaysOutOfTheWall) {
+    World world(WorldDef{.gravity = {0, 800}}); // sleeping on: it must not sleep deep
+    addFloor(world);
+    BodyId wall =
+        world.createBody({.type = BodyType::Static, .x = 110, .y = -100, .hw = 10, .hh = 100});
+    // Touching the wall; the heavy one overlaps it by half a unit.
+    BodyId light = world.createBody({.x = 92, .y = -8, .hw = 8, .hh = 8, .mass = 1});
+    BodyId heavy = world.createBody({.x = 76.5f, .y = -8, .hw = 8, .hh = 8, .mass = 10});
+    for (int i = 0; i < 120; ++i)
+        world.step(1.0f / 60.0f);
+    // The slop: 0.01 of the half extent 8, with the float resolution of a correction.
+    const float slop = 0.08f + 1e-3f;
+    const float intoWall = world.position(light).x + 8 - (world.position(wall).x - 10);
+    EXPECT_LE(intoWall, slop);
+    EXPECT_LE(world.position(heavy).x + 8 - (world.position(light).x - 8), slop);
+    EXPECT_FALSE(world.isAwake(light));
+}
+
 // --- Seams between boxes placed edge to edge ------------------------------------------
 
 TEST(Seams, SlidingAcrossFloorBoxesPlacedEdgeToEdgeLosesNothing) {
