@@ -131,30 +131,4 @@ inline std::optional<Penetration> deepInStatic(const World& world, BodyId body,
     return worst;
 }
 
-/// True if `body` is squeezed: another dynamic body overlaps it deeper than the slop, or
-/// it is wedged between two static bodies that it overlaps deeper than the slop from
-/// opposite sides (open_questions.hpp, squeezed-into-static).
-inline bool squeezed(const World& world, BodyId body) {
-    const Vec2 p = world.position(body), h = world.halfExtents(body);
-    const float slop = world.physicalOptions().slop;
-    int sides[2] = {0, 0}; // per axis: bit 0 a static body on the low side, bit 1 the high
-    for (BodyId other : queryBox(world, p, h)) {
-        if (other == body || world.isSensor(other))
-            continue;
-        const Vec2 q = world.position(other), k = world.halfExtents(other);
-        const float overlapX = h.x + k.x - std::abs(p.x - q.x);
-        const float overlapY = h.y + k.y - std::abs(p.y - q.y);
-        const bool alongX = contactAlongX(overlapX, overlapY, slop, h, k);
-        const bool deep = alongX ? overlapX > allowedPenetration(slop, h.x, k.x, p.x, q.x)
-                                 : overlapY > allowedPenetration(slop, h.y, k.y, p.y, q.y);
-        if (!deep)
-            continue;
-        if (world.type(other) == BodyType::Dynamic)
-            return true;
-        if (world.type(other) == BodyType::Static && world.oneWay(other) == Vec2{})
-            sides[alongX ? 0 : 1] |= (alongX ? q.x < p.x : q.y < p.y) ? 1 : 2;
-    }
-    return sides[0] == 3 || sides[1] == 3;
-}
-
 } // namespace jostle::check
