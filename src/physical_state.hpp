@@ -100,6 +100,7 @@ struct PhysicalScratch {
     std::vector<std::uint8_t> backing;      ///< by solver body: sides touching a static one
     std::vector<std::uint8_t> sweepFlags;   ///< by slot: moves where its contacts did not look
     std::vector<Contact> sweptContacts;     ///< found by the sweeps, not among the step's
+    std::vector<std::uint64_t> vetoed;      ///< pairs the pre-solve vetoed this step (sorted keys)
     std::vector<std::uint32_t> offsets, neighbours, fill, queue, counts;
     std::vector<std::uint32_t> parent; ///< union-find of islands, by slot
     std::vector<float> islandTime;

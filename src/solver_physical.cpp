@@ -254,6 +254,7 @@ private:
 
     void buildContacts() {
         const float threshold = restitutionThreshold();
+        vetoed_.clear();
         contacts_.clear();
         contacts_.reserve(pairs_.size());
         sensorPairs_.clear();
@@ -320,6 +321,8 @@ private:
             if (w_.preSolve) {
                 Collision info{w_.idOf(pair.a), w_.idOf(pair.b), normal, -gap, bounce, c.friction};
                 const bool keep = w_.preSolve(info);
+                if (!keep)
+                    vetoed_.push_back(pairKey(pair.a, pair.b));
                 if (!keep || !w_.isLive(pair.a) || !w_.isLive(pair.b))
                     continue;
                 if (!std::isnan(info.bounce))
@@ -367,6 +370,7 @@ private:
             }
             contacts_.push_back(c);
         }
+        std::sort(vetoed_.begin(), vetoed_.end());
         // A callback may have destroyed a body after its contact was made: the body is left
         // out of the rest of the step (no impulses, no events, no cached contact whose
         // generations would be those of the slot's next body).
@@ -686,6 +690,9 @@ private:
             if (obstacle.isOneWay() &&
                 (hit->normal != obstacle.oneWay || body.dropThroughTime > 0.0f))
                 return;
+            // Nor does what the pre-solve callback let the body through in this step.
+            if (isVetoed(slot, other))
+                return;
             if (!first || hit->time < first->first.time)
                 first = {{*hit, other}};
         };
@@ -698,6 +705,16 @@ private:
     }
 
     static constexpr int kMaxHits = 4;
+
+    /// The two slots as one number, the same in either order.
+    static std::uint64_t pairKey(std::uint32_t slotA, std::uint32_t slotB) {
+        return std::uint64_t{std::min(slotA, slotB)} << 32 | std::max(slotA, slotB);
+    }
+
+    /// Whether the pre-solve callback vetoed the contact of these two bodies this step.
+    bool isVetoed(std::uint32_t slotA, std::uint32_t slotB) const {
+        return std::binary_search(vetoed_.begin(), vetoed_.end(), pairKey(slotA, slotB));
+    }
 
     float skinOf(float halfA, float halfB) const {
         return contactSkin(options_.slop, halfA, halfB);
@@ -971,6 +988,7 @@ private:
     std::vector<std::uint8_t>& backing_ = w_.physical.backing;
     std::vector<std::uint8_t>& sweepFlags_ = w_.physical.sweepFlags;
     std::vector<Contact>& sweptContacts_ = w_.physical.sweptContacts;
+    std::vector<std::uint64_t>& vetoed_ = w_.physical.vetoed;
     std::vector<std::uint32_t>& offsets_ = w_.physical.offsets;
     std::vector<std::uint32_t>& neighbours_ = w_.physical.neighbours;
     std::vector<std::uint32_t>& fill_ = w_.physical.fill;
