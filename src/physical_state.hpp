@@ -25,7 +25,8 @@ struct Contact {
     /// the tangent is the other axis, with its own sign (the normal turned a quarter,
     /// (-ny, nx)).
     std::uint8_t axis;
-    /// Which body is held fixed across support levels: 0 none, 1 a, 2 b.
+    /// Which body holds the other, staying put in shock propagation and position
+    /// correction (orderBySupport says when): 0 none, 1 a, 2 b.
     std::uint8_t supporter = 0;
     float sign, tangentSign;
     float extent; ///< sum of the half extents along the normal
@@ -97,10 +98,10 @@ struct PhysicalScratch {
     std::vector<SolverBody> bodies;
     std::vector<std::uint32_t> solverIndex; ///< by slot
     std::vector<std::uint32_t> levels;      ///< support level by solver body
-    std::vector<std::uint8_t> backing;      ///< by solver body: sides touching a static one
-    std::vector<std::uint8_t> sweepFlags;   ///< by slot: moves where its contacts did not look
-    std::vector<Contact> sweptContacts;     ///< found by the sweeps, not among the step's
-    std::vector<std::uint64_t> vetoed;      ///< pairs the pre-solve vetoed this step (sorted keys)
+    std::vector<std::uint8_t> backing; ///< by solver body: sides touching a static or kinematic one
+    std::vector<std::uint8_t> sweepFlags; ///< by slot: moves where its contacts did not look
+    std::vector<Contact> sweptContacts;   ///< found by the sweeps, not among the step's
+    std::vector<std::uint64_t> vetoed;    ///< pairs the pre-solve vetoed this step (sorted keys)
     std::vector<std::uint32_t> offsets, neighbours, fill, queue, counts;
     std::vector<std::uint32_t> parent; ///< union-find of islands, by slot
     std::vector<float> islandTime;

@@ -450,7 +450,9 @@ private:
             // box pressed against a wall by a heavy one. Sharing by inverse mass, the light
             // box would be pushed back into the wall nearly as far as the wall pushes it
             // out, and the pair would creep apart at a hundredth of the rate.
-            if (c.supporter == 0) {
+            // Between two dynamic bodies only: against a static or kinematic one, the body
+            // holding would leave nobody to move, and the overlap would stay.
+            if (c.supporter == 0 && c.invMassA > 0.0f && c.invMassB > 0.0f) {
                 const bool aHeld = isBacked(c.ia, c.axis, c.sign);
                 const bool bHeld = isBacked(c.ib, c.axis, -c.sign);
                 c.supporter = aHeld && !bHeld ? 1 : bHeld && !aHeld ? 2 : 0;
@@ -480,10 +482,13 @@ private:
     }
 
     /// Which solver bodies touch a static or kinematic body, and on which sides: a bit
-    /// per axis and direction (backingBit).
+    /// per axis and direction (backingBit). Touch: a speculative contact, still apart
+    /// (its target lets the gap close), is no backing yet.
     void findBacking() {
         backing_.assign(bodies_.size(), 0);
         for (const Contact& c : contacts_) {
+            if (c.targetSpeed < 0.0f)
+                continue;
             // The normal points from b towards a: b lies on a's side -sign, a on b's +sign.
             if (c.invMassB == 0.0f)
                 backing_[c.ia] |= backingBit(c.axis, -c.sign);
@@ -612,8 +617,11 @@ private:
             for (std::uint32_t k = offsets_[ia]; k < offsets_[ia + 1]; ++k)
                 if (neighbours_[k] == ib)
                     return;
-        for (const Contact& c : sweptContacts_)
-            if (c.ia == ia && c.ib == ib)
+        // Found by an earlier hit of this sweep, or, for a dynamic obstacle (bullets), by its
+        // own sweep: the rest of the list holds other bodies' hits.
+        const bool dynamicObstacle = w_.slots[obstacle].isDynamic();
+        for (std::size_t k = dynamicObstacle ? 0 : sweepStart_; k < sweptContacts_.size(); ++k)
+            if (sweptContacts_[k].ia == ia && sweptContacts_[k].ib == ib)
                 return;
         const Body& a = w_.slots[slotA];
         const Body& b = w_.slots[slotB];
@@ -641,6 +649,7 @@ private:
     /// moves it by that velocity from there, a path just swept clear. If it still hits
     /// something after kMaxHits sweeps, it stops where the last one left it.
     void sweep(std::uint32_t slot, Vec2 motion) {
+        sweepStart_ = sweptContacts_.size();
         Body& body = w_.slots[slot];
         for (int hits = 0; hits < kMaxHits; ++hits) {
             const std::optional<std::pair<Hit, std::uint32_t>> first = firstHit(slot, motion);
@@ -750,8 +759,8 @@ private:
             const float correction = excess <= noiseOf(c) ? excess
                                                           : std::min(options_.correction * excess,
                                                                      0.25f * (c.extent - c.slop));
-            // Across support levels the supporter stays put; within a level the two share
-            // the correction by inverse mass.
+            // The body that holds the other stays put (orderBySupport); where neither holds,
+            // the two share the correction by inverse mass.
             const float shareA = c.supporter == 1   ? 0.0f
                                  : c.supporter == 2 ? (c.invMassA > 0.0f ? 1.0f : 0.0f)
                                                     : c.invMassA * c.effectiveMass;
@@ -829,7 +838,10 @@ private:
                 const Vec2 push = slotA == candidate.body ? c.normal() : -c.normal();
                 if (other == candidate.by || dot(push, candidate.into) >= 0.0f)
                     continue;
-                const bool heavy = !w_.slots[other].isDynamic() || c.supporter != 0;
+                // Heavy: static or kinematic, or a body that holds the candidate (resting
+                // on the ground below it, or backed by a wall behind it).
+                const bool otherHolds = c.supporter == (other == slotA ? 1 : 2);
+                const bool heavy = !w_.slots[other].isDynamic() || otherHolds;
                 if (heavy && c.normalImpulse > 0.0f) {
                     w_.events.crushes.push_back(
                         {w_.idOf(candidate.body), w_.idOf(candidate.by), w_.idOf(other)});
@@ -968,6 +980,7 @@ private:
     std::vector<CrushCandidate> crushCandidates_;
     std::vector<BodyPair> sensorPairs_;
     std::vector<std::uint8_t> carried_; ///< by slot: already given its platform's change
+    std::size_t sweepStart_ = 0;        ///< the first of sweptContacts_ the current sweep made
 
     /// Sleep when slower than this many half extents per second...
     static constexpr float kSleepSpeed = 0.05f;

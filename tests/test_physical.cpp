@@ -465,6 +465,26 @@ TEST(Stacks, ALightBoxPressedAgainstAWallByAHeavyOneStaysOutOfTheWall) {
     EXPECT_FALSE(world.isAwake(light));
 }
 
+// Between two walls a little too close for it, a box overlaps one of them 1.3 times the
+// slop and the other 0.2 times: 1.5 slops in all, which fit. It is pushed off the deeper
+// one (a wall behind a body decides who gives way only between two dynamic bodies; with
+// walls on both sides, nobody moved, and the box stayed awake for good).
+TEST(Stacks, ABoxBetweenTwoWallsSettlesWithinTheSlopOfBoth) {
+    World world(WorldDef{.gravity = {0, 800}}); // sleeping on
+    addFloor(world);
+    // The walls' inner faces at x = 0 and x = 19.85; the box 20 wide, its slop 0.1.
+    world.createBody({.type = BodyType::Static, .x = -10, .y = -50, .hw = 10, .hh = 50});
+    world.createBody({.type = BodyType::Static, .x = 29.85f, .y = -50, .hw = 10, .hh = 50});
+    BodyId box = world.createBody({.x = 9.87f, .y = -10, .hw = 10, .hh = 10});
+    for (int i = 0; i < 120; ++i)
+        world.step(1.0f / 60.0f);
+    const float x = world.position(box).x;
+    // Within the slop of each, with the float resolution of a correction.
+    EXPECT_LE(10 - x, 0.1f + 1e-3f);
+    EXPECT_LE(x + 10 - 19.85f, 0.1f + 1e-3f);
+    EXPECT_FALSE(world.isAwake(box));
+}
+
 // --- Seams between boxes placed edge to edge ------------------------------------------
 
 TEST(Seams, SlidingAcrossFloorBoxesPlacedEdgeToEdgeLosesNothing) {
