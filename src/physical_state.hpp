@@ -37,7 +37,8 @@ struct Contact {
     /// The relative normal velocity must end >= this: 0 to stop, -gap/dt to let a
     /// speculative contact close its gap, -bounce × approach speed to bounce.
     float targetSpeed;
-    float normalImpulse = 0.0f;
+    float normalImpulse = 0.0f; ///< of the sequential impulses: both bodies felt it
+    float shockImpulse = 0.0f;  ///< added by shock propagation: the held body felt none
     float tangentImpulse = 0.0f;
     float bounceSpeed = 0.0f;   ///< to remember: bounce at this speed next step
     float approachSpeed = 0.0f; ///< how fast the pair closed when the step began (>= 0)

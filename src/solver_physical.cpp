@@ -566,7 +566,11 @@ private:
                 bodies_[c.ib].velocity[c.axis] -= c.sign * impulse * c.invMassB;
             else
                 bodies_[c.ia].velocity[c.axis] += c.sign * impulse * c.invMassA;
-            c.normalImpulse += impulse;
+            // Kept apart from the impulse both bodies felt: warm starting the next step
+            // with it would hand the held body all of it, and a body ten trillion times
+            // lighter than the one it holds up would be flung at a speed that floats
+            // cannot tell from its neighbours'.
+            c.shockImpulse = impulse;
         }
     }
 
@@ -842,7 +846,7 @@ private:
                 // on the ground below it, or backed by a wall behind it).
                 const bool otherHolds = c.supporter == (other == slotA ? 1 : 2);
                 const bool heavy = !w_.slots[other].isDynamic() || otherHolds;
-                if (heavy && c.normalImpulse > 0.0f) {
+                if (heavy && c.normalImpulse + c.shockImpulse > 0.0f) {
                     w_.events.crushes.push_back(
                         {w_.idOf(candidate.body), w_.idOf(candidate.by), w_.idOf(other)});
                     break;
@@ -863,14 +867,18 @@ private:
             Body& a = w_.slots[slotA];
             Body& b = w_.slots[slotB];
             // A pending bounce is kept only if the contact did stop the pair.
-            const float bounceSpeed = c.normalImpulse > 0.0f ? c.bounceSpeed : 0.0f;
+            const float total = c.normalImpulse + c.shockImpulse;
+            const float bounceSpeed = total > 0.0f ? c.bounceSpeed : 0.0f;
             cache.add(slotA, slotB,
                       {a.generation, b.generation, c.normal(), c.normalImpulse, c.tangentImpulse,
                        bounceSpeed});
             // How far the contact's impulse pushed each body out this step (position
-            // correction was counted when it was written back).
-            a.separation += c.normal() * (c.normalImpulse * c.invMassA * dt_);
-            b.separation -= c.normal() * (c.normalImpulse * c.invMassB * dt_);
+            // correction was counted when it was written back); the held body felt none
+            // of the shock pass's.
+            a.separation +=
+                c.normal() * ((c.supporter == 1 ? c.normalImpulse : total) * c.invMassA * dt_);
+            b.separation -=
+                c.normal() * ((c.supporter == 2 ? c.normalImpulse : total) * c.invMassB * dt_);
         }
         cache.endRebuild();
     }

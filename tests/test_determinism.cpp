@@ -17,6 +17,8 @@
 //   2026-11-22  physical model: a wall behind a body decides who gives way only between
 //               two dynamic bodies, and only once touching (a review found an overlap
 //               with a static body left for good when both sides were backed).
+//   2026-11-22  physical model: shock propagation's impulse is not warm-started (a body
+//               1e12 times lighter than the one it held up was flung; found by fuzz_api).
 
 #include "jostle/query.hpp"
 #include "jostle/tilemap.hpp"
@@ -195,7 +197,7 @@ BusyRun runBusyWorld(Solver solver, int steps) {
 }
 
 // The recorded hashes (see the history at the top of the file).
-constexpr std::uint64_t kPhysicalHash = 11851451487136888894ULL;
+constexpr std::uint64_t kPhysicalHash = 17647571813344837080ULL;
 constexpr std::uint64_t kClassicHash = 11721795189068454326ULL;
 constexpr int kSteps = 3000; // 50 seconds of a busy world
 
