@@ -7,8 +7,9 @@
 // crates: a steady rain of them, each destroyed when its time is up or when it falls out
 // of the level, so bodies are created and destroyed all the time. Piles fall asleep and
 // are woken (kicked, woken by hand, or left without the tiles they stood on); platform
-// tiles are dug and rebuilt, holes opened in the floor and closed; rays, boxes and a
-// character (moveAndSlide) query the world every step.
+// tiles are dug and rebuilt (never into a crate), holes opened in the floor and closed
+// (once no crate is in the way); rays, boxes and a character (moveAndSlide) query the
+// world every step.
 //
 // Checked every step: every state finite, every live handle valid and every destroyed
 // one stale, bodyCount what was created minus what was destroyed (tests/fuzz/
@@ -268,8 +269,22 @@ private:
             world_.setVelocity(lift, -world_.velocity(lift));
     }
 
+    /// Whether no crate overlaps the tile cell: a game does not build a wall through a
+    /// crate (the crate could be left inside it, with tiles all round, for good).
+    bool clearOfCrates(int column, int row) const {
+        const Vec2 centre{(static_cast<float>(column) + 0.5f) * kTile,
+                          (static_cast<float>(row) + 0.5f) * kTile};
+        for (BodyId id : queryBox(world_, centre, {kTile / 2, kTile / 2}))
+            if (world_.type(id) == BodyType::Dynamic)
+                return false;
+        return true;
+    }
+
     void toggleTile(int row, int column) {
-        setTile(world_, level_, column, row, !isSolid(world_, level_, column, row));
+        const bool solid = isSolid(world_, level_, column, row);
+        if (!solid && !clearOfCrates(column, row))
+            return;
+        setTile(world_, level_, column, row, !solid);
         ++tileChanges_;
     }
 
@@ -287,7 +302,11 @@ private:
 
     void closeFloor() {
         for (auto it = floorHoles_.begin(); it != floorHoles_.end();) {
-            if (step_ < it->second) {
+            bool clear = true;
+            for (int row = kRows - 2; row < kRows; ++row)
+                for (int c = it->first; c < it->first + 3; ++c)
+                    clear = clear && clearOfCrates(c, row);
+            if (step_ < it->second || !clear) { // closed once nothing is in the way
                 ++it;
                 continue;
             }
