@@ -44,6 +44,8 @@ struct Contact {
     float approachSpeed = 0.0f; ///< how fast the pair closed when the step began (>= 0)
 
     Vec2 normal() const { return axis == 0 ? Vec2{sign, 0.0f} : Vec2{0.0f, sign}; }
+    /// The normal impulse of the step, what the held body's partner felt.
+    float totalImpulse() const { return normalImpulse + shockImpulse; }
 };
 
 /// What the physical model remembers of a contact from one step to the next, to start

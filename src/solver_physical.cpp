@@ -212,9 +212,8 @@ private:
         // Flush: within a hair of the face, on the far side of it from the wall. A hair is
         // a small fraction of the sizes, or a few float steps at the face's coordinate
         // (metre-sized tiles far from the origin round coarser than that fraction).
-        const float ulp = std::nextafter(std::abs(face), INFINITY) - std::abs(face);
         const float tolerance =
-            std::max(1e-4f * std::max(wallHalf[axis], otherHalf[axis]), 4.0f * ulp);
+            std::max(1e-4f * std::max(wallHalf[axis], otherHalf[axis]), 4.0f * ulpOf(face));
         // It must cover the face from the corner inward, a good part of the way.
         const float reach = 0.25f * std::min(wallHalf[along], otherHalf[along]);
         Bounds probe;
@@ -252,6 +251,21 @@ private:
         return outward == platform.oneWay && gap >= -skin && other.dropThroughTime <= 0.0f;
     }
 
+    /// A contact of `a` and `b` along `normal` (a unit axis vector, from b towards a): its
+    /// axis, signs, extent, slop and friction, the rest left to the caller.
+    Contact contactAlong(const Body& a, const Body& b, Vec2 normal) const {
+        Contact c;
+        const bool alongX = normal.x != 0.0f;
+        c.axis = alongX ? 0 : 1;
+        c.sign = alongX ? normal.x : normal.y;
+        c.tangentSign = alongX ? normal.x : -normal.y;
+        c.extent = alongX ? a.half.x + b.half.x : a.half.y + b.half.y;
+        c.slop =
+            options_.slop * (alongX ? std::min(a.half.x, b.half.x) : std::min(a.half.y, b.half.y));
+        c.friction = combineFriction(options_.frictionMix, a.friction, b.friction);
+        return c;
+    }
+
     void buildContacts() {
         const float threshold = restitutionThreshold();
         vetoed_.clear();
@@ -275,8 +289,6 @@ private:
             const float gapX = std::abs(d.x) - (a.half.x + b.half.x);
             const float gapY = std::abs(d.y) - (a.half.y + b.half.y);
             // Overlap within twice the slop is resting contact, not penetration.
-            const float slopX = options_.slop * std::min(a.half.x, b.half.x);
-            const float slopY = options_.slop * std::min(a.half.y, b.half.y);
             const float skinX = skinOf(a.half.x, b.half.x);
             const float skinY = skinOf(a.half.y, b.half.y);
             bool alongX = contactAxis(gapX, gapY, skinX, skinY) == Axis::X;
@@ -308,14 +320,8 @@ private:
                 (b.isOneWay() && !blocks(b, a, normal, gap, skin)))
                 continue;
 
-            Contact c;
+            Contact c = contactAlong(a, b, normal);
             c.approachSpeed = std::max(0.0f, -approach);
-            c.axis = alongX ? 0 : 1;
-            c.sign = alongX ? normal.x : normal.y;
-            c.tangentSign = alongX ? normal.x : -normal.y;
-            c.extent = alongX ? a.half.x + b.half.x : a.half.y + b.half.y;
-            c.slop = alongX ? slopX : slopY;
-            c.friction = combineFriction(options_.frictionMix, a.friction, b.friction);
             float bounce = std::max(a.bounce, b.bounce);
 
             if (w_.preSolve) {
@@ -629,16 +635,9 @@ private:
                 return;
         const Body& a = w_.slots[slotA];
         const Body& b = w_.slots[slotB];
-        Contact c;
+        Contact c = contactAlong(a, b, bodyFirst ? normal : -normal);
         c.ia = ia;
         c.ib = ib;
-        c.axis = normal.x != 0.0f ? 0 : 1;
-        c.sign = (c.axis == 0 ? normal.x : normal.y) * (bodyFirst ? 1.0f : -1.0f);
-        c.tangentSign = c.axis == 0 ? c.sign : -c.sign;
-        c.extent = c.axis == 0 ? a.half.x + b.half.x : a.half.y + b.half.y;
-        c.slop = options_.slop *
-                 (c.axis == 0 ? std::min(a.half.x, b.half.x) : std::min(a.half.y, b.half.y));
-        c.friction = combineFriction(options_.frictionMix, a.friction, b.friction);
         c.invMassA = a.invMass;
         c.invMassB = b.invMass;
         c.effectiveMass = 1.0f / (a.invMass + b.invMass);
@@ -743,13 +742,20 @@ private:
         }
     }
 
+    /// How deep the pair of contact `c` overlaps along its normal where the solver bodies
+    /// are now (negative: the gap between them).
+    float overlapOf(const Contact& c) const {
+        return c.extent -
+               c.sign * (bodies_[c.ia].position[c.axis] - bodies_[c.ib].position[c.axis]);
+    }
+
     /// One pass of position correction; false if it moved no body.
     bool correctPositions() {
         bool moved = false;
         for (Contact& c : contacts_) {
             SolverBody& a = bodies_[c.ia];
             SolverBody& b = bodies_[c.ib];
-            const float overlap = c.extent - c.sign * (a.position[c.axis] - b.position[c.axis]);
+            const float overlap = overlapOf(c);
             // Centres that have passed each other along the normal (a kinematic body that
             // went on through what it pushed): pushing "out" would push through.
             if (overlap > c.extent)
@@ -787,7 +793,7 @@ private:
             // The solver bodies hold where the step leaves every body of a contact.
             const SolverBody& a = bodies_[c.ia];
             const SolverBody& b = bodies_[c.ib];
-            const float gap = c.sign * (a.position[c.axis] - b.position[c.axis]) - c.extent;
+            const float gap = -overlapOf(c);
             const float skin = std::max(2.0f * c.slop, kMinimumSkin * c.extent);
             if (gap <= skin)
                 recordContact(w_, a.slot, b.slot, c.normal(), c.approachSpeed);
@@ -846,7 +852,7 @@ private:
                 // on the ground below it, or backed by a wall behind it).
                 const bool otherHolds = c.supporter == (other == slotA ? 1 : 2);
                 const bool heavy = !w_.slots[other].isDynamic() || otherHolds;
-                if (heavy && c.normalImpulse + c.shockImpulse > 0.0f) {
+                if (heavy && c.totalImpulse() > 0.0f) {
                     w_.events.crushes.push_back(
                         {w_.idOf(candidate.body), w_.idOf(candidate.by), w_.idOf(other)});
                     break;
@@ -867,7 +873,7 @@ private:
             Body& a = w_.slots[slotA];
             Body& b = w_.slots[slotB];
             // A pending bounce is kept only if the contact did stop the pair.
-            const float total = c.normalImpulse + c.shockImpulse;
+            const float total = c.totalImpulse();
             const float bounceSpeed = total > 0.0f ? c.bounceSpeed : 0.0f;
             cache.add(slotA, slotB,
                       {a.generation, b.generation, c.normal(), c.normalImpulse, c.tangentImpulse,
@@ -895,8 +901,7 @@ private:
     /// Whether the pair overlaps deeper than the slop where the step leaves it, beyond
     /// float noise.
     bool beyondSlop(const Contact& c) const {
-        const float overlap =
-            c.extent - c.sign * (bodies_[c.ia].position[c.axis] - bodies_[c.ib].position[c.axis]);
+        const float overlap = overlapOf(c);
         // Centres that have passed each other: position correction leaves them alone.
         return overlap <= c.extent && overlap - c.slop > noiseOf(c);
     }
