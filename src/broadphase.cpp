@@ -1,7 +1,6 @@
-// The world's broadphase: which bodies may touch. Two BoxGrids: one of the bodies at
-// rest (static and sleeping), rebuilt only when one of them changes, and one of the
-// moving bodies, rebuilt every step. Also the waking of sleeping bodies, which the
-// resting grid finds.
+// The broadphase: the grid of resting bodies, and the pairs of the physical step.
+#include "broadphase.hpp"
+
 #include "world_state.hpp"
 
 #include <algorithm>
@@ -30,45 +29,6 @@ void WorldState::refreshRestingGrid() {
         }
     }
     restingGrid.build(bounds);
-}
-
-void WorldState::wakeIsland(std::uint32_t slot) {
-    if (!slots[slot].asleep)
-        return;
-    const std::uint32_t island = slots[slot].island;
-    for (std::uint32_t member : islands[island]) {
-        Body& body = slots[member];
-        body.asleep = false;
-        body.sleepTime = 0.0f;
-    }
-    islands[island].clear();
-    freeIslands.push_back(island);
-    restingDirty = true;
-}
-
-void WorldState::wakeTouching(const Bounds& bounds) {
-    // Nobody asleep, nobody to wake: and no need to bring the resting grid up to date,
-    // which would make creating n static bodies cost n rebuilds.
-    if (islands.size() == freeIslands.size())
-        return;
-    refreshRestingGrid();
-    std::vector<std::uint32_t> sleepers;
-    restingGrid.query(bounds, [&](std::uint32_t i) {
-        if (slots[restingSlots[i]].asleep)
-            sleepers.push_back(restingSlots[i]);
-    });
-    for (std::uint32_t slot : sleepers)
-        wakeIsland(slot);
-}
-
-void WorldState::disturb(std::uint32_t slot) {
-    ++changes;
-    Body& body = slots[slot];
-    body.sleepTime = 0.0f;
-    wakeIsland(slot);
-    if (body.type == BodyType::Static)
-        restingDirty = true;
-    wakeTouching(body.bounds());
 }
 
 namespace {

@@ -1,5 +1,6 @@
 #include "events.hpp"
 
+#include "counting_sort.hpp"
 #include "world_state.hpp"
 
 #include <algorithm>
@@ -18,24 +19,14 @@ bool notEvaluated(const WorldState& world, const TouchRecord& record) {
            resting(record.b);
 }
 
-/// Sorts `records` by pair (a's slot, then b's) in two stable counting passes, by b then
-/// by a: linear in the records and the slots. A slot holds one body at a time, so within
-/// one list the pair of slots names the pair.
+/// Sorts `records` by pair (a's slot, then b's) in two stable counting sorts, by b then by
+/// a. A slot holds one body at a time, so within one list the pair of slots names the pair.
 void sortByPair(std::vector<TouchRecord>& records, std::vector<TouchRecord>& scratch,
-                std::vector<std::uint32_t>& counts, std::size_t slotCount) {
-    auto pass = [&](auto slotOf) {
-        counts.assign(slotCount + 1, 0);
-        for (const TouchRecord& r : records)
-            ++counts[slotOf(r) + 1];
-        for (std::size_t k = 0; k < slotCount; ++k)
-            counts[k + 1] += counts[k];
-        scratch.resize(records.size());
-        for (const TouchRecord& r : records)
-            scratch[counts[slotOf(r)]++] = r;
-        records.swap(scratch);
-    };
-    pass([](const TouchRecord& r) { return r.b.index; });
-    pass([](const TouchRecord& r) { return r.a.index; });
+                Buckets& buckets, std::size_t slotCount) {
+    sortByKey(
+        records, [](const TouchRecord& r) { return r.b.index; }, slotCount, buckets, scratch);
+    sortByKey(
+        records, [](const TouchRecord& r) { return r.a.index; }, slotCount, buckets, scratch);
 }
 
 /// Walks this step's pairs (`now`, sorted) beside the last step's (`before`, sorted):
@@ -139,7 +130,7 @@ void StepEvents::publish(const WorldState& world, bool anyAwake) {
         std::erase_if(sensorsNow, gone);
     }
     destroyedSincePublish = false;
-    sortByPair(contactsNow, scratch_, counts_, world.slots.size());
+    sortByPair(contactsNow, scratch_, buckets_, world.slots.size());
     compare(
         world, contactsNow, contactsBefore_, scratch_,
         [&](const TouchRecord& r) {
@@ -148,7 +139,7 @@ void StepEvents::publish(const WorldState& world, bool anyAwake) {
         [&](const TouchRecord& r) {
             ends.push_back({r.a, r.b, r.normal, 0.0f});
         });
-    sortByPair(sensorsNow, scratch_, counts_, world.slots.size());
+    sortByPair(sensorsNow, scratch_, buckets_, world.slots.size());
     compare(
         world, sensorsNow, sensorsBefore_, scratch_,
         [&](const TouchRecord& r) {

@@ -3,6 +3,7 @@
 // at the end of the step before, and fills the arrays World hands out.
 #pragma once
 
+#include "counting_sort.hpp"
 #include "jostle/world.hpp"
 
 #include <cstdint>
@@ -61,7 +62,7 @@ struct StepEvents {
 private:
     std::vector<TouchRecord> contactsBefore_, sensorsBefore_;
     std::vector<TouchRecord> scratch_;
-    std::vector<std::uint32_t> counts_;
+    Buckets buckets_;
 };
 
 /// Records that two bodies touch at the end of this step: `normal` points from `other`

@@ -1,6 +1,10 @@
 // World: body storage, handles, argument checks and the step entry point.
 #include "world_access.hpp"
 
+#include "classic/step.hpp"
+#include "integrate.hpp"
+#include "physical/step.hpp"
+
 #include <algorithm>
 #include <atomic>
 #include <cmath>
@@ -40,38 +44,7 @@ float dynamicMass(const Body& body) {
     return body.mass > 0.0f ? body.mass : body.density * 4.0f * body.half.x * body.half.y;
 }
 
-// The edge of the world (math.hpp): no speed exceeds kMaxMagnitude, so that no later sum
-// overflows, and a body that reaches ±kMaxMagnitude on an axis stops there. Games never
-// get near.
-void keepInsideTheWorld(WorldState& world) {
-    for (BodyId id : world.order) {
-        Body& b = world.slots[id.index];
-        // Sleeping bodies too: a body can fall asleep in the very step that carried it
-        // past the edge (slow enough to rest, with a long enough dt).
-        if (b.type == BodyType::Static)
-            continue;
-        b.velocity.x = std::clamp(b.velocity.x, -kMaxMagnitude, kMaxMagnitude);
-        b.velocity.y = std::clamp(b.velocity.y, -kMaxMagnitude, kMaxMagnitude);
-        if (stopAtTheEdge(b) && b.asleep)
-            world.restingDirty = true; // it moved within the grid of resting bodies
-    }
-}
-
 } // namespace
-
-bool stopAtTheEdge(Body& body) {
-    bool stopped = false;
-    auto stop = [&](float& position, float& velocity) {
-        if (std::abs(position) > kMaxMagnitude) {
-            position = std::copysign(kMaxMagnitude, position);
-            velocity = 0.0f;
-            stopped = true;
-        }
-    };
-    stop(body.position.x, body.velocity.x);
-    stop(body.position.y, body.velocity.y);
-    return stopped;
-}
 
 namespace {
 

@@ -2,10 +2,12 @@
 #pragma once
 
 #include "box_grid.hpp"
+#include "broadphase.hpp"
 #include "collide.hpp"
 #include "events.hpp"
 #include "jostle/world.hpp"
-#include "physical_state.hpp"
+#include "physical/contact_cache.hpp"
+#include "physical/scratch.hpp"
 #include "query_index.hpp"
 #include "tilemap.hpp"
 
@@ -60,6 +62,14 @@ struct alignas(64) Body {
 
     bool isDynamic() const { return type == BodyType::Dynamic; }
     bool isOneWay() const { return oneWay.x != 0.0f || oneWay.y != 0.0f; }
+    /// Whether this body stops another that meets it along `normal` (from this body
+    /// towards the other). A one-way platform stops only what meets its blocking face,
+    /// having been wholly outside it when the motion began (`fromOutside`), and not while
+    /// the other drops through on purpose (`othersDropTime` > 0: its dropThroughTime);
+    /// every other body stops everything. docs/one-way-platforms.md.
+    bool blocks(Vec2 normal, bool fromOutside, float othersDropTime) const {
+        return !isOneWay() || (normal == oneWay && fromOutside && othersDropTime <= 0.0f);
+    }
     Box box() const { return {position, half}; }
     Bounds bounds() const { return {position - half, position + half}; }
 };
@@ -70,12 +80,6 @@ static_assert(offsetof(Body, asleep) < 64, "the hot part of Body fits one cache 
 inline bool canCollide(const Body& a, const Body& b) {
     return (a.category & b.mask) != 0 && (b.category & a.mask) != 0;
 }
-
-/// Two bodies that may touch: slot indices, `a` created before `b`.
-struct BodyPair {
-    std::uint32_t a;
-    std::uint32_t b;
-};
 
 struct WorldState {
     WorldDef def;
@@ -160,29 +164,7 @@ struct WorldState {
     void disturb(std::uint32_t slot);
 };
 
-/// Computes invMass from the body's type, mass, density and size.
+/// Computes invMass from the body's type, mass, density and size. world.cpp.
 void updateMass(Body& body);
-
-/// The classic model's step: the tutorial's update(dt). solver_classic.cpp.
-void stepClassic(WorldState& world, float dt);
-
-/// Every pair of live bodies, at least one of them dynamic and awake, whose boxes, each
-/// grown by the distance its velocity carries it in `dt`, overlap or touch; `a` is the
-/// one created first. Sleeping bodies touched by awake ones are woken first, so they take
-/// part. The order is fixed: the same world gives the same list. broadphase.cpp.
-void findPairs(WorldState& world, float dt, std::vector<BodyPair>& pairs);
-
-/// The physical model's step. solver_physical.cpp.
-void stepPhysical(WorldState& world, float dt);
-
-/// The edge of the world (math.hpp): a body beyond ±kMaxMagnitude on an axis is put back
-/// on it, and loses its speed along that axis. True if it was beyond. The end of every
-/// step applies it to all bodies; the classic model also after each move, so that the
-/// pre-solve callbacks it calls as it goes see no body beyond the edge. world.cpp.
-bool stopAtTheEdge(Body& body);
-
-/// Gravity, damping and the velocity clamp for one dynamic body, as both models apply
-/// them at the start of a step.
-void integrateVelocity(const WorldDef& def, Body& body, float dt);
 
 } // namespace jostle

@@ -13,6 +13,10 @@ struct Vec2 {
     float x = 0.0f;
     float y = 0.0f;
 
+    /// The component along an axis: 0 is x, 1 is y.
+    constexpr float operator[](int axis) const { return axis == 0 ? x : y; }
+    constexpr float& operator[](int axis) { return axis == 0 ? x : y; }
+
     friend constexpr bool operator==(Vec2 a, Vec2 b) = default;
 };
 

@@ -5,35 +5,16 @@
 //     a.xv = a.xv - px*r + tx*f
 // *adds* the fraction f of the tangent velocity, while its text says friction is velocity
 // "lost". jostle follows the text: the tangent velocity becomes (1 - f) × t.
-#include "world_state.hpp"
+#include "step.hpp"
+
+#include "../integrate.hpp"
+#include "../world_state.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <vector>
 
 namespace jostle {
-
-void integrateVelocity(const WorldDef& def, Body& body, float dt) {
-    // The tutorial: d.yv = d.yv + grav, with grav = gravity*dt computed once.
-    const Vec2 grav = def.gravity * dt;
-    body.velocity += body.gravityScale == 1.0f ? grav : grav * body.gravityScale;
-    if (body.damping > 0.0f) {
-        const float k = 1.0f + body.damping * dt;
-        body.velocity = {body.velocity.x / k, body.velocity.y / k};
-    }
-    // The hard limit of math.hpp first, per axis: gravity x scale x dt can reach 1e27,
-    // whose square (in the length below) would overflow.
-    body.velocity.x = std::clamp(body.velocity.x, -kMaxMagnitude, kMaxMagnitude);
-    body.velocity.y = std::clamp(body.velocity.y, -kMaxMagnitude, kMaxMagnitude);
-    // clampVec(xv, yv, maxVelocity): scale the vector down to the largest speed.
-    if (std::isfinite(def.maxVelocity)) {
-        const float d = length(body.velocity);
-        if (d > def.maxVelocity) {
-            const float n = def.maxVelocity / d;
-            body.velocity = body.velocity * n;
-        }
-    }
-}
 
 namespace {
 

@@ -1,0 +1,61 @@
+// Counting sort: items placed by a small whole-number key, stably, in two passes (count
+// every item's key, then give each item its place, in the same order). Linear in the
+// items and the keys, and the same input always gives the same order. The broadphase's
+// grid, the support order, the contact cache and the events all sort this way.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace jostle {
+
+/// The runs of a counting sort, one per key: count, then place, then read the runs.
+class Buckets {
+public:
+    /// Starts over with keys 0 .. keyCount - 1, all empty.
+    void reset(std::size_t keyCount) { starts_.assign(keyCount + 1, 0); }
+    /// Counting pass: one more item of `key`.
+    void count(std::size_t key) { ++starts_[key + 1]; }
+    /// Ends the counting pass: every run starts where the one before ends. Returns how
+    /// many items were counted.
+    std::uint32_t endCounting() {
+        for (std::size_t k = 0; k + 1 < starts_.size(); ++k)
+            starts_[k + 1] += starts_[k];
+        return starts_.back();
+    }
+    /// Placing pass, over the items in the order they were counted: the place of the
+    /// next item of `key`.
+    std::uint32_t place(std::size_t key) { return starts_[key]++; }
+    /// Ends the placing pass: each key's run is [begin(key), end(key)) again.
+    void endPlacing() {
+        // Each start now holds the end of its run, which is the start of the next one.
+        for (std::size_t k = starts_.size() - 1; k > 0; --k)
+            starts_[k] = starts_[k - 1];
+        starts_[0] = 0;
+    }
+
+    std::size_t keyCount() const { return starts_.empty() ? 0 : starts_.size() - 1; }
+    std::uint32_t begin(std::size_t key) const { return starts_[key]; }
+    std::uint32_t end(std::size_t key) const { return starts_[key + 1]; }
+
+private:
+    std::vector<std::uint32_t> starts_;
+};
+
+/// Sorts `items` stably by keyOf(item), a whole number below `keyCount`, through
+/// `scratch` (which ends up holding the old order).
+template <class T, class KeyOf>
+void sortByKey(std::vector<T>& items, KeyOf&& keyOf, std::size_t keyCount, Buckets& buckets,
+               std::vector<T>& scratch) {
+    buckets.reset(keyCount);
+    for (const T& item : items)
+        buckets.count(keyOf(item));
+    buckets.endCounting();
+    scratch.resize(items.size());
+    for (const T& item : items)
+        scratch[buckets.place(keyOf(item))] = item;
+    items.swap(scratch);
+}
+
+} // namespace jostle

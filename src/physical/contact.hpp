@@ -1,0 +1,52 @@
+// The physical step's working vocabulary: solver bodies and contacts. Every stage reads
+// and writes these; src/physical/step.cpp lists the stages.
+#pragma once
+
+#include "jostle/math.hpp"
+
+#include <cstdint>
+
+namespace jostle {
+
+/// What the solver passes need of a body, packed together so that the passes over
+/// thousands of contacts read few cache lines.
+struct SolverBody {
+    float velocity[2]; ///< x, y: indexed by a contact's axis
+    float position[2];
+    float invMass;
+    std::uint32_t slot;
+};
+
+/// Two bodies touching, or about to within the step, along one axis. Boxes do not
+/// rotate, so a contact is one normal along x or y and one tangent, and its effective
+/// mass is 1 / (invMassA + invMassB) and nothing else.
+struct Contact {
+    std::uint32_t ia, ib; ///< solver bodies; a is the body created first
+    /// The normal points from b towards a along one axis (0: x, 1: y), with this sign;
+    /// the tangent is the other axis, with its own sign (the normal turned a quarter,
+    /// (-ny, nx)).
+    std::uint8_t axis;
+    /// Which body holds the other, staying put in shock propagation and position
+    /// correction (support.hpp says when): 0 none, 1 a, 2 b.
+    std::uint8_t supporter = 0;
+    float sign, tangentSign;
+    float extent; ///< sum of the half extents along the normal
+    float slop;   ///< overlap left alone
+    float friction;
+    float invMassA, invMassB;
+    float effectiveMass; ///< 1 / (invMassA + invMassB)
+    /// The relative normal velocity must end >= this: 0 to stop, -gap/dt to let a
+    /// speculative contact close its gap, -bounce × approach speed to bounce.
+    float targetSpeed;
+    float normalImpulse = 0.0f; ///< of the sequential impulses: both bodies felt it
+    float shockImpulse = 0.0f;  ///< added by shock propagation: the held body felt none
+    float tangentImpulse = 0.0f;
+    float bounceSpeed = 0.0f;   ///< to remember: bounce at this speed next step
+    float approachSpeed = 0.0f; ///< how fast the pair closed when the step began (>= 0)
+
+    Vec2 normal() const { return axis == 0 ? Vec2{sign, 0.0f} : Vec2{0.0f, sign}; }
+    /// The normal impulse of the step, what the held body's partner felt.
+    float totalImpulse() const { return normalImpulse + shockImpulse; }
+};
+
+} // namespace jostle

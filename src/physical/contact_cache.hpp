@@ -1,0 +1,67 @@
+// The contact cache: what the physical model remembers of a contact from one step to the
+// next (its impulses, to warm start the solver; a pending bounce), and the stage that
+// stores it, with each body's separation.
+#pragma once
+
+#include "../counting_sort.hpp"
+#include "jostle/math.hpp"
+
+#include <cstdint>
+#include <vector>
+
+namespace jostle {
+
+struct StepContext;
+
+/// A contact as the next step finds it.
+struct CachedContact {
+    std::uint32_t generationA = 0;
+    std::uint32_t generationB = 0;
+    Vec2 normal;
+    float normalImpulse = 0.0f;
+    float tangentImpulse = 0.0f;
+    /// A pair that met this step within a speculative gap bounces on the next step, from
+    /// the surface, at this relative speed (0: no bounce).
+    float bounceSpeed = 0.0f;
+};
+
+/// Last step's contacts, looked up by the pair's slots. Stored grouped by the first
+/// slot (a counting sort, rebuilt every step), so a lookup scans the few contacts of one
+/// body, and lookups in creation order walk the table front to back. Never iterated for
+/// results, so nothing of its layout can leak into them.
+///
+/// Rebuilt in place from this step's contacts, with no second copy: a counting pass
+/// (count(a) for each), then a filling pass (add(a, b, contact) for each, same order).
+class ContactCache {
+public:
+    /// Empties the cache.
+    void clear();
+    const CachedContact* find(std::uint32_t a, std::uint32_t b) const;
+
+    /// Starts a rebuild for a world of `slotCount` slots; the old contents are gone.
+    void beginRebuild(std::size_t slotCount) { runs_.reset(slotCount); }
+    /// Counting pass: one more contact whose first body is `a`.
+    void count(std::uint32_t a) { runs_.count(a); }
+    /// Ends the counting pass.
+    void endCounting() { entries_.resize(runs_.endCounting()); }
+    /// Filling pass: the contacts counted, in the same order.
+    void add(std::uint32_t a, std::uint32_t b, const CachedContact& contact) {
+        entries_[runs_.place(a)] = {b, contact};
+    }
+    /// Ends the rebuild.
+    void endRebuild() { runs_.endPlacing(); }
+
+private:
+    struct Entry {
+        std::uint32_t b = 0;
+        CachedContact contact;
+    };
+    Buckets runs_; ///< by slot a: its entries
+    std::vector<Entry> entries_;
+};
+
+/// Stage: store impulses. Rebuilds the world's contact cache from step.contacts, and adds
+/// to each body's separation how far its contacts' impulses pushed it.
+void storeImpulses(StepContext& step);
+
+} // namespace jostle

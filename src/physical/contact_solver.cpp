@@ -1,0 +1,83 @@
+// The contact solver: sequential impulses over the step's contacts, and shock
+// propagation. Impulses are clamped by clamping their change, not by clamping the sum
+// and taking the difference: a light body under a heavy one needs a change far below the
+// float step of the impulse that holds the heavy one up (docs/physical-model.md).
+#include "contact_solver.hpp"
+
+#include "step_context.hpp"
+
+#include <algorithm>
+
+namespace jostle {
+
+namespace {
+
+/// Applies `impulse` to both bodies of `c` along `axis`.
+void applyImpulse(StepContext& step, const Contact& c, int axis, float impulse) {
+    step.bodies[c.ia].velocity[axis] += impulse * c.invMassA;
+    step.bodies[c.ib].velocity[axis] -= impulse * c.invMassB;
+}
+
+float relativeSpeed(const StepContext& step, const Contact& c, int axis) {
+    return step.bodies[c.ia].velocity[axis] - step.bodies[c.ib].velocity[axis];
+}
+
+void warmStart(StepContext& step) {
+    for (const Contact& c : step.contacts) {
+        applyImpulse(step, c, c.axis, c.sign * c.normalImpulse);
+        applyImpulse(step, c, 1 - c.axis, c.tangentSign * c.tangentImpulse);
+    }
+}
+
+void velocityPass(StepContext& step) {
+    for (Contact& c : step.contacts) {
+        // Normal: push (never pull) until the pair stops approaching.
+        {
+            const float speed = c.sign * relativeSpeed(step, c, c.axis);
+            const float impulse =
+                std::max(-c.effectiveMass * (speed - c.targetSpeed), -c.normalImpulse);
+            applyImpulse(step, c, c.axis, c.sign * impulse);
+            c.normalImpulse += impulse;
+        }
+        // Friction: stop the sliding, within Coulomb's cone.
+        {
+            const int tangent = 1 - c.axis;
+            const float speed = c.tangentSign * relativeSpeed(step, c, tangent);
+            const float limit = c.friction * c.normalImpulse;
+            const float impulse = std::clamp(-c.effectiveMass * speed, -limit - c.tangentImpulse,
+                                             limit - c.tangentImpulse);
+            applyImpulse(step, c, tangent, c.tangentSign * impulse);
+            c.tangentImpulse = std::clamp(c.tangentImpulse + impulse, -limit, limit);
+        }
+    }
+}
+
+} // namespace
+
+void solveVelocities(StepContext& step) {
+    warmStart(step);
+    for (int i = 0; i < step.options.velocityIterations; ++i)
+        velocityPass(step);
+}
+
+void propagateShock(StepContext& step) {
+    for (Contact& c : step.contacts) {
+        if (c.supporter == 0)
+            continue;
+        // The supporter is held fixed: the other body takes the whole impulse.
+        const float invMass = c.supporter == 1 ? c.invMassB : c.invMassA;
+        if (invMass <= 0.0f)
+            continue;
+        const float speed = c.sign * relativeSpeed(step, c, c.axis);
+        const float impulse = std::max(-(speed - c.targetSpeed) / invMass, -c.normalImpulse);
+        if (c.supporter == 1)
+            step.bodies[c.ib].velocity[c.axis] -= c.sign * impulse * c.invMassB;
+        else
+            step.bodies[c.ia].velocity[c.axis] += c.sign * impulse * c.invMassA;
+        // Kept apart from the impulse both bodies felt: the held body felt none of it, and
+        // warm starting the next step with it would fling a much lighter held body.
+        c.shockImpulse = impulse;
+    }
+}
+
+} // namespace jostle

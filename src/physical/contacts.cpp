@@ -1,0 +1,210 @@
+// Building contacts: which pairs touch and along which axis, one-way platforms, the
+// pre-solve callback, warm starting and the target speed of each contact.
+#include "contacts.hpp"
+
+#include "seams.hpp"
+#include "step_context.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace jostle {
+
+namespace {
+
+float combineFriction(FrictionMix mix, float a, float b) {
+    return mix == FrictionMix::GeometricMean ? std::sqrt(a * b) : std::min(a, b);
+}
+
+/// The two slots as one number, the same in either order.
+std::uint64_t pairKey(std::uint32_t slotA, std::uint32_t slotB) {
+    return std::uint64_t{std::min(slotA, slotB)} << 32 | std::max(slotA, slotB);
+}
+
+/// An approach slower than this does not bounce: gravity alone hands a resting body
+/// about g dt each step.
+float restitutionThreshold(const StepContext& step) {
+    if (step.options.restitutionThreshold > 0.0f)
+        return step.options.restitutionThreshold;
+    return 2.0f * length(step.world.def.gravity) * step.dt;
+}
+
+/// The relative normal speed at which the pair really meets: `approach` is measured after
+/// this step's gravity, as if it had acted for the whole step, but the pair meets when it
+/// has crossed its gap, a fraction of the step (none if it already touches).
+float impactSpeed(const StepContext& step, const Body& a, const Body& b, Vec2 normal,
+                  float approach, float gap) {
+    auto acceleration = [&](const Body& body) {
+        return body.isDynamic() ? step.world.def.gravity * body.gravityScale : Vec2{};
+    };
+    const float gravityAlong = dot(acceleration(a) - acceleration(b), normal);
+    const float before = approach - gravityAlong * step.dt;
+    const float meetAfter =
+        gap > 0.0f && approach < 0.0f ? std::min(step.dt, gap / -approach) : 0.0f;
+    return before + gravityAlong * meetAfter;
+}
+
+/// The axis a pair touches along, as a unit normal from b towards a, with the gap
+/// between them along it (negative: overlap) and the skin within which they touch.
+struct Facing {
+    Vec2 normal;
+    float gap;
+    float skin;
+};
+
+/// Where a contact's normal is chosen: the axis geometry.hpp's contactAxis picks, unless
+/// the pair meets at a corner that is a seam between two static bodies; then the face
+/// that axis would push on is inside the level, and the other axis is the one.
+Facing chooseNormal(const StepContext& step, const Body& a, const Body& b) {
+    const Vec2 d = a.position - b.position;
+    const float gapX = std::abs(d.x) - (a.half.x + b.half.x);
+    const float gapY = std::abs(d.y) - (a.half.y + b.half.y);
+    const float skinX = step.skinOf(a.half.x, b.half.x);
+    const float skinY = step.skinOf(a.half.y, b.half.y);
+    bool alongX = contactAxis(gapX, gapY, skinX, skinY) == Axis::X;
+    if (gapX >= -skinX && gapY >= -skinY && a.type != b.type &&
+        (a.type == BodyType::Static || b.type == BodyType::Static)) {
+        const bool aStatic = a.type == BodyType::Static;
+        if (isSeam(step.world, aStatic ? a : b, aStatic ? b : a, alongX ? 0 : 1))
+            alongX = !alongX;
+    }
+    if (alongX)
+        return {Vec2{d.x < 0.0f ? -1.0f : 1.0f, 0.0f}, gapX, skinX};
+    return {Vec2{0.0f, d.y < 0.0f ? -1.0f : 1.0f}, gapY, skinY};
+}
+
+/// Apart along `normal` by `gap`, and neither body moving fast enough towards the other
+/// to close it within the step. Each body's own speed counts, not only the pair's: two
+/// boxes falling together do not approach, but when the lower one lands the upper one
+/// must be stopped in the same step.
+bool staysApart(const Body& a, const Body& b, Vec2 normal, float gap, float dt) {
+    const float towardB = std::max(0.0f, -dot(a.velocity, normal));
+    const float towardA = std::max(0.0f, dot(b.velocity, normal));
+    return gap > 0.0f && gap > (towardA + towardB) * dt;
+}
+
+/// Starts `c` from last step's impulses if the cache holds the same contact: the same
+/// bodies, touching along the same normal. Returns what it found.
+const CachedContact* warmStart(const StepContext& step, Contact& c, std::uint32_t slotA,
+                               std::uint32_t slotB, Vec2 normal) {
+    const CachedContact* found = step.world.contactCache.find(slotA, slotB);
+    if (!found || found->generationA != step.world.slots[slotA].generation ||
+        found->generationB != step.world.slots[slotB].generation || found->normal != normal)
+        return nullptr;
+    c.normalImpulse = found->normalImpulse;
+    c.tangentImpulse = found->tangentImpulse;
+    return found;
+}
+
+/// The target speed: a speculative contact may close its gap, and no more; a bouncing
+/// pair that touches leaves at `bounce` times its impact speed. A pair still apart first
+/// closes its gap and bounces on the next step, from the surface (bouncing from up to a
+/// step's travel away would gain that much height at every bounce).
+void setTarget(Contact& c, const CachedContact* cached, float bounce, float impact, float approach,
+               float gap, float threshold, float dt) {
+    c.targetSpeed = gap > 0.0f ? -gap / dt : 0.0f;
+    if (cached && cached->bounceSpeed > 0.0f) {
+        c.targetSpeed = cached->bounceSpeed; // arrived at the surface last step: leave it
+    } else if (bounce > 0.0f && impact < -threshold && approach < c.targetSpeed) {
+        if (gap > 0.0f)
+            c.bounceSpeed = -bounce * impact;
+        else
+            c.targetSpeed = -bounce * impact;
+    }
+}
+
+} // namespace
+
+Contact contactAlong(const StepContext& step, const Body& a, const Body& b, Vec2 normal) {
+    Contact c;
+    const bool alongX = normal.x != 0.0f;
+    c.axis = alongX ? 0 : 1;
+    c.sign = alongX ? normal.x : normal.y;
+    c.tangentSign = alongX ? normal.x : -normal.y;
+    c.extent = alongX ? a.half.x + b.half.x : a.half.y + b.half.y;
+    c.slop =
+        step.options.slop * (alongX ? std::min(a.half.x, b.half.x) : std::min(a.half.y, b.half.y));
+    c.friction = combineFriction(step.options.frictionMix, a.friction, b.friction);
+    return c;
+}
+
+void buildContacts(StepContext& step) {
+    WorldState& w = step.world;
+    std::vector<std::uint64_t>& vetoed = step.scratch.contactsBuild.vetoed;
+    const float threshold = restitutionThreshold(step);
+    w.physical.solverIndex.assign(w.slots.size(), StepContext::kNoSolverBody);
+    step.bodies.clear();
+    vetoed.clear();
+    step.contacts.clear();
+    step.contacts.reserve(w.pairs.size());
+    step.scratch.sensorPairs.clear();
+    for (const BodyPair& pair : w.pairs) {
+        if (!w.isLive(pair.a) || !w.isLive(pair.b))
+            continue; // destroyed by a callback earlier in this loop
+        const Body& a = w.slots[pair.a];
+        const Body& b = w.slots[pair.b];
+        if (!canCollide(a, b))
+            continue;
+        if (a.sensor || b.sensor) {
+            // Overlap is judged where the step leaves them (report.cpp).
+            if (a.sensor != b.sensor)
+                step.scratch.sensorPairs.push_back(a.sensor ? pair : BodyPair{pair.b, pair.a});
+            continue;
+        }
+        const auto [normal, gap, skin] = chooseNormal(step, a, b);
+        if (staysApart(a, b, normal, gap, step.dt))
+            continue;
+        // The normal points from b towards a; a pair touching within the skin was on the
+        // platform's side when the step began.
+        if (!a.blocks(-normal, gap >= -skin, b.dropThroughTime) ||
+            !b.blocks(normal, gap >= -skin, a.dropThroughTime))
+            continue;
+
+        const float approach = dot(a.velocity - b.velocity, normal);
+        Contact c = contactAlong(step, a, b, normal);
+        c.approachSpeed = std::max(0.0f, -approach);
+        float bounce = std::max(a.bounce, b.bounce);
+        if (w.preSolve) {
+            Collision info{w.idOf(pair.a), w.idOf(pair.b), normal, -gap, bounce, c.friction};
+            const bool keep = w.preSolve(info);
+            if (!keep)
+                vetoed.push_back(pairKey(pair.a, pair.b));
+            if (!keep || !w.isLive(pair.a) || !w.isLive(pair.b))
+                continue;
+            if (!std::isnan(info.bounce))
+                bounce = std::clamp(info.bounce, 0.0f, 1.0f);
+            if (!std::isnan(info.friction))
+                c.friction = std::clamp(info.friction, 0.0f, 1.0f);
+        }
+        // The callback may have created bodies: fetch again.
+        const Body& ba = w.slots[pair.a];
+        const Body& bb = w.slots[pair.b];
+        c.invMassA = ba.invMass;
+        c.invMassB = bb.invMass;
+        c.ia = step.solverBodyOf(pair.a);
+        c.ib = step.solverBodyOf(pair.b);
+        const float invMassSum = c.invMassA + c.invMassB;
+        if (invMassSum <= 0.0f)
+            continue; // the callback made both infinitely heavy
+        c.effectiveMass = 1.0f / invMassSum;
+        const CachedContact* cached = warmStart(step, c, pair.a, pair.b, normal);
+        setTarget(c, cached, bounce, impactSpeed(step, ba, bb, normal, approach, gap), approach,
+                  gap, threshold, step.dt);
+        step.contacts.push_back(c);
+    }
+    std::sort(vetoed.begin(), vetoed.end());
+    // A callback may have destroyed a body after its contact was made: the body is left
+    // out of the rest of the step (no impulses, no events, no cached contact whose
+    // generations would be those of the slot's next body).
+    if (w.preSolve)
+        std::erase_if(step.contacts, [&](const Contact& c) {
+            return !w.isLive(step.bodies[c.ia].slot) || !w.isLive(step.bodies[c.ib].slot);
+        });
+}
+
+bool isVetoed(const StepContext& step, std::uint32_t slotA, std::uint32_t slotB) {
+    const std::vector<std::uint64_t>& vetoed = step.scratch.contactsBuild.vetoed;
+    return std::binary_search(vetoed.begin(), vetoed.end(), pairKey(slotA, slotB));
+}
+
+} // namespace jostle

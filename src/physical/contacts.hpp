@@ -1,0 +1,33 @@
+// Stage: build contacts. Every pair the broadphase found becomes a contact along one axis
+// (or nothing: apart for the whole step, filtered, a one-way platform passed, vetoed by
+// the pre-solve callback), warm-started from last step's contact and given its target
+// speed (stop, close a speculative gap, or bounce).
+#pragma once
+
+#include "contact.hpp"
+
+#include <cstdint>
+#include <vector>
+
+namespace jostle {
+
+struct StepContext;
+struct Body;
+
+/// What building contacts leaves for later stages.
+struct ContactsScratch {
+    std::vector<std::uint64_t> vetoed; ///< pairs the pre-solve vetoed this step (sorted keys)
+};
+
+/// Fills step.contacts, and step.scratch.sensorPairs with the pairs of a sensor and a
+/// body that may overlap it, from step.world.pairs.
+void buildContacts(StepContext& step);
+
+/// A contact of `a` and `b` along `normal` (a unit axis vector, from b towards a): its
+/// axis, signs, extent, slop and friction, the rest left to the caller.
+Contact contactAlong(const StepContext& step, const Body& a, const Body& b, Vec2 normal);
+
+/// Whether the pre-solve callback vetoed the contact of these two bodies this step.
+bool isVetoed(const StepContext& step, std::uint32_t slotA, std::uint32_t slotB);
+
+} // namespace jostle

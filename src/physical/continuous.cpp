@@ -1,0 +1,169 @@
+// Continuous collision of the physical model. Contacts stop what they foresee: the pairs
+// that touch, or will within the step at the speeds it began with. This catches the rest,
+// so that nothing passes through a wall however fast it goes, nor is pushed into one by
+// the solver (docs/continuous-collision.md).
+#include "continuous.hpp"
+
+#include "contacts.hpp"
+#include "step_context.hpp"
+#include "support.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+#include <utility>
+
+namespace jostle {
+
+namespace {
+
+/// After this many hits in one step, a body stops where the last one left it.
+constexpr int kMaxHits = 4;
+
+/// Whether the solver sent `body` where its contacts did not look: they were made for
+/// bodies it could reach moving `before` (this step's velocity, before the solver), and it
+/// now moves `after`, further along an axis than its skin allows.
+bool movesUnforeseen(const StepContext& step, const Body& body, Vec2 before, Vec2 after) {
+    auto beyond = [&](float was, float now, float half) {
+        const float unforeseen = was * now < 0.0f ? std::abs(now) : std::abs(now) - std::abs(was);
+        return unforeseen * step.dt > step.skinOf(half, half);
+    };
+    return beyond(before.x, after.x, body.half.x) || beyond(before.y, after.y, body.half.y);
+}
+
+struct FirstHit {
+    Hit hit;
+    std::uint32_t slot;
+};
+
+/// The first body `slot` meets moving by `motion` this step: static and kinematic ones,
+/// and dynamic ones too if it is a bullet.
+std::optional<FirstHit> firstHit(const StepContext& step, std::uint32_t slot, Vec2 motion) {
+    const WorldState& w = step.world;
+    const Body& body = w.slots[slot];
+    const Bounds swept = sweptBounds(body.position, body.half, motion);
+    std::optional<FirstHit> first;
+    auto consider = [&](std::uint32_t other) {
+        const Body& obstacle = w.slots[other];
+        if (other == slot || !w.isLive(other))
+            return;
+        if ((obstacle.isDynamic() && !body.bullet) || obstacle.sensor || body.sensor ||
+            !canCollide(body, obstacle))
+            return;
+        const Vec2 relative = motion - obstacle.velocity * step.dt;
+        const Vec2 skin{step.skinOf(body.half.x, obstacle.half.x),
+                        step.skinOf(body.half.y, obstacle.half.y)};
+        const std::optional<Hit> hit = sweepBox(body.box(), relative, obstacle.box(), skin);
+        // Only what the body runs into: a kinematic body coming at it from behind is the
+        // contacts' business (they push it), not a reason to stop it.
+        if (!hit || dot(motion, hit->normal) >= 0.0f)
+            return;
+        // The sweep finds only what the body enters from outside.
+        if (!obstacle.blocks(hit->normal, true, body.dropThroughTime))
+            return;
+        // Nor does what the pre-solve callback let the body through in this step.
+        if (isVetoed(step, slot, other))
+            return;
+        if (!first || hit->time < first->hit.time)
+            first = FirstHit{*hit, other};
+    };
+    w.restingGrid.query(swept, [&](std::uint32_t i) {
+        if (w.slots[w.restingSlots[i]].type == BodyType::Static)
+            consider(w.restingSlots[i]);
+    });
+    w.movingGrid.query(swept, [&](std::uint32_t i) { consider(w.movingSlots[i]); });
+    return first;
+}
+
+/// A contact for a hit of the sweep of `slot` on `obstacle`, along `normal` (from the
+/// obstacle towards the body), met at `speed`: it holds the body on the obstacle's side
+/// when position correction pushes it there from the other side, and reports the touch.
+/// Unless a contact of the pair is in the step already.
+void addFoundContact(StepContext& step, std::uint32_t slot, std::uint32_t obstacle, Vec2 normal,
+                     float speed) {
+    WorldState& w = step.world;
+    ContinuousScratch& s = step.scratch.continuous;
+    const bool bodyFirst = w.rank[slot] < w.rank[obstacle];
+    const std::uint32_t slotA = bodyFirst ? slot : obstacle;
+    const std::uint32_t slotB = bodyFirst ? obstacle : slot;
+    const std::uint32_t ia = step.solverBodyOf(slotA), ib = step.solverBodyOf(slotB);
+    if (haveContact(step, ia, ib))
+        return;
+    // Found by an earlier hit of this sweep, or, for a dynamic obstacle (bullets), by its
+    // own sweep: the rest of the list holds other bodies' hits.
+    const bool dynamicObstacle = w.slots[obstacle].isDynamic();
+    for (std::size_t k = dynamicObstacle ? 0 : s.sweepStart; k < s.found.size(); ++k)
+        if (s.found[k].ia == ia && s.found[k].ib == ib)
+            return;
+    const Body& a = w.slots[slotA];
+    const Body& b = w.slots[slotB];
+    Contact c = contactAlong(step, a, b, bodyFirst ? normal : -normal);
+    c.ia = ia;
+    c.ib = ib;
+    c.invMassA = a.invMass;
+    c.invMassB = b.invMass;
+    c.effectiveMass = 1.0f / (a.invMass + b.invMass);
+    c.targetSpeed = 0.0f;
+    c.approachSpeed = speed;
+    s.found.push_back(c);
+}
+
+/// Sweeps the body along `motion`; at the first hit, moves it there and takes away its
+/// velocity into the obstacle, then sweeps again along what is left of its velocity
+/// (sliding along a floor into a wall, say). The step's own integration then moves it by
+/// that velocity from there, a path just swept clear.
+void sweep(StepContext& step, std::uint32_t slot, Vec2 motion) {
+    step.scratch.continuous.sweepStart = step.scratch.continuous.found.size();
+    Body& body = step.world.slots[slot];
+    for (int hits = 0; hits < kMaxHits; ++hits) {
+        const std::optional<FirstHit> first = firstHit(step, slot, motion);
+        if (!first)
+            return;
+        const auto [hit, hitSlot] = *first;
+        // Where it touches the obstacle as the obstacle is now: the integration that
+        // follows moves both by their velocities, which the hit has made equal along the
+        // normal.
+        const Body& obstacle = step.world.slots[hitSlot];
+        body.position += (motion - obstacle.velocity * step.dt) * hit.time;
+        const float into = dot(body.velocity - obstacle.velocity, hit.normal);
+        if (into < 0.0f)
+            body.velocity -= hit.normal * into;
+        addFoundContact(step, slot, hitSlot, hit.normal, std::max(0.0f, -into));
+        motion = body.velocity * step.dt;
+    }
+    if (firstHit(step, slot, motion))
+        body.velocity = {};
+}
+
+} // namespace
+
+void sweepFastBodies(StepContext& step) {
+    WorldState& w = step.world;
+    ContinuousScratch& s = step.scratch.continuous;
+    s.unforeseen.assign(w.slots.size(), 0);
+    for (const SolverBody& body : step.bodies) {
+        Vec2& velocity = w.slots[body.slot].velocity;
+        const Vec2 solved{body.velocity[0], body.velocity[1]};
+        if (body.invMass > 0.0f && movesUnforeseen(step, w.slots[body.slot], velocity, solved))
+            s.unforeseen[body.slot] = 1;
+        velocity = solved;
+    }
+    for (std::uint32_t slot : w.movingSlots) {
+        Body& body = w.slots[slot];
+        if (!body.isDynamic() || !w.isLive(slot))
+            continue;
+        const Vec2 motion = body.velocity * step.dt;
+        const float size = std::min(body.half.x, body.half.y);
+        if (std::abs(motion.x) <= size && std::abs(motion.y) <= size && !s.unforeseen[slot])
+            continue;
+        sweep(step, slot, motion);
+    }
+    // What the sweeps met joins the step's contacts, for position correction and events.
+    if (!s.found.empty()) {
+        step.contacts.insert(step.contacts.end(), s.found.begin(), s.found.end());
+        s.found.clear();
+        orderBySupport(step);
+    }
+}
+
+} // namespace jostle

@@ -1,0 +1,87 @@
+// Positions: the move by velocity, then position correction over the step's contacts.
+#include "positions.hpp"
+
+#include "sleep.hpp"
+#include "step_context.hpp"
+
+#include <algorithm>
+
+namespace jostle {
+
+namespace {
+
+/// One pass of position correction; false if it moved no body.
+bool correctionPass(StepContext& step) {
+    bool moved = false;
+    for (Contact& c : step.contacts) {
+        SolverBody& a = step.bodies[c.ia];
+        SolverBody& b = step.bodies[c.ib];
+        const float overlap = step.overlapOf(c);
+        // Centres that have passed each other along the normal (a kinematic body that
+        // went on through what it pushed): pushing "out" would push through.
+        if (overlap > c.extent)
+            continue;
+        const float excess = overlap - c.slop;
+        if (!(excess > 0.0f))
+            continue;
+        // An excess within float noise goes at once: a fraction of it would round to
+        // nothing, and a pair pushed from both sides would stay beyond the slop for good.
+        const float correction =
+            excess <= step.noiseOf(c)
+                ? excess
+                : std::min(step.options.correction * excess, 0.25f * (c.extent - c.slop));
+        // The body that holds the other stays put (support.hpp); where neither holds, the
+        // two share the correction by inverse mass.
+        const float shareA = c.supporter == 1   ? 0.0f
+                             : c.supporter == 2 ? (c.invMassA > 0.0f ? 1.0f : 0.0f)
+                                                : c.invMassA * c.effectiveMass;
+        const float shareB = c.supporter == 2   ? 0.0f
+                             : c.supporter == 1 ? (c.invMassB > 0.0f ? 1.0f : 0.0f)
+                                                : c.invMassB * c.effectiveMass;
+        const float moveA = correction * shareA;
+        const float moveB = correction * shareB;
+        a.position[c.axis] += c.sign * moveA;
+        b.position[c.axis] -= c.sign * moveB;
+        moved = true;
+    }
+    return moved;
+}
+
+} // namespace
+
+void integratePositions(StepContext& step) {
+    // The bodies that were moving when the step began (a callback may have created others
+    // since: they join next step).
+    WorldState& w = step.world;
+    for (std::uint32_t slot : w.movingSlots) {
+        Body& body = w.slots[slot];
+        if (w.isLive(slot))
+            body.position += body.velocity * step.dt;
+    }
+}
+
+void correctPositions(StepContext& step) {
+    WorldState& w = step.world;
+    for (SolverBody& body : step.bodies) {
+        body.position[0] = w.slots[body.slot].position.x;
+        body.position[1] = w.slots[body.slot].position.y;
+    }
+    // A pass that moved nothing leaves the next one nothing to do.
+    for (int i = 0; i < step.options.positionIterations && correctionPass(step); ++i) {
+    }
+    for (const SolverBody& body : step.bodies) {
+        if (body.invMass <= 0.0f)
+            continue;
+        // What position correction moved the body is part of its separation.
+        Body& written = w.slots[body.slot];
+        const Vec2 corrected{body.position[0], body.position[1]};
+        const Vec2 moved = corrected - written.position;
+        written.separation += moved;
+        written.position = corrected;
+        // Still being pushed out of an overlap: not at rest, whatever its speed.
+        if (length(moved) > restingSpeed(written) * step.dt)
+            written.sleepTime = 0.0f;
+    }
+}
+
+} // namespace jostle

@@ -1,0 +1,92 @@
+// Events of the physical step: contacts that touch, sensor overlaps, crushes.
+#include "report.hpp"
+
+#include "../events.hpp"
+#include "step_context.hpp"
+
+#include <algorithm>
+
+namespace jostle {
+
+namespace {
+
+/// A body overlapped by a kinematic one deeper than this fraction of its half extent is
+/// being crushed (if held on the other side): the solver could not push it out.
+constexpr float kCrushDepth = 0.1f;
+
+/// A dynamic body that a kinematic body moving into it overlaps deeper than kCrushDepth
+/// of its size becomes a candidate.
+void findCrush(StepContext& step, const Contact& c, std::uint32_t slotA, std::uint32_t slotB,
+               float overlap) {
+    const WorldState& w = step.world;
+    const Body& a = w.slots[slotA];
+    const Body& b = w.slots[slotB];
+    const bool kinematicA = a.type == BodyType::Kinematic,
+               kinematicB = b.type == BodyType::Kinematic;
+    if (kinematicA == kinematicB || (kinematicA ? !b.isDynamic() : !a.isDynamic()))
+        return;
+    const std::uint32_t body = kinematicA ? slotB : slotA;
+    const std::uint32_t by = kinematicA ? slotA : slotB;
+    const Vec2 into = kinematicA ? -c.normal() : c.normal();
+    const float half = w.slots[body].half[c.axis];
+    if (dot(w.slots[by].velocity, into) > 0.0f && overlap > kCrushDepth * half)
+        step.scratch.crushCandidates.push_back({body, by, into});
+}
+
+/// Each candidate with a contact on its far side, against something heavy (static,
+/// kinematic, or a body that holds it), is crushed.
+void reportCrushes(StepContext& step) {
+    WorldState& w = step.world;
+    std::vector<CrushCandidate>& candidates = step.scratch.crushCandidates;
+    for (const CrushCandidate& candidate : candidates) {
+        for (const Contact& c : step.contacts) {
+            const std::uint32_t slotA = step.bodies[c.ia].slot, slotB = step.bodies[c.ib].slot;
+            if (slotA != candidate.body && slotB != candidate.body)
+                continue;
+            const std::uint32_t other = slotA == candidate.body ? slotB : slotA;
+            // The other body pushes back against the kinematic one's push.
+            const Vec2 push = slotA == candidate.body ? c.normal() : -c.normal();
+            if (other == candidate.by || dot(push, candidate.into) >= 0.0f)
+                continue;
+            const bool otherHolds = c.supporter == (other == slotA ? 1 : 2);
+            const bool heavy = !w.slots[other].isDynamic() || otherHolds;
+            if (heavy && c.totalImpulse() > 0.0f) {
+                w.events.crushes.push_back(
+                    {w.idOf(candidate.body), w.idOf(candidate.by), w.idOf(other)});
+                break;
+            }
+        }
+    }
+    candidates.clear();
+}
+
+} // namespace
+
+void reportEvents(StepContext& step) {
+    WorldState& w = step.world;
+    step.scratch.crushCandidates.clear();
+    for (const Contact& c : step.contacts) {
+        // The solver bodies hold where the step leaves every body of a contact.
+        const float gap = -step.overlapOf(c);
+        const float skin = std::max(2.0f * c.slop, kMinimumSkin * c.extent);
+        const std::uint32_t slotA = step.bodies[c.ia].slot, slotB = step.bodies[c.ib].slot;
+        if (gap <= skin)
+            recordContact(w, slotA, slotB, c.normal(), c.approachSpeed);
+        // Only a dynamic body against an infinitely heavy one can be crushed.
+        if ((c.invMassA == 0.0f) != (c.invMassB == 0.0f))
+            findCrush(step, c, slotA, slotB, -gap);
+    }
+    for (const BodyPair& pair : step.scratch.sensorPairs) {
+        if (!w.isLive(pair.a) || !w.isLive(pair.b))
+            continue;
+        const Bounds sensor = w.slots[pair.a].bounds();
+        const Bounds visitor = w.slots[pair.b].bounds();
+        // Overlapping, not merely touching.
+        if (sensor.min.x < visitor.max.x && visitor.min.x < sensor.max.x &&
+            sensor.min.y < visitor.max.y && visitor.min.y < sensor.max.y)
+            recordSensor(w, pair.a, pair.b);
+    }
+    reportCrushes(step);
+}
+
+} // namespace jostle

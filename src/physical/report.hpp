@@ -1,0 +1,23 @@
+// Stage: report events (docs/events.md). Contacts that touch where the step leaves them,
+// sensor overlaps, and bodies crushed by kinematic ones, handed to the world's events.
+#pragma once
+
+#include "jostle/math.hpp"
+
+#include <cstdint>
+#include <vector>
+
+namespace jostle {
+
+struct StepContext;
+
+/// A dynamic body that a kinematic body pushes deep into: crushed if something holds it
+/// on the other side.
+struct CrushCandidate {
+    std::uint32_t body, by;
+    Vec2 into; ///< from the kinematic body into the dynamic one
+};
+
+void reportEvents(StepContext& step);
+
+} // namespace jostle

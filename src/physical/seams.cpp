@@ -1,0 +1,50 @@
+// Seams between static boxes. A box sliding along a floor of separate boxes, or along a
+// wall whose rows are separate boxes, meets the next box at such a corner; a contact
+// pushing on that face would stop it dead at the seam.
+#include "seams.hpp"
+
+#include "../world_state.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace jostle {
+
+bool isSeam(const WorldState& world, const Body& wall, const Body& other, int axis) {
+    const int along = 1 - axis; // the axis the face runs along
+    // The face, and the corner of it nearest `other`; `inward` runs from that corner
+    // along the face.
+    const float side = other.position[axis] < wall.position[axis] ? -1.0f : 1.0f;
+    const float face = wall.position[axis] + side * wall.half[axis];
+    const float end = other.position[along] < wall.position[along] ? -1.0f : 1.0f;
+    const float corner = wall.position[along] + end * wall.half[along];
+    const float inward = -end;
+    // Flush: within a hair of the face, on the far side of it from the wall. A hair is a
+    // small fraction of the sizes, or a few float steps at the face's coordinate (metre-
+    // sized tiles far from the origin round coarser than that fraction).
+    const float tolerance =
+        std::max(1e-4f * std::max(wall.half[axis], other.half[axis]), 4.0f * ulpOf(face));
+    // It must cover the face from the corner inward, a good part of the way.
+    const float reach = 0.25f * std::min(wall.half[along], other.half[along]);
+    Bounds probe;
+    probe.min[axis] = probe.max[axis] = face + side * tolerance;
+    probe.min[along] = std::min(corner, corner + inward * reach);
+    probe.max[along] = std::max(corner, corner + inward * reach);
+    bool covered = false;
+    world.restingGrid.query(probe, [&](std::uint32_t k) {
+        const Body& cover = world.slots[world.restingSlots[k]];
+        if (covered || cover.type != BodyType::Static || &cover == &wall)
+            return;
+        const Bounds coverBounds = cover.bounds();
+        // On the other side of the face, touching it...
+        const float near = side > 0.0f ? coverBounds.min[axis] : coverBounds.max[axis];
+        if (std::abs(near - face) > tolerance)
+            return;
+        // ... and spanning the probe along it.
+        covered = coverBounds.min[along] <= probe.min[along] + tolerance &&
+                  coverBounds.max[along] >= probe.max[along] - tolerance;
+    });
+    return covered;
+}
+
+} // namespace jostle

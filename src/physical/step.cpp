@@ -1,0 +1,45 @@
+// The physical model's step: its stages, in order, over one context. Each stage is in the
+// file its header names; docs/architecture.md follows the data through them.
+#include "step.hpp"
+
+#include "../broadphase.hpp"
+#include "../integrate.hpp"
+#include "contact_cache.hpp"
+#include "contact_solver.hpp"
+#include "contacts.hpp"
+#include "continuous.hpp"
+#include "platforms.hpp"
+#include "positions.hpp"
+#include "report.hpp"
+#include "sleep.hpp"
+#include "step_context.hpp"
+#include "support.hpp"
+
+#include <algorithm>
+
+namespace jostle {
+
+void stepPhysical(WorldState& world, float dt) {
+    StepContext step(world, dt);
+    world.events.beginStep(world);
+    carryRiders(step);
+    integrateAwakeBodies(world, dt);
+    findPairs(world, dt, world.pairs);
+    buildContacts(step);
+    orderBySupport(step);
+    solveVelocities(step);
+    propagateShock(step);
+    sweepFastBodies(step);
+    integratePositions(step);
+    correctPositions(step);
+    storeImpulses(step);
+    reportEvents(step);
+    rememberPlatformVelocities(step);
+    if (world.def.sleeping)
+        fallAsleep(step);
+    const bool anyAwake = std::find(world.movingDynamic.begin(), world.movingDynamic.end(),
+                                    std::uint8_t{1}) != world.movingDynamic.end();
+    world.events.publish(world, anyAwake);
+}
+
+} // namespace jostle
