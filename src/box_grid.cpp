@@ -17,13 +17,13 @@ constexpr double kCellLimit = 1073741824.0;
 // A level is dense (an array of cells) when it has at most this many cells per box.
 constexpr std::int64_t kDenseCellsPerBox = 16;
 
-float sizeOf(const Bounds& box) {
+float sizeOf(const Box& box) {
     return std::max(box.max.x - box.min.x, box.max.y - box.min.y);
 }
 
 } // namespace
 
-int BoxGrid::levelOf(const Bounds& box) const {
+int BoxGrid::levelOf(const Box& box) const {
     // A little room above the size: a box must never be larger than its cells.
     const double size = double(sizeOf(box)) * (1.0 + 1.0 / (1 << 20));
     int level = 0;
@@ -86,7 +86,7 @@ void BoxGrid::run(int levelIndex, std::int64_t x, std::int64_t y, std::uint32_t&
 int BoxGrid::mergedLevels(double base) const {
     // How many boxes each of the first levels would hold; the last count, all the rest.
     std::size_t counts[kMaxMerged + 2] = {};
-    for (const Bounds& box : boxes_) {
+    for (const Box& box : boxes_) {
         int level = 0;
         for (double size = base; level <= kMaxMerged && size < double(sizeOf(box)); size *= 2.0)
             ++level;
@@ -104,7 +104,7 @@ int BoxGrid::mergedLevels(double base) const {
     return 0; // sizes spread out: the levels as they are
 }
 
-void BoxGrid::build(const std::vector<Bounds>& boxes) {
+void BoxGrid::build(const std::vector<Box>& boxes) {
     boxes_ = boxes;
     const std::size_t n = boxes_.size();
     usedLevels_ = 0;
@@ -120,7 +120,7 @@ void BoxGrid::build(const std::vector<Bounds>& boxes) {
     // If 63 levels cannot span the sizes, the small boxes share a coarser level: slower,
     // still correct. The last level is one infinite cell, for whatever is larger still.
     float smallest = INFINITY, largest = 0.0f;
-    for (const Bounds& box : boxes_) {
+    for (const Box& box : boxes_) {
         smallest = std::min(smallest, sizeOf(box));
         largest = std::max(largest, sizeOf(box));
     }

@@ -18,7 +18,7 @@
 // order.
 #pragma once
 
-#include "jostle/math.hpp"
+#include "geometry.hpp"
 
 #include <algorithm>
 #include <cstdint>
@@ -26,34 +26,16 @@
 
 namespace jostle {
 
-/// An axis-aligned box given by its corners, min <= max.
-struct Bounds {
-    Vec2 min;
-    Vec2 max;
-};
-
-/// The region a box of half extents `half` covers moving from `centre` by `motion`.
-inline Bounds sweptBounds(Vec2 centre, Vec2 half, Vec2 motion) {
-    const Vec2 to = centre + motion;
-    return {{std::min(centre.x, to.x) - half.x, std::min(centre.y, to.y) - half.y},
-            {std::max(centre.x, to.x) + half.x, std::max(centre.y, to.y) + half.y}};
-}
-
-/// True when the two boxes overlap or touch.
-inline bool touches(const Bounds& a, const Bounds& b) {
-    return a.min.x <= b.max.x && b.min.x <= a.max.x && a.min.y <= b.max.y && b.min.y <= a.max.y;
-}
-
 class BoxGrid {
 public:
     /// Replaces the grid's contents with these boxes; the i-th is named i in results.
-    void build(const std::vector<Bounds>& boxes);
+    void build(const std::vector<Box>& boxes);
 
     std::size_t size() const { return boxes_.size(); }
-    const Bounds& bounds(std::uint32_t i) const { return boxes_[i]; }
+    const Box& bounds(std::uint32_t i) const { return boxes_[i]; }
 
     /// Calls visit(i) for every box i that overlaps or touches `query`, each once.
-    template <class Visit> void query(const Bounds& query, Visit&& visit) const;
+    template <class Visit> void query(const Box& query, Visit&& visit) const;
 
     /// Calls visit(i, j) for every pair of boxes that overlap or touch, each pair once,
     /// in a fixed order (j may be smaller or larger than i).
@@ -85,7 +67,7 @@ private:
         std::uint32_t cellStart = 0; ///< dense: its cells in cellStarts_
     };
 
-    int levelOf(const Bounds& box) const;
+    int levelOf(const Box& box) const;
     /// By how many doublings to grow the first level's cells so that it holds most of
     /// the boxes (at most kMaxMerged: cells up to twice as wide as the smallest box).
     int mergedLevels(double base) const;
@@ -106,13 +88,13 @@ private:
 
     /// Calls visit(i) for every box of `level` that touches `query`, looking at the window
     /// of cells that may hold one, or at all of the level's boxes when that is fewer.
-    template <class Visit> void visitLevel(int level, const Bounds& query, Visit&& visit) const;
+    template <class Visit> void visitLevel(int level, const Box& query, Visit&& visit) const;
 
     /// Same-level pairs of a level: each box against the boxes of the cells of its window
     /// that come after its own cell (and after it in its own cell).
     template <class Visit> void pairsWithinLevel(int level, Visit&& visit) const;
 
-    std::vector<Bounds> boxes_; ///< as given: bounds(i)
+    std::vector<Box> boxes_; ///< as given: bounds(i)
     std::vector<std::uint8_t> levelOfBox_;
     std::vector<Cell> cellOfBox_;
     std::vector<std::uint32_t> byLevel_; ///< build's scratch
@@ -120,7 +102,7 @@ private:
     std::vector<std::uint32_t> sorted_;  ///< box indices by level, then cell, then index
     /// The boxes and their cells in the order of sorted_, so that the scans of a cell's
     /// boxes read memory in order.
-    std::vector<Bounds> sortedBoxes_;
+    std::vector<Box> sortedBoxes_;
     std::vector<Cell> sortedCells_;
     std::vector<std::uint32_t> cellStarts_; ///< dense levels: first box of each cell
     std::vector<HashSlot> table_;           ///< hashed levels: open addressing
@@ -132,7 +114,7 @@ private:
 // --- Template definitions ----------------------------------------------------------------
 
 template <class Visit>
-void BoxGrid::visitLevel(int levelIndex, const Bounds& query, Visit&& visit) const {
+void BoxGrid::visitLevel(int levelIndex, const Box& query, Visit&& visit) const {
     const Level& level = levels_[levelIndex];
     const Cell low = cellOf(query.min, level);
     const Cell high = cellOf(query.max, level);
@@ -183,7 +165,7 @@ template <class Visit> void BoxGrid::pairsWithinLevel(int levelIndex, Visit&& vi
     const Level& level = levels_[levelIndex];
     for (std::uint32_t k = level.begin; k < level.end; ++k) {
         const std::uint32_t i = sorted_[k];
-        const Bounds& box = sortedBoxes_[k];
+        const Box& box = sortedBoxes_[k];
         const Cell home = sortedCells_[k];
         // Touching boxes have cells at most one apart on each axis (either way: the
         // relation is symmetric), so each pair is reported by the box that comes first
@@ -200,7 +182,7 @@ template <class Visit> void BoxGrid::pairsWithinLevel(int levelIndex, Visit&& vi
     }
 }
 
-template <class Visit> void BoxGrid::query(const Bounds& query, Visit&& visit) const {
+template <class Visit> void BoxGrid::query(const Box& query, Visit&& visit) const {
     for (std::uint64_t used = usedLevels_; used != 0; used &= used - 1)
         visitLevel(__builtin_ctzll(used), query, visit);
 }

@@ -19,13 +19,13 @@ void WorldState::refreshRestingGrid() {
         return;
     restingDirty = false;
     restingSlots.clear();
-    std::vector<Bounds>& bounds = boundsScratch;
+    std::vector<Box>& bounds = boundsScratch;
     bounds.clear();
     for (BodyId id : order) {
         const Body& body = slots[id.index];
         if (isResting(body)) {
             restingSlots.push_back(id.index);
-            bounds.push_back(body.bounds());
+            bounds.push_back(body.box());
         }
     }
     restingGrid.build(bounds);
@@ -34,7 +34,7 @@ void WorldState::refreshRestingGrid() {
 namespace {
 
 /// The box a body may sweep during the step: grown by its motion along each axis.
-Bounds reach(const Body& body, float dt) {
+Box reach(const Body& body, float dt) {
     const Vec2 motion{std::abs(body.velocity.x) * dt, std::abs(body.velocity.y) * dt};
     return {body.position - body.half - motion, body.position + body.half + motion};
 }
@@ -79,7 +79,7 @@ private:
     void buildMovingGrid() {
         w_.movingSlots.clear();
         w_.movingDynamic.clear();
-        std::vector<Bounds>& bounds_ = w_.boundsScratch;
+        std::vector<Box>& bounds_ = w_.boundsScratch;
         bounds_.clear();
         for (BodyId id : w_.order) {
             const Body& body = w_.slots[id.index];

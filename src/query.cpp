@@ -1,13 +1,13 @@
 // Queries: what is at a point, in a box, on a ray, in the way of a moving box.
 //
-// The geometry is in query_geometry.hpp. This file finds the candidates and applies the
+// The geometry is in geometry.hpp. This file finds the candidates and applies the
 // filters. Static and sleeping bodies come from the world's resting grid, which is exact
 // whenever it is not marked dirty: they do not move, and whatever changes one of them
 // marks it. Awake bodies move every step without telling anyone, so every query tests
 // each of them; a world's awake bodies are usually few next to its level.
 #include "jostle/query.hpp"
 
-#include "query_geometry.hpp"
+#include "geometry.hpp"
 #include "world_access.hpp"
 
 #include <algorithm>
@@ -85,7 +85,7 @@ public:
     }
 
     /// Calls visit(slot) for each body of the resting grid that touches `region`.
-    template <class Visit> void inGrid(const Bounds& region, Visit&& visit) const {
+    template <class Visit> void inGrid(const Box& region, Visit&& visit) const {
         if (gridUsable_)
             w_.restingGrid.query(region, [&](std::uint32_t i) { visit(w_.restingSlots[i]); });
     }
@@ -140,8 +140,8 @@ void walkPath(const Candidates& candidates, Vec2 from, Vec2 delta, Vec2 half, Vi
     for (int piece = 1; piece <= pieces; ++piece) {
         const float end = piece == pieces ? 1.0f : float(piece) / float(pieces);
         const Vec2 b = piece == pieces ? to : from + delta * end;
-        const Bounds region{Vec2{std::min(a.x, b.x), std::min(a.y, b.y)} - grow,
-                            Vec2{std::max(a.x, b.x), std::max(a.y, b.y)} + grow};
+        const Box region{Vec2{std::min(a.x, b.x), std::min(a.y, b.y)} - grow,
+                         Vec2{std::max(a.x, b.x), std::max(a.y, b.y)} + grow};
         candidates.inGrid(region, visit);
         if (stop(end))
             return;
@@ -183,12 +183,12 @@ void checkTranslation(const char* function, Vec2 centre, Vec2 translation) {
 /// Fills `out` with the bodies that pass the filter and for which inside(body) holds,
 /// among those touching `region`, in creation order.
 template <class Inside>
-void collect(const WorldState& w, const Bounds& region, const QueryFilter& filter, Inside&& inside,
+void collect(const WorldState& w, const Box& region, const QueryFilter& filter, Inside&& inside,
              std::vector<BodyId>& out) {
     out.clear();
     const Candidates candidates(w);
     auto consider = [&](std::uint32_t slot) {
-        if (inside(w.slots[slot].bounds()) && passes(w, slot, filter))
+        if (inside(w.slots[slot].box()) && passes(w, slot, filter))
             out.push_back(w.idOf(slot));
     };
     candidates.inGrid(region, consider);
@@ -198,16 +198,11 @@ void collect(const WorldState& w, const Bounds& region, const QueryFilter& filte
     });
 }
 
-void overlapping(const WorldState& w, Bounds box, const QueryFilter& filter,
+void overlapping(const WorldState& w, Box box, const QueryFilter& filter,
                  std::vector<BodyId>& out) {
     // Sharing area: touching edge to edge is not overlapping.
     collect(
-        w, box, filter,
-        [&](const Bounds& body) {
-            return body.min.x < box.max.x && box.min.x < body.max.x && body.min.y < box.max.y &&
-                   box.min.y < body.max.y;
-        },
-        out);
+        w, box, filter, [&](const Box& body) { return overlaps(body, box); }, out);
 }
 
 // --- Rays --------------------------------------------------------------------------------
@@ -215,35 +210,34 @@ void overlapping(const WorldState& w, Bounds box, const QueryFilter& filter,
 struct RayFound {
     std::uint32_t slot;
     std::uint32_t rank;
-    RayContact contact;
+    Hit contact;
 };
 
 bool before(const RayFound& p, const RayFound& q) {
-    return p.contact.fraction < q.contact.fraction ||
-           (p.contact.fraction == q.contact.fraction && p.rank < q.rank);
+    return p.contact.time < q.contact.time || (p.contact.time == q.contact.time && p.rank < q.rank);
 }
 
-/// The ray against one body, by the rules of rayCast.
-std::optional<RayContact> rayAgainstBody(const Body& body, Vec2 from, Vec2 delta) {
-    std::optional<RayContact> contact = rayAgainstBox(from, delta, body.bounds());
-    // A one-way platform: only through its blocking face, from outside.
-    if (contact && body.isOneWay() && (contact->axis < 0 || contact->normal != body.oneWay))
+/// The ray against one body, by the rules of rayCast: a one-way platform only through its
+/// blocking face, from outside.
+std::optional<Hit> rayAgainstBody(const Body& body, Vec2 from, Vec2 delta) {
+    std::optional<Hit> contact = castRay(from, delta, body.box());
+    if (contact && !body.blocks(contact->normal, contact->axis >= 0, 0.0f))
         return std::nullopt;
     return contact;
 }
 
 RayHit toRayHit(const WorldState& w, const RayFound& found, Vec2 from, Vec2 delta) {
-    const RayContact& contact = found.contact;
-    Vec2 point = from + delta * contact.fraction;
-    if (contact.axis >= 0 && contact.fraction > 0.0f) {
+    const Hit& contact = found.contact;
+    Vec2 point = from + delta * contact.time;
+    if (contact.axis >= 0 && contact.time > 0.0f) {
         // Exactly on the face, whatever the rounding of the fraction.
-        const Bounds box = w.slots[found.slot].bounds();
+        const Box box = w.slots[found.slot].box();
         if (contact.axis == 0)
             point.x = contact.normal.x < 0.0f ? box.min.x : box.max.x;
         else
             point.y = contact.normal.y < 0.0f ? box.min.y : box.max.y;
     }
-    return {w.idOf(found.slot), point, contact.normal, contact.fraction};
+    return {w.idOf(found.slot), point, contact.normal, contact.time};
 }
 
 void checkRay(const WorldState& w, const char* function, Vec2 from, Vec2 to,
@@ -261,7 +255,7 @@ void checkRay(const WorldState& w, const char* function, Vec2 from, Vec2 to,
 struct Met {
     std::uint32_t slot;
     std::uint32_t rank;
-    CastContact contact;
+    Hit contact;
 };
 
 /// What stops a moving box first: the time, and every body met then, in creation order.
@@ -273,8 +267,8 @@ struct FirstStop {
 
 /// Sweeps the box along `motion`, by the rules of boxCast; sensors are left out when
 /// `sensorsStop` is false, whatever the filter says.
-void firstStop(const WorldState& w, const Candidates& candidates, const Box& box, Vec2 motion,
-               const QueryFilter& filter, bool sensorsStop, FirstStop& stop) {
+void firstStop(const WorldState& w, const Candidates& candidates, Vec2 centre, Vec2 half,
+               Vec2 motion, const QueryFilter& filter, bool sensorsStop, FirstStop& stop) {
     stop.time = 2.0f;
     stop.met.clear();
     const float slop = w.def.physical.slop;
@@ -282,14 +276,14 @@ void firstStop(const WorldState& w, const Candidates& candidates, const Box& box
         const Body& body = w.slots[slot];
         if (!passes(w, slot, filter) || (body.sensor && !sensorsStop))
             return;
-        const Vec2 skin{contactSkin(slop, box.half.x, body.half.x),
-                        contactSkin(slop, box.half.y, body.half.y)};
-        const std::optional<CastContact> contact = castBoxAgainst(box, motion, body.box(), skin);
+        const Vec2 skin{contactSkin(slop, half.x, body.half.x),
+                        contactSkin(slop, half.y, body.half.y)};
+        const std::optional<Hit> contact =
+            castBox(centre - body.position, half + body.half, motion, skin);
         if (!contact || contact->time > stop.time)
             return;
-        // A one-way platform stops only what meets its blocking face; castBoxAgainst has
-        // made sure the box was on that side at the start.
-        if (body.isOneWay() && contact->normal != body.oneWay)
+        // castBox finds only what the box runs into from outside.
+        if (!body.blocks(contact->normal, true, 0.0f))
             return;
         if (contact->time < stop.time) {
             stop.time = contact->time;
@@ -298,7 +292,7 @@ void firstStop(const WorldState& w, const Candidates& candidates, const Box& box
         stop.met.push_back({slot, candidates.rank(slot), *contact});
     };
     candidates.outsideGrid(consider);
-    walkPath(candidates, box.centre, motion, box.half, consider,
+    walkPath(candidates, centre, motion, half, consider,
              [&](float end) { return stop.time < end; });
     if (stop.met.empty())
         return;
@@ -308,17 +302,17 @@ void firstStop(const WorldState& w, const Candidates& candidates, const Box& box
     stop.met.erase(std::unique(stop.met.begin(), stop.met.end(),
                                [](const Met& p, const Met& q) { return p.slot == q.slot; }),
                    stop.met.end());
-    stop.centre = box.centre + motion * stop.time;
+    stop.centre = centre + motion * stop.time;
     // Exactly touching along the axis they came into contact on, whatever the rounding.
     for (const Met& m : stop.met) {
-        const int axis = m.contact.touchAxis;
+        const int axis = m.contact.axis;
         if (axis < 0)
             continue;
         const Body& body = w.slots[m.slot];
         if (axis == 0)
-            stop.centre.x = body.position.x - std::copysign(box.half.x + body.half.x, motion.x);
+            stop.centre.x = body.position.x - std::copysign(half.x + body.half.x, motion.x);
         else
-            stop.centre.y = body.position.y - std::copysign(box.half.y + body.half.y, motion.y);
+            stop.centre.y = body.position.y - std::copysign(half.y + body.half.y, motion.y);
     }
 }
 
@@ -332,13 +326,9 @@ void queryPoint(const World& world, Vec2 point, const QueryFilter& filter,
     requireFinite("queryPoint", "point", point);
     checkFilter(w, filter, "queryPoint");
     // On the edge is on the box.
+    const Box at{point, point};
     collect(
-        w, Bounds{point, point}, filter,
-        [&](const Bounds& body) {
-            return body.min.x <= point.x && point.x <= body.max.x && body.min.y <= point.y &&
-                   point.y <= body.max.y;
-        },
-        out);
+        w, at, filter, [&](const Box& body) { return touches(body, at); }, out);
 }
 
 std::vector<BodyId> queryPoint(const World& world, Vec2 point, const QueryFilter& filter) {
@@ -388,7 +378,7 @@ std::optional<RayHit> rayCast(const World& world, Vec2 from, Vec2 to, const Quer
     auto consider = [&](std::uint32_t slot) {
         if (!passes(w, slot, filter))
             return;
-        if (std::optional<RayContact> contact = rayAgainstBody(w.slots[slot], from, delta)) {
+        if (std::optional<Hit> contact = rayAgainstBody(w.slots[slot], from, delta)) {
             const RayFound found{slot, candidates.rank(slot), *contact};
             if (!best || before(found, *best))
                 best = found;
@@ -398,7 +388,7 @@ std::optional<RayHit> rayCast(const World& world, Vec2 from, Vec2 to, const Quer
     // Once a hit lies before the end of a piece, no later piece holds an earlier one (a
     // hit at the same fraction may still be there: it might be of an older body).
     walkPath(candidates, from, delta, Vec2{}, consider,
-             [&](float end) { return best && best->contact.fraction < end; });
+             [&](float end) { return best && best->contact.time < end; });
     if (!best)
         return std::nullopt;
     return toRayHit(w, *best, from, delta);
@@ -415,7 +405,7 @@ void rayCastAll(const World& world, Vec2 from, Vec2 to, const QueryFilter& filte
     auto consider = [&](std::uint32_t slot) {
         if (!passes(w, slot, filter))
             return;
-        if (std::optional<RayContact> contact = rayAgainstBody(w.slots[slot], from, delta))
+        if (std::optional<Hit> contact = rayAgainstBody(w.slots[slot], from, delta))
             found.push_back({slot, candidates.rank(slot), *contact});
     };
     candidates.outsideGrid(consider);
@@ -445,7 +435,7 @@ std::optional<BoxCastHit> boxCast(const World& world, Vec2 centre, Vec2 half, Ve
     checkFilter(w, filter, "boxCast");
     const Candidates candidates(w);
     FirstStop stop;
-    firstStop(w, candidates, {centre, half}, translation, filter, true, stop);
+    firstStop(w, candidates, centre, half, translation, filter, true, stop);
     if (stop.met.empty())
         return std::nullopt;
     const Met& first = stop.met.front();
@@ -465,7 +455,7 @@ MoveResult moveAndSlide(const World& world, Vec2 centre, Vec2 half, Vec2 transla
     // Every stop drops the part of what is left along the normal of each body met, and a
     // normal is along an axis the box is moving along: after two stops nothing is left.
     while (left.x != 0.0f || left.y != 0.0f) {
-        firstStop(w, candidates, {result.centre, half}, left, filter, false, stop);
+        firstStop(w, candidates, result.centre, half, left, filter, false, stop);
         if (stop.met.empty()) {
             result.centre += left;
             break;

@@ -3,8 +3,8 @@
 
 #include "box_grid.hpp"
 #include "broadphase.hpp"
-#include "collide.hpp"
 #include "events.hpp"
+#include "geometry.hpp"
 #include "jostle/world.hpp"
 #include "physical/contact_cache.hpp"
 #include "physical/scratch.hpp"
@@ -70,8 +70,8 @@ struct alignas(64) Body {
     bool blocks(Vec2 normal, bool fromOutside, float othersDropTime) const {
         return !isOneWay() || (normal == oneWay && fromOutside && othersDropTime <= 0.0f);
     }
-    Box box() const { return {position, half}; }
-    Bounds bounds() const { return {position - half, position + half}; }
+    /// Its box, by corners.
+    Box box() const { return boxAround(position, half); }
 };
 
 static_assert(offsetof(Body, asleep) < 64, "the hot part of Body fits one cache line");
@@ -109,7 +109,7 @@ struct WorldState {
     /// Buffers of the physical step and of the broadphase, kept from step to step.
     PhysicalScratch physical;
     std::vector<BodyPair> pairs;
-    std::vector<Bounds> boundsScratch;
+    std::vector<Box> boundsScratch;
 
     /// Creation rank of each slot's body (its place in `order`), refreshed by
     /// refreshRanks(); pairs are ordered by it.
@@ -158,7 +158,7 @@ struct WorldState {
     /// Wakes the island of a sleeping body (nothing if it is awake).
     void wakeIsland(std::uint32_t slot);
     /// Wakes every sleeping body touching `bounds`.
-    void wakeTouching(const Bounds& bounds);
+    void wakeTouching(const Box& bounds);
     /// A body is about to change (or go): it and whatever sleeps against it wake, and the
     /// resting grid is rebuilt if it is part of it.
     void disturb(std::uint32_t slot);

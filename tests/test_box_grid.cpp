@@ -17,10 +17,10 @@ namespace {
 
 using Pair = std::pair<std::uint32_t, std::uint32_t>;
 
-std::vector<Bounds> randomBoxes(unsigned seed, int count, float spread, Vec2 origin) {
+std::vector<Box> randomBoxes(unsigned seed, int count, float spread, Vec2 origin) {
     std::mt19937 rng(seed);
     std::uniform_real_distribution<float> unit(0.0f, 1.0f);
-    std::vector<Bounds> boxes;
+    std::vector<Box> boxes;
     for (int i = 0; i < count; ++i) {
         // Sizes spread evenly over four orders of magnitude: 1 to 10,000 units.
         const float hw = 0.5f * std::pow(10.0f, 4.0f * unit(rng));
@@ -31,8 +31,8 @@ std::vector<Bounds> randomBoxes(unsigned seed, int count, float spread, Vec2 ori
     }
     // Some boxes exactly touching others, edge to edge and corner to corner.
     for (int i = 0; i + 1 < count; i += 9) {
-        Bounds& b = boxes[std::size_t(i) + 1];
-        const Bounds& a = boxes[std::size_t(i)];
+        Box& b = boxes[std::size_t(i) + 1];
+        const Box& a = boxes[std::size_t(i)];
         const float w = b.max.x - b.min.x;
         b.min.x = a.max.x;
         b.max.x = a.max.x + w;
@@ -40,7 +40,7 @@ std::vector<Bounds> randomBoxes(unsigned seed, int count, float spread, Vec2 ori
     return boxes;
 }
 
-std::set<Pair> bruteForcePairs(const std::vector<Bounds>& boxes) {
+std::set<Pair> bruteForcePairs(const std::vector<Box>& boxes) {
     std::set<Pair> pairs;
     for (std::uint32_t i = 0; i < boxes.size(); ++i)
         for (std::uint32_t j = i + 1; j < boxes.size(); ++j)
@@ -54,7 +54,7 @@ class BoxGridProperty : public ::testing::TestWithParam<unsigned> {};
 TEST_P(BoxGridProperty, PairsEqualBruteForce) {
     const unsigned seed = GetParam();
     const Vec2 origin = seed % 2 ? Vec2{1e6f, -3e6f} : Vec2{0, 0};
-    const std::vector<Bounds> boxes = randomBoxes(seed, 600, 60000.0f, origin);
+    const std::vector<Box> boxes = randomBoxes(seed, 600, 60000.0f, origin);
     BoxGrid grid;
     grid.build(boxes);
     std::set<Pair> found;
@@ -71,11 +71,11 @@ TEST_P(BoxGridProperty, PairsEqualBruteForce) {
 
 TEST_P(BoxGridProperty, QueriesEqualBruteForce) {
     const unsigned seed = GetParam();
-    const std::vector<Bounds> boxes = randomBoxes(seed, 400, 30000.0f, {0, 0});
+    const std::vector<Box> boxes = randomBoxes(seed, 400, 30000.0f, {0, 0});
     BoxGrid grid;
     grid.build(boxes);
-    const std::vector<Bounds> queries = randomBoxes(seed + 1000, 50, 30000.0f, {0, 0});
-    for (const Bounds& q : queries) {
+    const std::vector<Box> queries = randomBoxes(seed + 1000, 50, 30000.0f, {0, 0});
+    for (const Box& q : queries) {
         std::vector<std::uint32_t> found;
         grid.query(q, [&](std::uint32_t i) { found.push_back(i); });
         std::vector<std::uint32_t> expected;
@@ -90,7 +90,7 @@ TEST_P(BoxGridProperty, QueriesEqualBruteForce) {
 INSTANTIATE_TEST_SUITE_P(RandomWorlds, BoxGridProperty, ::testing::Range(1u, 13u));
 
 TEST(BoxGrid, SameInputSameOrder) {
-    const std::vector<Bounds> boxes = randomBoxes(7, 500, 20000.0f, {0, 0});
+    const std::vector<Box> boxes = randomBoxes(7, 500, 20000.0f, {0, 0});
     auto run = [&] {
         BoxGrid grid;
         grid.build(boxes);
@@ -102,7 +102,7 @@ TEST(BoxGrid, SameInputSameOrder) {
 }
 
 TEST(BoxGrid, HugeAndTinyAndFarAway) {
-    const std::vector<Bounds> boxes = {
+    const std::vector<Box> boxes = {
         {{-1e7f, -10}, {1e7f, 10}},           // a floor 20 million units long
         {{5e6f, 10}, {5e6f + 1, 11}},         // a small box resting on it, far out
         {{1e30f, 1e30f}, {1.1e30f, 1.1e30f}}, // out at the edge of floats

@@ -650,7 +650,7 @@ TEST(TileSeams, SlidingAlongSeparateBoxesPlacedEdgeToEdgeKeepsItsSpeed) {
 // A box that lands while moving fast along a floor of separate boxes meets the next box
 // at its corner, apart on both axes; its gap to that box's side may be larger than its
 // gap to the floor. The side is a seam (another static box covers it), so the contact
-// pushes on the top instead (isSeam in src/solver_physical.cpp).
+// pushes on the top instead (isSeam in src/physical/seams.cpp).
 TEST(TileSeams, LandingOnSeparateBoxesPlacedEdgeToEdgeKeepsTheSpeedAlongIt) {
     expectSlidingNeverCatches(kPixels, boxFloor, 8, /*landing=*/true);
 }
@@ -677,7 +677,7 @@ TEST(TileSeams, FallingAlongAWallOfSeparateBoxesNeverCatches) {
 
 // In metres far from the origin: the edges of boxes placed edge to edge differ by a
 // float's rounding of their coordinates (1.2e-4 near 1234), more than 1e-4 × a tile of
-// 0.7. isSeam (src/solver_physical.cpp) allows a few float steps at the face as well.
+// 0.7. isSeam (src/physical/seams.cpp) allows a few float steps at the face as well.
 TEST(TileSeams, LandingOnSeparateBoxesInMetresFarOutKeepsTheSpeedAlongIt) {
     expectSlidingNeverCatches(kMetresFarOut, boxFloor, 8, /*landing=*/true);
 }

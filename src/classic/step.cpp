@@ -98,21 +98,21 @@ private:
         // for the ccd option's sweeps where they were); dynamic bodies where they start
         // the step, which is where the later ones still are when an earlier one meets
         // them.
-        std::vector<Bounds> kinematic, dynamic;
+        std::vector<Box> kinematic, dynamic;
         kinematicSlots_.clear();
         for (std::uint32_t s : statics_) {
             const Body& k = w_.slots[s];
             if (k.type == BodyType::Kinematic) {
                 kinematicSlots_.push_back(s);
                 const Vec2 back = k.velocity * dt_;
-                kinematic.push_back(sweptBounds(k.position, k.half, -back));
+                kinematic.push_back(sweptBox(k.position, k.half, -back));
             }
         }
         kinematicGrid_.build(kinematic);
         dynamicIndex_.assign(w_.slots.size(), 0);
         for (std::uint32_t i = 0; i < dynamics_.size(); ++i) {
             dynamicIndex_[dynamics_[i]] = i;
-            dynamic.push_back(w_.slots[dynamics_[i]].bounds());
+            dynamic.push_back(w_.slots[dynamics_[i]].box());
         }
         w_.movingGrid.build(dynamic);
         w_.movingSlots = dynamics_;
@@ -128,17 +128,17 @@ private:
 
     /// The region in which a body's candidates are gathered: its box and half its size
     /// again around it, room for the small pushes of most collisions.
-    static Bounds regionAround(const Body& body) {
+    static Box regionAround(const Body& body) {
         return {body.position - body.half * 2.0f, body.position + body.half * 2.0f};
     }
 
-    static bool contains(const Bounds& outer, const Bounds& inner) {
+    static bool contains(const Box& outer, const Box& inner) {
         return outer.min.x <= inner.min.x && outer.min.y <= inner.min.y &&
                inner.max.x <= outer.max.x && inner.max.y <= outer.max.y;
     }
 
     /// Static and kinematic bodies touching `region`, ranked after `after`, by rank.
-    void gatherStatics(const Bounds& region, std::int64_t after) {
+    void gatherStatics(const Box& region, std::int64_t after) {
         candidates_.clear();
         w_.restingGrid.query(region, [&](std::uint32_t k) {
             const std::uint32_t s = w_.restingSlots[k];
@@ -155,7 +155,7 @@ private:
     }
 
     /// Dynamic bodies touching `region` that come after position `after` in dynamics_.
-    void gatherDynamics(const Bounds& region, std::int64_t after) {
+    void gatherDynamics(const Box& region, std::int64_t after) {
         candidates_.clear();
         w_.movingGrid.query(region, [&](std::uint32_t k) {
             if (std::int64_t(k) > after)
@@ -168,14 +168,14 @@ private:
 
     Outcome resolveAgainstStatics(std::uint32_t a) {
         return resolveInOrder(
-            a, -1, [&](const Bounds& region, std::int64_t after) { gatherStatics(region, after); },
+            a, -1, [&](const Box& region, std::int64_t after) { gatherStatics(region, after); },
             [&](std::uint32_t s) { return std::int64_t(w_.rank[s]); });
     }
 
     Outcome resolveAgainstLaterDynamics(std::uint32_t a, std::size_t index) {
         return resolveInOrder(
             a, std::int64_t(index),
-            [&](const Bounds& region, std::int64_t after) { gatherDynamics(region, after); },
+            [&](const Box& region, std::int64_t after) { gatherDynamics(region, after); },
             [&](std::uint32_t b) { return std::int64_t(dynamicIndex_[b]); });
     }
 
@@ -188,7 +188,7 @@ private:
                            PlaceOf&& placeOf) {
         for (;;) {
             refreshGrids();
-            const Bounds region = regionAround(w_.slots[a]);
+            const Box region = regionAround(w_.slots[a]);
             gather(region, after);
             bool left = false;
             for (std::uint32_t b : candidates_) { // checkCollision gathers nothing
@@ -196,7 +196,7 @@ private:
                 after = placeOf(b);
                 if (checkCollision(a, b) == Outcome::Destroyed)
                     return Outcome::Destroyed;
-                if (!contains(region, w_.slots[a].bounds())) {
+                if (!contains(region, w_.slots[a].box())) {
                     left = true;
                     break;
                 }
@@ -250,7 +250,7 @@ private:
     std::optional<std::pair<Hit, std::uint32_t>> firstHit(std::uint32_t a, Vec2 motion,
                                                           float remaining) {
         const Body& body = w_.slots[a];
-        const Bounds swept = sweptBounds(body.position, body.half, motion);
+        const Box swept = sweptBox(body.position, body.half, motion);
         // The kinematic grid holds each kinematic body's sweep over the step: whatever
         // could cross the body's path is found.
         gatherStatics(swept, -1);
@@ -261,9 +261,11 @@ private:
             // an earlier hit is still in them.
             if (!w_.isLive(s) || obstacle.sensor || body.sensor || !canCollide(body, obstacle))
                 continue;
+            // The obstacle where it was at the start of what is left of the step.
             const Vec2 obstacleMotion = obstacle.velocity * (dt_ * remaining);
-            const Box from{obstacle.position - obstacleMotion, obstacle.half};
-            const std::optional<Hit> hit = sweepBox(body.box(), motion - obstacleMotion, from, {});
+            const Vec2 from = obstacle.position - obstacleMotion;
+            const std::optional<Hit> hit = sweepBox(body.position - from, body.half + obstacle.half,
+                                                    motion - obstacleMotion, {});
             if (hit && (!first || hit->time < first->first.time))
                 first = {{*hit, s}};
         }
@@ -277,8 +279,10 @@ private:
     Outcome checkCollision(std::uint32_t ia, std::uint32_t ib) {
         if (!w_.isLive(ib) || !canCollide(w_.slots[ia], w_.slots[ib]))
             return Outcome::Kept;
+        const Body& a = w_.slots[ia];
+        const Body& b = w_.slots[ib];
         const std::optional<Vec2> separation =
-            shortestSeparation(w_.slots[ia].box(), w_.slots[ib].box());
+            shortestSeparation(a.position - b.position, a.half + b.half);
         if (!separation)
             return Outcome::Kept;
         // A sensor notes the overlap and pushes nothing.

@@ -41,7 +41,7 @@ struct FirstHit {
 std::optional<FirstHit> firstHit(const StepContext& step, std::uint32_t slot, Vec2 motion) {
     const WorldState& w = step.world;
     const Body& body = w.slots[slot];
-    const Bounds swept = sweptBounds(body.position, body.half, motion);
+    const Box swept = sweptBox(body.position, body.half, motion);
     std::optional<FirstHit> first;
     auto consider = [&](std::uint32_t other) {
         const Body& obstacle = w.slots[other];
@@ -53,7 +53,8 @@ std::optional<FirstHit> firstHit(const StepContext& step, std::uint32_t slot, Ve
         const Vec2 relative = motion - obstacle.velocity * step.dt;
         const Vec2 skin{step.skinOf(body.half.x, obstacle.half.x),
                         step.skinOf(body.half.y, obstacle.half.y)};
-        const std::optional<Hit> hit = sweepBox(body.box(), relative, obstacle.box(), skin);
+        const std::optional<Hit> hit =
+            sweepBox(body.position - obstacle.position, body.half + obstacle.half, relative, skin);
         // Only what the body runs into: a kinematic body coming at it from behind is the
         // contacts' business (they push it), not a reason to stop it.
         if (!hit || dot(motion, hit->normal) >= 0.0f)

@@ -79,11 +79,8 @@ void reportEvents(StepContext& step) {
     for (const BodyPair& pair : step.scratch.sensorPairs) {
         if (!w.isLive(pair.a) || !w.isLive(pair.b))
             continue;
-        const Bounds sensor = w.slots[pair.a].bounds();
-        const Bounds visitor = w.slots[pair.b].bounds();
         // Overlapping, not merely touching.
-        if (sensor.min.x < visitor.max.x && visitor.min.x < sensor.max.x &&
-            sensor.min.y < visitor.max.y && visitor.min.y < sensor.max.y)
+        if (overlaps(w.slots[pair.a].box(), w.slots[pair.b].box()))
             recordSensor(w, pair.a, pair.b);
     }
     reportCrushes(step);

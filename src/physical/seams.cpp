@@ -26,7 +26,7 @@ bool isSeam(const WorldState& world, const Body& wall, const Body& other, int ax
         std::max(1e-4f * std::max(wall.half[axis], other.half[axis]), 4.0f * ulpOf(face));
     // It must cover the face from the corner inward, a good part of the way.
     const float reach = 0.25f * std::min(wall.half[along], other.half[along]);
-    Bounds probe;
+    Box probe;
     probe.min[axis] = probe.max[axis] = face + side * tolerance;
     probe.min[along] = std::min(corner, corner + inward * reach);
     probe.max[along] = std::max(corner, corner + inward * reach);
@@ -35,7 +35,7 @@ bool isSeam(const WorldState& world, const Body& wall, const Body& other, int ax
         const Body& cover = world.slots[world.restingSlots[k]];
         if (covered || cover.type != BodyType::Static || &cover == &wall)
             return;
-        const Bounds coverBounds = cover.bounds();
+        const Box coverBounds = cover.box();
         // On the other side of the face, touching it...
         const float near = side > 0.0f ? coverBounds.min[axis] : coverBounds.max[axis];
         if (std::abs(near - face) > tolerance)

@@ -141,7 +141,7 @@ void WorldState::wakeIsland(std::uint32_t slot) {
     restingDirty = true;
 }
 
-void WorldState::wakeTouching(const Bounds& bounds) {
+void WorldState::wakeTouching(const Box& bounds) {
     // Nobody asleep, nobody to wake: and no need to bring the resting grid up to date,
     // which would make creating n static bodies cost n rebuilds.
     if (islands.size() == freeIslands.size())
@@ -163,7 +163,7 @@ void WorldState::disturb(std::uint32_t slot) {
     wakeIsland(slot);
     if (body.type == BodyType::Static)
         restingDirty = true;
-    wakeTouching(body.bounds());
+    wakeTouching(body.box());
 }
 
 } // namespace jostle

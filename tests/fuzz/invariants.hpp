@@ -63,7 +63,7 @@ struct Penetration {
 
 /// The penetration the physical model leaves alone between two boxes at rest, along the
 /// contact normal (contactAlongX): the slop, a fraction of the pair's smaller half extent on
-/// that axis (docs/physical-model.md, PhysicalOptions::slop); plus what collide.hpp calls
+/// that axis (docs/physical-model.md, PhysicalOptions::slop); plus what geometry.hpp calls
 /// float noise, kMinimumSkin = 1e-4 of that half extent (the solver's own sums of
 /// impulses and corrections round: a heavy pile on a light box rests a few 1e-6 of its
 /// size beyond the slop); plus the rounding of the four floats the overlap is computed
@@ -71,21 +71,21 @@ struct Penetration {
 /// origin a float cannot place a box closer).
 inline float allowedPenetration(float slop, float halfA, float halfB, float centreA,
                                 float centreB) {
-    constexpr float kFloatNoise = 1e-4f; // collide.hpp's kMinimumSkin
+    constexpr float kFloatNoise = 1e-4f; // geometry.hpp's kMinimumSkin
     const float largest = std::max({std::abs(centreA), std::abs(centreB), halfA + halfB});
     const float ulp = std::nextafter(largest, std::numeric_limits<float>::infinity()) - largest;
     return (slop + kFloatNoise) * std::min(halfA, halfB) + 4.0f * ulp;
 }
 
 /// The axis of the contact normal between two overlapping boxes, as the physical model
-/// chooses it (collide.hpp, contactAxis): overlap within the contact skin (twice the slop
+/// chooses it (geometry.hpp, contactAxis): overlap within the contact skin (twice the slop
 /// times the smaller half extent on that axis) is touching, not penetrating. Penetrating
 /// on both axes: the axis of least penetration, a tie going to y. On one axis only: the
 /// boxes are side by side along the other (a box resting across the seam of two floor
 /// boxes overlaps the next one's corner a little sideways, and rests on it along y).
 /// Touching on both: y.
 inline bool contactAlongX(float overlapX, float overlapY, float slop, Vec2 h, Vec2 k) {
-    constexpr float kMinimumSkin = 1e-4f; // collide.hpp's, of the smaller half extent
+    constexpr float kMinimumSkin = 1e-4f; // geometry.hpp's, of the smaller half extent
     const float skinX = std::max(2.0f * slop, kMinimumSkin) * std::min(h.x, k.x);
     const float skinY = std::max(2.0f * slop, kMinimumSkin) * std::min(h.y, k.y);
     const bool realX = overlapX > skinX, realY = overlapY > skinY;
