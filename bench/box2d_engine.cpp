@@ -7,11 +7,11 @@
 //   box, and stacks stand as high as in the other engines.
 // - Density is the jostle body's mass over the polygon's area, so masses agree.
 // - friction = the body's friction (Box2D mixes sqrt(a b), jostle min(a, b): equal when a
-//   pair shares one value, which the sample scenes keep to); restitution = bounce (both
+//   pair shares one value, which the shared scenes keep to); restitution = bounce (both
 //   mix with max); the restitution threshold is jostle's (2 |g| dt unless the scene sets
 //   one), not Box2D's 1 unit/s.
 // - Box2D caps a body's travel at b2_maxTranslation (2 units) per step, 120 units/s at
-//   60 Hz; the sample scenes stay below it. A scene's maxVelocity cannot be mapped.
+//   60 Hz; the shared scenes stay below it. A scene's maxVelocity cannot be mapped.
 // - 8 velocity and 3 position iterations, Box2D's recommended setting; sleeping off;
 //   continuous collision against static bodies on, as Box2D ships.
 #include "engine.hpp"

@@ -6,7 +6,7 @@
 // tilemap are busy from the first step and need little warm-up.
 #include "catalog.hpp"
 
-#include "samples/scenes.hpp"
+#include "shared/scenes.hpp"
 
 #include <charconv>
 #include <stdexcept>
@@ -25,15 +25,15 @@ Case makeCase(std::string_view family, int size, int warmup, int steps) {
     c.warmup = warmup;
     c.steps = steps;
     if (family == "pyramid")
-        c.make = [size] { return samples::pyramid(size); };
+        c.make = [size] { return shared::pyramid(size); };
     else if (family == "many_pyramids")
-        c.make = [size] { return samples::manyPyramids(size, kManyPyramidRows); };
+        c.make = [size] { return shared::manyPyramids(size, kManyPyramidRows); };
     else if (family == "rain")
-        c.make = [size] { return samples::rain(size); };
+        c.make = [size] { return shared::rain(size); };
     else if (family == "gas")
-        c.make = [size] { return samples::gas(size); };
+        c.make = [size] { return shared::gas(size); };
     else if (family == "tilemap")
-        c.make = [size] { return samples::tilemap(size); };
+        c.make = [size] { return shared::tilemap(size); };
     else
         throw std::invalid_argument("unknown scene \"" + std::string(family) + "\"");
     return c;

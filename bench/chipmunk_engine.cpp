@@ -4,7 +4,7 @@
 // Mapping, and why:
 // - Chipmunk multiplies the friction of the two shapes, and their elasticity. A shape
 //   gets the square root of the body's value, so a pair that shares one value (as the
-//   sample scenes keep to) gets that value, as in jostle and Box2D; a pair with two values
+//   shared scenes keep to) gets that value, as in jostle and Box2D; a pair with two values
 //   gets sqrt(a b), Box2D's friction rule, where jostle takes min (friction) and max
 //   (bounce).
 // - Mass is the jostle body's; the shapes carry none.

@@ -1,4 +1,4 @@
-// jostle-bench: the sample scenes in jostle, Box2D 2.4.1 and Chipmunk 7, side by side.
+// jostle-bench: the shared scenes in jostle, Box2D 2.4.1 and Chipmunk 7, side by side.
 //
 //     jostle-bench                      every scene at full size (a few minutes)
 //     jostle-bench --quick              small sizes, a smoke run
@@ -149,7 +149,7 @@ int runAll(const Options& options) {
 } // namespace
 
 int main(int argc, char** argv) {
-    CLI::App app{"jostle-bench: the sample scenes in jostle, Box2D 2.4.1 and Chipmunk 7, "
+    CLI::App app{"jostle-bench: the shared scenes in jostle, Box2D 2.4.1 and Chipmunk 7, "
                  "timed in the same run (docs/benchmarks.md)"};
     Options options;
     app.add_option("--scene", options.scenes,

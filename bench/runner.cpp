@@ -54,7 +54,7 @@ RunResult run(const Case& c, const Scene& scene, EngineKind engine, const RunLim
     }
 
     world->positions(positions);
-    result.quality = samples::measureQuality(scene, positions);
+    result.quality = shared::measureQuality(scene, positions);
     return result;
 }
 

@@ -3,7 +3,7 @@
 
 #include "catalog.hpp"
 #include "engine.hpp"
-#include "samples/quality.hpp"
+#include "shared/quality.hpp"
 
 #include <string>
 
@@ -29,7 +29,7 @@ struct RunResult {
     int measuredSteps = 0;
     double msPerStep = 0.0; ///< median of the measured steps
     double bytesPerBody = 0.0;
-    samples::Quality quality;
+    shared::Quality quality;
 };
 
 /// Builds the case's scene in `engine`, steps it `warmup` times, reads the heap, measures

@@ -1,8 +1,8 @@
-// Sample 3: a pyramid of 210 unit boxes (jostle::samples::pyramid), which the physical
+// Sample 3: a pyramid of 210 unit boxes (jostle::shared::pyramid), which the physical
 // model keeps standing; shown in pixels through the pane's view.
 #include "sample_list.hpp"
 
-#include "samples/scenes.hpp"
+#include "shared/scenes.hpp"
 
 namespace jostle::demo {
 
@@ -16,7 +16,7 @@ public:
 
     void reset() override {
         panes_.clear();
-        panes_.push_back(paneFromScene(samples::pyramid(kRows), "physical", 0.6f));
+        panes_.push_back(paneFromScene(shared::pyramid(kRows), "physical", 0.6f));
     }
 };
 

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Sets everything up, builds the benchmark (Release, with Box2D 2.4.1 and Chipmunk 7 from
-# Debian) and runs it: jostle beside both peers on every sample scene. Arguments go to
+# Debian) and runs it: jostle beside both peers on every benchmark scene. Arguments go to
 # jostle-bench (try --help, --quick, --scene pyramid_100, --markdown).
 set -euo pipefail
 cd "$(dirname "$0")/.."

@@ -14,5 +14,6 @@ demo=./build/demo/jostle-demo
 if [ -n "${DISPLAY:-}${WAYLAND_DISPLAY:-}" ] && [ -x "$demo" ] && "$demo" --probe; then
   exec "$demo" "$@"
 fi
-./build/jostle render examples/scenes/tutorial-physical.json --out build/demo.gif --steps 240 --every 3
+./build/jostle render examples/scenes/tutorial.json --solver physical --out build/demo.gif \
+  --steps 240 --every 3
 echo "demo: no display to open a window on; the tutorial's scene is drawn in build/demo.gif"

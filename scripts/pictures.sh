@@ -4,6 +4,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/setup.sh
 scripts/build.sh
-./build/jostle render examples/scenes/tutorial-physical.json --out docs/tutorial.gif --steps 240 --every 3
+./build/jostle render examples/scenes/tutorial.json --solver physical --out docs/tutorial.gif \
+  --steps 240 --every 3
 ./build/jostle render examples/scenes/pyramid.json --out docs/pyramid.png --steps 240
 echo "pictures: wrote docs/tutorial.gif and docs/pyramid.png"

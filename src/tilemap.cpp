@@ -322,8 +322,8 @@ void destroyTileMap(World& world, TileMapId id) {
     WorldAccess::state(world).tileMaps.freeMaps.push_back(id.index);
 }
 
-bool isValid(const World& world, TileMapId id) {
-    const std::vector<TileMapData>& maps = WorldAccess::state(world).tileMaps.maps;
+bool World::isValid(TileMapId id) const {
+    const std::vector<TileMapData>& maps = WorldAccess::state(*this).tileMaps.maps;
     return !id.isNull() && id.index < maps.size() && maps[id.index].alive &&
            maps[id.index].generation == id.generation;
 }

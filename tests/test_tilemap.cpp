@@ -249,20 +249,20 @@ TEST(TileMapChecks, HandlesAreChecked) {
     World world;
     World other;
     const TileMapId map = createTileMap(world, mapDef({"##"}));
-    EXPECT_TRUE(isValid(world, map));
-    EXPECT_FALSE(isValid(world, TileMapId{}));
-    EXPECT_FALSE(isValid(other, map));
+    EXPECT_TRUE(world.isValid(map));
+    EXPECT_FALSE(world.isValid(TileMapId{}));
+    EXPECT_FALSE(other.isValid(map));
     EXPECT_THROW(setTile(world, TileMapId{}, 0, 0, false), Error);
     EXPECT_THROW(setTile(other, map, 0, 0, false), Error);
     // Another world's map in the same slot is still another world's.
     const TileMapId otherMap = createTileMap(other, mapDef({"##"}));
     EXPECT_EQ(otherMap.index, map.index);
-    EXPECT_FALSE(isValid(world, otherMap));
-    EXPECT_FALSE(isValid(other, map));
+    EXPECT_FALSE(world.isValid(otherMap));
+    EXPECT_FALSE(other.isValid(map));
     EXPECT_THROW(setTile(other, map, 0, 0, false), Error);
 
     destroyTileMap(world, map);
-    EXPECT_FALSE(isValid(world, map));
+    EXPECT_FALSE(world.isValid(map));
     EXPECT_EQ(world.bodyCount(), 0u);
     EXPECT_THROW(setTile(world, map, 0, 0, false), Error);
     EXPECT_THROW(isSolid(world, map, 0, 0), Error);
@@ -273,8 +273,8 @@ TEST(TileMapChecks, HandlesAreChecked) {
     const TileMapId again = createTileMap(world, mapDef({"#"}));
     EXPECT_EQ(again.index, map.index);
     EXPECT_NE(again, map);
-    EXPECT_FALSE(isValid(world, map));
-    EXPECT_TRUE(isValid(world, again));
+    EXPECT_FALSE(world.isValid(map));
+    EXPECT_TRUE(world.isValid(again));
 }
 
 TEST(TileMapChecks, SetTileOutsideTheMapThrowsAndChangesNothing) {

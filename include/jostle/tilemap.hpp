@@ -83,11 +83,8 @@ std::optional<FieldError> checkTileMapDef(const TileMapDef& def);
 TileMapId createTileMap(World& world, const TileMapDef& def);
 
 /// Destroys the map and all its bodies (as World::destroyBody does: what rests on them
-/// wakes up and falls).
+/// wakes up and falls). World::isValid(map) is false from then on.
 void destroyTileMap(World& world, TileMapId map);
-
-/// True if `map` names a tile map of this world that has not been destroyed.
-bool isValid(const World& world, TileMapId map);
 
 /// Makes the tile at (column, row) solid or empty. Column and row must be inside the map,
 /// else jostle::Error. Only the boxes that contain the tile or would merge with it are

@@ -27,6 +27,8 @@
 
 namespace jostle {
 
+struct TileMapId; // jostle/tilemap.hpp
+
 /// How collisions are resolved (docs/physical-model.md compares the two models).
 enum class Solver : std::uint8_t {
     /// The tutorial to the letter: each dynamic body, in creation order, moves and is
@@ -181,6 +183,9 @@ public:
 
     /// True if `id` names a body of this world that has not been destroyed.
     bool isValid(BodyId id) const;
+    /// True if `id` names a tile map of this world (jostle/tilemap.hpp) that has not been
+    /// destroyed.
+    bool isValid(TileMapId id) const;
 
     /// The live bodies, in creation order. Invalidated by createBody and destroyBody.
     std::span<const BodyId> bodies() const;

@@ -41,7 +41,7 @@ bool jostle_tile_map_destroy(jostle_world* world, jostle_tile_map_id map) {
 }
 
 bool jostle_tile_map_is_valid(const jostle_world* world, jostle_tile_map_id map) {
-    return guard(__func__, false, [&] { return isValid(worldOf(world).world, toCpp(map)); });
+    return guard(__func__, false, [&] { return worldOf(world).world.isValid(toCpp(map)); });
 }
 
 bool jostle_tile_map_set_tile(jostle_world* world, jostle_tile_map_id map, int column, int row,

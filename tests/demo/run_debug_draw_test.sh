@@ -38,7 +38,7 @@ run --sample 6 --frames 52 --input "30 key-press Space"
 expect contacts 4 "crates: in the air, the player's pair with the floor has ended"
 run --sample 6 --frames 90 --input "30 key-press Space"
 expect contacts 5 "crates: landed again, the player touches the floor again"
-# Pyramid (sample 3, samples::pyramid(20)): unit boxes edge to edge, exactly. Row r (0 at
+# Pyramid (sample 3, shared::pyramid(20)): unit boxes edge to edge, exactly. Row r (0 at
 # the bottom) holds 20 - r boxes, each row-r+1 box centred over the seam of two row-r
 # boxes. Touching: 20 boxes on the ground, 2 x (19 + 18 + ... + 1) = 380 boxes on two
 # below, and (19 + 18 + ... + 1) = 190 side by side: 590.

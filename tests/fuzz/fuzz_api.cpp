@@ -187,8 +187,8 @@ std::vector<std::uint32_t> fingerprint(const World& world, const std::vector<Til
         v2(world.separation(id));
     }
     for (TileMapId map : maps) {
-        out.push_back(isValid(world, map));
-        if (!isValid(world, map))
+        out.push_back(world.isValid(map));
+        if (!world.isValid(map))
             continue;
         for (const std::string& row : tileMapDef(world, map).rows)
             for (char tile : row)
@@ -817,7 +817,7 @@ private:
                 finding("a body sleeps in the classic model");
         }
         for (const Map& m : maps_) {
-            if (!isValid(world_, m.id))
+            if (!world_.isValid(m.id))
                 finding("a live tile map became invalid");
             if (tileMapDef(world_, m.id).rows != m.rows)
                 finding("a tile map's tiles changed by themselves");
@@ -828,7 +828,7 @@ private:
             }
         }
         for (TileMapId map : deadMaps_)
-            if (isValid(world_, map))
+            if (world_.isValid(map))
                 finding("a destroyed tile map is valid");
         if (!stepCompleted)
             return;

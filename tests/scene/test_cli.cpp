@@ -219,12 +219,27 @@ TEST_F(Cli, TheTutorialExampleRuns) {
     EXPECT_THAT(r.out, HasSubstr("classic"));
 }
 
+// --solver runs a scene in the other model: one file shows both (the README's picture is
+// tutorial.json in the physical model).
+TEST_F(Cli, SolverChoosesTheModelInsteadOfTheScenes) {
+    const std::string scene = quote(write("floor.json", kFloorScene));
+    const Result classic = run("run " + scene + " --steps 8 --trace -");
+    const Result asClassic = run("run " + scene + " --steps 8 --trace - --solver classic");
+    const Result asPhysical = run("run " + scene + " --steps 8 --trace - --solver physical");
+    ASSERT_EQ(asPhysical.status, 0) << asPhysical.err;
+    EXPECT_EQ(asClassic.out, classic.out); // the scene's own model, named
+    EXPECT_NE(asPhysical.out, classic.out);
+
+    const Result summary = run("run " + scene + " --steps 1 --solver physical");
+    EXPECT_THAT(summary.out, HasSubstr("solver     physical"));
+}
+
 // Determinism as a user sees it: two processes, the same scene, the same trace, byte for
 // byte (every float printed to read back exactly: FloatsArePrintedToReadBackExactly).
 TEST_F(Cli, TheTraceIsTheSameRunAfterRun) {
-    for (const char* scene : {"/tutorial-physical.json", "/pyramid.json"}) {
-        const std::string command =
-            "run " + quote(std::string(JOSTLE_SCENES_DIR) + scene) + " --steps 600 --trace -";
+    for (const std::string scene : {"tutorial.json", "pyramid.json"}) {
+        const std::string command = "run " + quote(JOSTLE_SCENES_DIR "/" + scene) +
+                                    " --steps 600 --trace - --solver physical";
         const Result first = run(command);
         const Result second = run(command);
         ASSERT_EQ(first.status, 0) << first.err;
@@ -300,6 +315,7 @@ TEST_F(Cli, BadOptions) {
              "run " + scene,                                    // steps is required
              std::string("run --steps 1"),                      // so is the scene
              "run " + scene + " --steps 1 --colour",            // no such option
+             "run " + scene + " --steps 1 --solver newton",     // no such model
              std::string(""),                                   // no command
              std::string("fly"),                                // no such command
          }) {
@@ -321,6 +337,7 @@ TEST_F(Cli, Help) {
     EXPECT_THAT(sub.out, HasSubstr("--steps"));
     EXPECT_THAT(sub.out, HasSubstr("--trace"));
     EXPECT_THAT(sub.out, HasSubstr("--every"));
+    EXPECT_THAT(sub.out, HasSubstr("--solver"));
 }
 
 } // namespace

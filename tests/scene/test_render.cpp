@@ -190,6 +190,7 @@ TEST_F(Render, BadInputExitsWith2AndNamesTheProblem) {
         {scene + out + " --height -5", "--height: must be >= 1"},
         {scene + out + " --width 100000", "--width: must be <= 4096, got 100000"},
         {scene + out + " --every 0", "--every: must be >= 1, got 0"},
+        {scene + out + " --solver newton", "--solver: newton not in {classic,physical}"},
         {scene + " --out " + path("x.bmp"), "unknown image type"},
         {scene + " --out " + path("no/such/dir/x.png"), "cannot write"},
         {scene + " --out " + path("no/such/dir/x.gif"), "cannot write"},

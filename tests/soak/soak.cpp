@@ -33,7 +33,7 @@
 #include "jostle/query.hpp"
 #include "jostle/tilemap.hpp"
 #include "jostle/world.hpp"
-#include "samples/random.hpp"
+#include "shared/random.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -155,7 +155,7 @@ public:
 
 private:
     int minutes_;
-    samples::Random random_;
+    shared::Random random_;
     World world_{WorldDef{.gravity = {0, 800}}};
     TileMapId level_;
     std::vector<BodyId> lifts_;

@@ -1,12 +1,13 @@
 // The `jostle` program: runs scene files from the command line (docs/scene-format.md).
 //
-//     jostle run SCENE --steps N [--trace FILE|-] [--every K]
+//     jostle run SCENE --steps N [--trace FILE|-] [--every K] [--solver MODEL]
 //     jostle render SCENE --out FILE.gif|FILE.png [--steps N] [--width W] [--height H]
-//                   [--every K]
+//                   [--every K] [--solver MODEL]
 //
 // Exit status: 0 when all went well; 2 for bad input (options, scene file, a value the
 // world refuses); 1 when the output cannot be written or something unexpected fails.
 #include "errors.hpp"
+#include "load_scene.hpp"
 #include "render.hpp"
 #include "summary.hpp"
 #include "trace.hpp"
@@ -38,6 +39,7 @@ struct RunOptions {
     std::int64_t steps = 0;
     std::string trace; ///< empty: no trace; "-": stdout
     std::int64_t every = 1;
+    std::string solver; ///< --solver: "classic" or "physical"; empty: the scene's own
 };
 
 /// Accepts whole numbers from minimum to maximum, and says so in a sentence when it
@@ -64,6 +66,16 @@ CLI::Validator inRange(std::int64_t minimum, std::int64_t maximum) {
 
 CLI::Validator atLeast(std::int64_t minimum) {
     return inRange(minimum, std::numeric_limits<std::int64_t>::max());
+}
+
+/// --solver, the same for run and render: the model to run the scene in, instead of the
+/// one its file names (so one scene file shows both).
+void addSolverOption(CLI::App& command, std::string& solver) {
+    const std::vector<std::string> names{jostle::toString(jostle::Solver::Classic),
+                                         jostle::toString(jostle::Solver::Physical)};
+    command.add_option("--solver", solver, "Run the scene in this model instead of its own")
+        ->type_name("MODEL")
+        ->check(CLI::IsMember(names));
 }
 
 /// Where the trace goes: stdout, a file of ours, or nowhere.
@@ -98,7 +110,7 @@ private:
 };
 
 int run(const RunOptions& options) {
-    const jostle::Scene scene = jostle::loadScene(options.scene);
+    const jostle::Scene scene = jostle::cli::loadScene(options.scene, options.solver);
     jostle::World world(scene.world);
     jostle::addTileMaps(world, scene); // the level first, then what moves in it
     const std::vector<jostle::BodyId> ids = jostle::addBodies(world, scene);
@@ -159,6 +171,7 @@ int main(int argc, char** argv) {
         ->type_name("K")
         ->check(atLeast(1))
         ->needs(traceOption);
+    addSolverOption(*runCommand, options.solver);
 
     jostle::cli::RenderOptions renderOptions;
     CLI::App* renderCommand = app.add_subcommand(
@@ -189,6 +202,7 @@ int main(int argc, char** argv) {
         ->type_name("K")
         ->capture_default_str()
         ->check(atLeast(1));
+    addSolverOption(*renderCommand, renderOptions.solver);
 
     try {
         app.parse(argc, argv);

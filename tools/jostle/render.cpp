@@ -6,6 +6,7 @@
 #include "canvas.hpp"
 #include "errors.hpp"
 #include "image_files.hpp"
+#include "load_scene.hpp"
 
 #include "jostle/scene.hpp"
 
@@ -151,7 +152,7 @@ int render(const RenderOptions& options) {
         return kBadInput;
     }
 
-    const Scene scene = loadScene(options.scene);
+    const Scene scene = loadScene(options.scene, options.solver);
     World world(scene.world);
     addTileMaps(world, scene);
     addBodies(world, scene);

@@ -20,6 +20,7 @@ struct RenderOptions {
     std::int64_t width = 0; ///< 0: from the height and the scene's shape
     std::int64_t height = 0;
     std::int64_t every = 2; ///< GIF only: a frame every K steps
+    std::string solver;     ///< --solver: "classic" or "physical"; empty: the scene's own
 };
 
 /// Runs the command; returns the exit status (errors.hpp), having printed any error.

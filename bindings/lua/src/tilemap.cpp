@@ -19,7 +19,7 @@ TileMapHandle& checkMap(lua_State* L, int index, const char* where) {
               typeName(L, index));
     if (!map->world->data)
         raise(L, where, "the map's world was destroyed");
-    if (!isValid(map->world->data->world, map->id))
+    if (!map->world->data->world.isValid(map->id))
         raise(L, where, "the map was destroyed");
     return *map;
 }
@@ -304,7 +304,7 @@ int mapIsDestroyed(lua_State* L) {
     if (!map)
         raise(L, "TileMap:isDestroyed", "expected a TileMap as self (call it with a colon), got %s",
               typeName(L, 1));
-    lua_pushboolean(L, !map->world->data || !isValid(map->world->data->world, map->id));
+    lua_pushboolean(L, !map->world->data || !map->world->data->world.isValid(map->id));
     return 1;
 }
 
@@ -319,7 +319,7 @@ int mapGetWorld(lua_State* L) {
 
 int mapToString(lua_State* L) {
     const auto* map = static_cast<const TileMapHandle*>(lua_touserdata(L, 1));
-    const bool live = map->world->data && isValid(map->world->data->world, map->id);
+    const bool live = map->world->data && map->world->data->world.isValid(map->id);
     char text[64];
     std::snprintf(text, sizeof text, "jostle.TileMap %u#%u%s", map->id.index, map->id.generation,
                   live ? "" : " (destroyed)");
@@ -343,7 +343,7 @@ constexpr luaL_Reg kWorldMapMethods[] = {
 
 void pushTileMap(lua_State* L, int env, WorldHandle* world, TileMapId id) {
     pushHandle<TileMapHandle>(L, env, kSlotMaps, 'm', kTileMapType, world, id,
-                              isValid(world->data->world, id));
+                              world->data->world.isValid(id));
 }
 
 void registerTileMapMethods(lua_State* L, int worldMethods) {

@@ -1,4 +1,4 @@
-// samples/random.hpp: the random numbers of the sample scenes, the same on every platform.
+// shared/random.hpp: the random numbers of the shared scenes, the same on every platform.
 //
 // std::mt19937's output is fixed by the standard, but the distributions of <random> are
 // not (libstdc++ and libc++ turn the same bits into different floats), so the scenes map
@@ -8,7 +8,7 @@
 #include <cstdint>
 #include <random>
 
-namespace jostle::samples {
+namespace jostle::shared {
 
 class Random {
 public:
@@ -34,4 +34,4 @@ private:
     std::mt19937 engine_;
 };
 
-} // namespace jostle::samples
+} // namespace jostle::shared

@@ -1,9 +1,9 @@
-// samples/scenes.hpp: scenes defined once in code, for the benchmarks, the tests and
-// the demo (library jostle::samples).
+// shared/scenes.hpp: scenes defined once in code, for the benchmarks, the tests and
+// the demo (library jostle::shared).
 //
-//     #include "samples/scenes.hpp"
+//     #include "shared/scenes.hpp"
 //
-//     jostle::Scene scene = jostle::samples::pyramid(20);
+//     jostle::Scene scene = jostle::shared::pyramid(20);
 //     jostle::World world(scene.world);
 //     jostle::addBodies(world, scene);
 //
@@ -25,7 +25,7 @@
 
 #include "jostle/scene.hpp"
 
-namespace jostle::samples {
+namespace jostle::shared {
 
 /// Gravity of every scene that falls, downward (y grows downward).
 inline constexpr float kGravity = 10.0f;
@@ -59,4 +59,4 @@ Scene gas(int count);
 /// 8,000 tiles. actors >= 0.
 Scene tilemap(int actors);
 
-} // namespace jostle::samples
+} // namespace jostle::shared

@@ -1,4 +1,4 @@
-// samples/quality.hpp: how well an engine kept a scene, from the bodies' final centres.
+// shared/quality.hpp: how well an engine kept a scene, from the bodies' final centres.
 //
 // One function for every engine, fed with each engine's final positions and the scene's
 // own sizes, so the figures compare.
@@ -9,7 +9,7 @@
 #include <optional>
 #include <span>
 
-namespace jostle::samples {
+namespace jostle::shared {
 
 struct Quality {
     /// How far the top box of a pyramid moved from where it started (the largest such
@@ -45,4 +45,4 @@ float maxPenetration(const Scene& scene, std::span<const Vec2> positions);
 /// All three figures for `positions` (one per scene body, scene order).
 Quality measureQuality(const Scene& scene, std::span<const Vec2> positions);
 
-} // namespace jostle::samples
+} // namespace jostle::shared

@@ -8,7 +8,7 @@
 #include <string_view>
 #include <vector>
 
-namespace jostle::samples {
+namespace jostle::shared {
 
 bool isTopBody(const SceneBody& body) {
     const std::string_view id = body.id;
@@ -113,4 +113,4 @@ Quality measureQuality(const Scene& scene, std::span<const Vec2> positions) {
     return quality;
 }
 
-} // namespace jostle::samples
+} // namespace jostle::shared

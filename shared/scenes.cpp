@@ -1,14 +1,14 @@
-// The sample scenes (scenes.hpp says what each is and the conventions they share).
-#include "samples/scenes.hpp"
+// The shared scenes (scenes.hpp says what each is and the conventions they share).
+#include "shared/scenes.hpp"
 
-#include "samples/random.hpp"
+#include "shared/random.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
 
-namespace jostle::samples {
+namespace jostle::shared {
 namespace {
 
 constexpr float kUnitHalf = 0.5f;   ///< half extent of the common box
@@ -17,7 +17,7 @@ constexpr float kDt = 1.0f / 60.0f; ///< every scene is meant to run at 60 Hz
 
 void requirePositive(int value, const char* what) {
     if (value < 1)
-        throw Error(std::string("samples: ") + what + ": must be >= 1, got " +
+        throw Error(std::string("shared scenes: ") + what + ": must be >= 1, got " +
                     std::to_string(value));
 }
 
@@ -178,7 +178,7 @@ Scene gas(int count) {
 
 Scene tilemap(int actors) {
     if (actors < 0)
-        throw Error("samples: tilemap actors: must be >= 0, got " + std::to_string(actors));
+        throw Error("shared scenes: tilemap actors: must be >= 0, got " + std::to_string(actors));
     constexpr int kRows = 40;
     constexpr int kFloorRow = kRows - 1;
     constexpr int kPlatformPitch = 6; // rows from one platform layer to the next
@@ -243,8 +243,8 @@ Scene tilemap(int actors) {
                 ++placed;
             }
     if (placed < actors)
-        throw Error("samples: tilemap: no room for " + std::to_string(actors) + " actors");
+        throw Error("shared scenes: tilemap: no room for " + std::to_string(actors) + " actors");
     return scene;
 }
 
-} // namespace jostle::samples
+} // namespace jostle::shared

@@ -1,11 +1,11 @@
-// The sample scenes (samples/scenes.hpp), the ones the benchmark times, run in the
-// physical model and judged by the benchmark's own quality figures (samples/quality.hpp):
+// The shared scenes (shared/scenes.hpp), the ones the benchmark times, run in the
+// physical model and judged by the benchmark's own quality figures (shared/quality.hpp):
 // what the benchmark reports beside its times is held to bounds here, at smaller sizes.
 //
 // The bounds come from the physical model's settings: resting contact may overlap by up to
 // twice the slop, 0.01 × the smaller half extent of the pair (docs/physical-model.md).
-#include "samples/quality.hpp"
-#include "samples/scenes.hpp"
+#include "shared/quality.hpp"
+#include "shared/scenes.hpp"
 
 #include "jostle/world.hpp"
 
@@ -21,7 +21,7 @@ constexpr float kSlopFraction = 0.01f; // PhysicalOptions::slop's default
 
 struct Outcome {
     std::vector<Vec2> positions;
-    samples::Quality quality;
+    shared::Quality quality;
 };
 
 Outcome simulate(Scene scene, int steps, bool sleeping) {
@@ -33,15 +33,15 @@ Outcome simulate(Scene scene, int steps, bool sleeping) {
     Outcome run;
     for (BodyId id : ids)
         run.positions.push_back(world.position(id));
-    run.quality = samples::measureQuality(scene, run.positions);
+    run.quality = shared::measureQuality(scene, run.positions);
     return run;
 }
 
-class SampleScenes : public ::testing::TestWithParam<bool> {};
+class SharedScenes : public ::testing::TestWithParam<bool> {};
 
-TEST_P(SampleScenes, APyramidStandsForTenSeconds) {
+TEST_P(SharedScenes, APyramidStandsForTenSeconds) {
     const int rows = 20;
-    const Outcome run = simulate(samples::pyramid(rows), 600, GetParam());
+    const Outcome run = simulate(shared::pyramid(rows), 600, GetParam());
     // Unit boxes (half extent 0.5): each of the rows may sit up to twice the slop deep in
     // the one below.
     const float restingOverlap = 2.0f * kSlopFraction * 0.5f;
@@ -51,8 +51,8 @@ TEST_P(SampleScenes, APyramidStandsForTenSeconds) {
     EXPECT_EQ(run.quality.escaped, 0);
 }
 
-TEST_P(SampleScenes, ManyPyramidsStand) {
-    const Outcome run = simulate(samples::manyPyramids(10, 10), 600, GetParam());
+TEST_P(SharedScenes, ManyPyramidsStand) {
+    const Outcome run = simulate(shared::manyPyramids(10, 10), 600, GetParam());
     const float restingOverlap = 2.0f * kSlopFraction * 0.5f;
     ASSERT_TRUE(run.quality.topDrift);
     EXPECT_LE(*run.quality.topDrift, 10.0f * restingOverlap);
@@ -60,30 +60,30 @@ TEST_P(SampleScenes, ManyPyramidsStand) {
     EXPECT_EQ(run.quality.escaped, 0);
 }
 
-TEST_P(SampleScenes, RainSettlesIntoAPileWithoutDeepOverlaps) {
-    // Landed by 2 s (samples/scenes.hpp); 4 s to settle.
-    const Outcome run = simulate(samples::rain(2000), 240, GetParam());
+TEST_P(SharedScenes, RainSettlesIntoAPileWithoutDeepOverlaps) {
+    // Landed by 2 s (shared/scenes.hpp); 4 s to settle.
+    const Outcome run = simulate(shared::rain(2000), 240, GetParam());
     // The largest half extent is 2.
     EXPECT_LE(run.quality.maxPenetration, 2.0f * kSlopFraction * 2.0f + 1e-5f);
     EXPECT_EQ(run.quality.escaped, 0);
 }
 
-TEST_P(SampleScenes, GasStaysInItsBox) {
-    const Outcome run = simulate(samples::gas(2000), 600, GetParam());
+TEST_P(SharedScenes, GasStaysInItsBox) {
+    const Outcome run = simulate(shared::gas(2000), 600, GetParam());
     EXPECT_EQ(run.quality.escaped, 0);
 }
 
-TEST_P(SampleScenes, TilemapActorsStayInTheLevel) {
-    const Outcome run = simulate(samples::tilemap(1000), 600, GetParam());
+TEST_P(SharedScenes, TilemapActorsStayInTheLevel) {
+    const Outcome run = simulate(shared::tilemap(1000), 600, GetParam());
     EXPECT_EQ(run.quality.escaped, 0);
 }
 
-INSTANTIATE_TEST_SUITE_P(SleepingOffAndOn, SampleScenes, ::testing::Bool());
+INSTANTIATE_TEST_SUITE_P(SleepingOffAndOn, SharedScenes, ::testing::Bool());
 
 // Elastic boxes in a closed box: collisions may lose energy (several at once are solved
 // approximately), but nothing may create it, position correction included.
-TEST(SampleScenesEnergy, GasNeverGainsEnergy) {
-    Scene scene = samples::gas(2000);
+TEST(SharedScenesEnergy, GasNeverGainsEnergy) {
+    Scene scene = shared::gas(2000);
     World world(scene.world);
     const std::vector<BodyId> ids = addBodies(world, scene);
     auto energy = [&] {
@@ -104,9 +104,9 @@ TEST(SampleScenesEnergy, GasNeverGainsEnergy) {
     }
 }
 
-TEST(SampleScenesDeterminism, RainTwiceIsTheSameBitForBit) {
-    const Outcome first = simulate(samples::rain(1000), 120, true);
-    const Outcome second = simulate(samples::rain(1000), 120, true);
+TEST(SharedScenesDeterminism, RainTwiceIsTheSameBitForBit) {
+    const Outcome first = simulate(shared::rain(1000), 120, true);
+    const Outcome second = simulate(shared::rain(1000), 120, true);
     ASSERT_EQ(first.positions.size(), second.positions.size());
     EXPECT_EQ(std::memcmp(first.positions.data(), second.positions.data(),
                           first.positions.size() * sizeof(Vec2)),
