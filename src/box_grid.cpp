@@ -65,8 +65,8 @@ void BoxGrid::run(int levelIndex, std::int64_t x, std::int64_t y, std::uint32_t&
         if (cx < 0 || cy < 0 || cx >= level.width || cy >= level.height)
             return;
         const std::size_t cell = level.cellStart + std::size_t(cy * level.width + cx);
-        first = cellStarts_[cell];
-        last = cellStarts_[cell + 1];
+        first = cells_.begin(cell);
+        last = cells_.end(cell);
         return;
     }
     const Cell cell{std::int32_t(x), std::int32_t(y)};
@@ -111,7 +111,7 @@ void BoxGrid::build(const std::vector<Box>& boxes) {
     for (Level& level : levels_)
         level = Level{};
     sorted_.resize(n);
-    cellStarts_.clear();
+    cells_.reset(0);
     if (n == 0)
         return;
 
@@ -135,77 +135,77 @@ void BoxGrid::build(const std::vector<Box>& boxes) {
     levels_[kLevels - 1].size = std::numeric_limits<double>::infinity();
     levels_[kLevels - 1].inverse = 0.0;
 
-    // Each box's level and cell; then the boxes grouped by level (a counting sort keeps
-    // insertion order within a level).
+    // Each box's level and cell, and the cells each level's boxes span.
     levelOfBox_.resize(n);
     cellOfBox_.resize(n);
-    std::uint32_t counts[kLevels + 1] = {};
+    std::uint32_t counts[kLevels] = {};
+    Cell low[kLevels], high[kLevels];
     for (std::size_t i = 0; i < n; ++i) {
         const int level = levelOf(boxes_[i]);
+        const Cell c = cellOf(boxes_[i].min, levels_[level]);
         levelOfBox_[i] = std::uint8_t(level);
-        cellOfBox_[i] = cellOf(boxes_[i].min, levels_[level]);
-        ++counts[level + 1];
-        usedLevels_ |= std::uint64_t{1} << level;
-    }
-    for (int k = 0; k < kLevels; ++k) {
-        counts[k + 1] += counts[k];
-        levels_[k].begin = counts[k];
-        levels_[k].end = counts[k + 1];
-    }
-    std::vector<std::uint32_t>& byLevel = byLevel_;
-    byLevel.resize(n);
-    for (std::uint32_t i = 0; i < n; ++i)
-        byLevel[counts[levelOfBox_[i]]++] = i;
-
-    // Within each level, by cell: a counting sort into a dense array of cells when the
-    // boxes are close together, else a sort by cell and a hash table of the runs.
-    std::size_t hashedRuns = 0;
-    for (int k = 0; k < kLevels; ++k) {
-        Level& level = levels_[k];
-        if (level.begin == level.end)
-            continue;
-        Cell low{INT32_MAX, INT32_MAX}, high{INT32_MIN, INT32_MIN};
-        for (std::uint32_t m = level.begin; m < level.end; ++m) {
-            const Cell c = cellOfBox_[byLevel[m]];
-            low = {std::min(low.x, c.x), std::min(low.y, c.y)};
-            high = {std::max(high.x, c.x), std::max(high.y, c.y)};
+        cellOfBox_[i] = c;
+        if (counts[level]++ == 0) {
+            low[level] = high[level] = c;
+            usedLevels_ |= std::uint64_t{1} << level;
         }
-        const std::int64_t width = std::int64_t(high.x) - low.x + 1;
-        const std::int64_t height = std::int64_t(high.y) - low.y + 1;
-        const std::int64_t count = level.end - level.begin;
-        if (double(width) * double(height) <= double(kDenseCellsPerBox * count + 16)) {
+        low[level] = {std::min(low[level].x, c.x), std::min(low[level].y, c.y)};
+        high[level] = {std::max(high[level].x, c.x), std::max(high[level].y, c.y)};
+    }
+
+    // The keys of the sort, level after level: a key per cell of a level whose boxes are
+    // close together (a dense array of cells), one key for all of a level too spread out
+    // for that (its cells go in a hash table below).
+    std::uint32_t keys = 0;
+    for (std::uint64_t used = usedLevels_; used != 0; used &= used - 1) {
+        const int k = __builtin_ctzll(used);
+        Level& level = levels_[k];
+        const std::int64_t width = std::int64_t(high[k].x) - low[k].x + 1;
+        const std::int64_t height = std::int64_t(high[k].y) - low[k].y + 1;
+        level.cellStart = keys;
+        if (double(width) * double(height) <= double(kDenseCellsPerBox * counts[k] + 16)) {
             level.dense = true;
-            level.low = low;
+            level.low = low[k];
             level.width = width;
             level.height = height;
-            level.cellStart = std::uint32_t(cellStarts_.size());
-            const std::size_t cells = std::size_t(width * height);
-            cellStarts_.resize(cellStarts_.size() + cells + 1, 0);
-            std::uint32_t* starts = cellStarts_.data() + level.cellStart;
-            auto cellIndex = [&](std::uint32_t i) {
-                const Cell c = cellOfBox_[i];
-                return std::size_t((std::int64_t(c.y) - low.y) * width + (c.x - low.x));
-            };
-            for (std::uint32_t m = level.begin; m < level.end; ++m)
-                ++starts[cellIndex(byLevel[m]) + 1];
-            starts[0] = level.begin;
-            for (std::size_t c = 0; c < cells; ++c)
-                starts[c + 1] += starts[c];
-            // Fill through a moving copy of the starts, keeping insertion order in a cell.
-            std::vector<std::uint32_t>& fill = fill_;
-            fill.assign(starts, starts + cells);
-            for (std::uint32_t m = level.begin; m < level.end; ++m)
-                sorted_[fill[cellIndex(byLevel[m])]++] = byLevel[m];
+            keys += std::uint32_t(width * height);
         } else {
-            std::copy(byLevel.begin() + level.begin, byLevel.begin() + level.end,
-                      sorted_.begin() + level.begin);
-            std::sort(sorted_.begin() + level.begin, sorted_.begin() + level.end,
-                      [&](std::uint32_t p, std::uint32_t q) {
-                          const Cell a = cellOfBox_[p], b = cellOfBox_[q];
-                          return a.y != b.y ? a.y < b.y : a.x != b.x ? a.x < b.x : p < q;
-                      });
-            hashedRuns += std::size_t(count);
+            keys += 1;
         }
+    }
+    auto keyOf = [&](std::uint32_t i) {
+        const Level& level = levels_[levelOfBox_[i]];
+        if (!level.dense)
+            return std::size_t(level.cellStart);
+        const Cell c = cellOfBox_[i];
+        return level.cellStart +
+               std::size_t((std::int64_t(c.y) - level.low.y) * level.width + (c.x - level.low.x));
+    };
+    // One counting sort by key: by level, then (dense levels) by cell, each cell's boxes
+    // in insertion order.
+    cells_.reset(keys);
+    for (std::uint32_t i = 0; i < n; ++i)
+        cells_.count(keyOf(i));
+    cells_.endCounting();
+    for (std::uint32_t i = 0; i < n; ++i)
+        sorted_[cells_.place(keyOf(i))] = i;
+    cells_.endPlacing();
+
+    // A hashed level's boxes by cell, then insertion order.
+    std::size_t hashedRuns = 0;
+    for (std::uint64_t used = usedLevels_; used != 0; used &= used - 1) {
+        const int k = __builtin_ctzll(used);
+        Level& level = levels_[k];
+        level.begin = cells_.begin(level.cellStart);
+        level.end = level.begin + counts[k];
+        if (level.dense)
+            continue;
+        std::sort(sorted_.begin() + level.begin, sorted_.begin() + level.end,
+                  [&](std::uint32_t p, std::uint32_t q) {
+                      const Cell a = cellOfBox_[p], b = cellOfBox_[q];
+                      return a.y != b.y ? a.y < b.y : a.x != b.x ? a.x < b.x : p < q;
+                  });
+        hashedRuns += level.end - level.begin;
     }
 
     sortedBoxes_.resize(n);

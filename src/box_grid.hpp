@@ -18,6 +18,7 @@
 // order.
 #pragma once
 
+#include "counting_sort.hpp"
 #include "geometry.hpp"
 
 #include <algorithm>
@@ -64,7 +65,9 @@ private:
         Cell low{0, 0};         ///< dense: the first cell of the array
         std::int64_t width = 0; ///< dense: cells per row
         std::int64_t height = 0;
-        std::uint32_t cellStart = 0; ///< dense: its cells in cellStarts_
+        /// Its first key in cells_: a dense level has a key per cell, in row order; a
+        /// hashed one a single key for all its boxes.
+        std::uint32_t cellStart = 0;
     };
 
     int levelOf(const Box& box) const;
@@ -97,15 +100,15 @@ private:
     std::vector<Box> boxes_; ///< as given: bounds(i)
     std::vector<std::uint8_t> levelOfBox_;
     std::vector<Cell> cellOfBox_;
-    std::vector<std::uint32_t> byLevel_; ///< build's scratch
-    std::vector<std::uint32_t> fill_;    ///< build's scratch
-    std::vector<std::uint32_t> sorted_;  ///< box indices by level, then cell, then index
+    std::vector<std::uint32_t> sorted_; ///< box indices by level, then cell, then index
     /// The boxes and their cells in the order of sorted_, so that the scans of a cell's
     /// boxes read memory in order.
     std::vector<Box> sortedBoxes_;
     std::vector<Cell> sortedCells_;
-    std::vector<std::uint32_t> cellStarts_; ///< dense levels: first box of each cell
-    std::vector<HashSlot> table_;           ///< hashed levels: open addressing
+    /// The run of sorted_ of each key (Level::cellStart): the boxes of a dense level's
+    /// cell, or of a hashed level.
+    Buckets cells_;
+    std::vector<HashSlot> table_; ///< hashed levels: open addressing
     int tableShift_ = 63;
     Level levels_[kLevels];
     std::uint64_t usedLevels_ = 0; ///< bit k: level k has boxes
@@ -148,8 +151,8 @@ void BoxGrid::forEachInRow(int levelIndex, std::int64_t y, std::int64_t x0, std:
         if (row < 0 || row >= level.height || from > to)
             return;
         const std::size_t cell = level.cellStart + std::size_t(row * level.width + from);
-        const std::uint32_t last = cellStarts_[cell + std::size_t(to - from) + 1];
-        for (std::uint32_t k = cellStarts_[cell]; k < last; ++k)
+        const std::uint32_t last = cells_.begin(cell + std::size_t(to - from) + 1);
+        for (std::uint32_t k = cells_.begin(cell); k < last; ++k)
             visit(k);
         return;
     }
