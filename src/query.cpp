@@ -217,13 +217,18 @@ bool before(const RayFound& p, const RayFound& q) {
     return p.contact.time < q.contact.time || (p.contact.time == q.contact.time && p.rank < q.rank);
 }
 
-/// The ray against one body, by the rules of rayCast: a one-way platform only through its
-/// blocking face, from outside.
-std::optional<Hit> rayAgainstBody(const Body& body, Vec2 from, Vec2 delta) {
-    std::optional<Hit> contact = castRay(from, delta, body.box());
-    if (contact && !body.blocks(contact->normal, contact->axis >= 0, 0.0f))
+/// The ray against the body in `slot`, by the rules of rayCast: the body passes the filter,
+/// and a one-way platform is met only through its blocking face, from outside.
+std::optional<RayFound> rayMeets(const WorldState& w, const Candidates& candidates,
+                                 std::uint32_t slot, Vec2 from, Vec2 delta,
+                                 const QueryFilter& filter) {
+    if (!passes(w, slot, filter))
         return std::nullopt;
-    return contact;
+    const Body& body = w.slots[slot];
+    const std::optional<Hit> contact = castRay(from, delta, body.box());
+    if (!contact || !body.blocks(contact->normal, contact->axis >= 0, 0.0f))
+        return std::nullopt;
+    return RayFound{slot, candidates.rank(slot), *contact};
 }
 
 RayHit toRayHit(const WorldState& w, const RayFound& found, Vec2 from, Vec2 delta) {
@@ -376,13 +381,9 @@ std::optional<RayHit> rayCast(const World& world, Vec2 from, Vec2 to, const Quer
     const Candidates candidates(w);
     std::optional<RayFound> best;
     auto consider = [&](std::uint32_t slot) {
-        if (!passes(w, slot, filter))
-            return;
-        if (std::optional<Hit> contact = rayAgainstBody(w.slots[slot], from, delta)) {
-            const RayFound found{slot, candidates.rank(slot), *contact};
-            if (!best || before(found, *best))
-                best = found;
-        }
+        const std::optional<RayFound> found = rayMeets(w, candidates, slot, from, delta, filter);
+        if (found && (!best || before(*found, *best)))
+            best = found;
     };
     candidates.outsideGrid(consider);
     // Once a hit lies before the end of a piece, no later piece holds an earlier one (a
@@ -403,10 +404,8 @@ void rayCastAll(const World& world, Vec2 from, Vec2 to, const QueryFilter& filte
     const Candidates candidates(w);
     std::vector<RayFound> found;
     auto consider = [&](std::uint32_t slot) {
-        if (!passes(w, slot, filter))
-            return;
-        if (std::optional<Hit> contact = rayAgainstBody(w.slots[slot], from, delta))
-            found.push_back({slot, candidates.rank(slot), *contact});
+        if (std::optional<RayFound> met = rayMeets(w, candidates, slot, from, delta, filter))
+            found.push_back(*met);
     };
     candidates.outsideGrid(consider);
     walkPath(candidates, from, delta, Vec2{}, consider, [](float) { return false; });
