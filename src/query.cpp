@@ -1,153 +1,18 @@
-// Queries: what is at a point, in a box, on a ray, in the way of a moving box.
-//
-// The geometry is in geometry.hpp. This file finds the candidates and applies the
-// filters. Static and sleeping bodies come from the world's resting grid, which is exact
-// whenever it is not marked dirty: they do not move, and whatever changes one of them
-// marks it. Awake bodies move every step without telling anyone, so every query tests
-// each of them; a world's awake bodies are usually few next to its level.
+// Queries: what is at a point, in a box, on a ray, in the way of a moving box. The
+// geometry is in geometry.hpp, the candidates come from query_index.hpp; this file
+// applies the filters and the rules of each query (jostle/query.hpp).
 #include "jostle/query.hpp"
 
 #include "geometry.hpp"
+#include "query_index.hpp"
 #include "world_access.hpp"
 
 #include <algorithm>
 #include <cmath>
-#include <mutex>
 
 namespace jostle {
 
 namespace {
-
-/// A long ray or cast is looked up in the grid in at most this many pieces.
-constexpr int kMaxPieces = 64;
-/// Pieces are this many typical bodies long.
-constexpr float kPieceBodies = 4.0f;
-/// The typical body size is the median of a sample of at most this many bodies.
-constexpr std::size_t kSizeSample = 63;
-
-bool orderChanged(const WorldState& w, const QueryIndex& index) {
-    return !index.built || index.bodyCount != w.order.size() ||
-           (!w.order.empty() && index.lastBody != w.order.back());
-}
-
-void rebuild(const WorldState& w, QueryIndex& index) {
-    index.rank.resize(w.slots.size());
-    index.mobile.clear();
-    for (std::uint32_t r = 0; r < w.order.size(); ++r) {
-        const std::uint32_t slot = w.order[r].index;
-        index.rank[slot] = r;
-        if (w.slots[slot].type != BodyType::Static)
-            index.mobile.push_back(slot);
-    }
-    // The median, not the mean: one floor as wide as the level must not make every
-    // piece as long as the level. A sample is enough for a length that only tunes speed.
-    index.sizes.clear();
-    const std::size_t stride = w.order.size() / kSizeSample + 1;
-    for (std::size_t r = 0; r < w.order.size(); r += stride) {
-        const Body& body = w.slots[w.order[r].index];
-        index.sizes.push_back(2.0f * std::max(body.half.x, body.half.y));
-    }
-    float typical = 1.0f;
-    if (!index.sizes.empty()) {
-        auto middle = index.sizes.begin() + std::ptrdiff_t(index.sizes.size() / 2);
-        std::nth_element(index.sizes.begin(), middle, index.sizes.end());
-        typical = *middle;
-    }
-    index.pieceLength = kPieceBodies * typical;
-    index.bodyCount = w.order.size();
-    index.lastBody = w.order.empty() ? BodyId{} : w.order.back();
-    index.built = true;
-}
-
-/// The bodies one query looks at: those of the resting grid near where it looks, and
-/// every body outside the grid.
-class Candidates {
-public:
-    explicit Candidates(const WorldState& world) : w_(world), index_(world.queries) {
-        std::lock_guard<std::mutex> lock(index_.mutex);
-        if (orderChanged(w_, index_))
-            rebuild(w_, index_);
-        // Never during a step: the step may be using the grid (a query from a callback).
-        // Outside a step, bringing it up to date is what the next step would do first.
-        // The state is not const, only the access to it (WorldAccess).
-        if (w_.restingDirty && !w_.stepping)
-            const_cast<WorldState&>(w_).refreshRestingGrid();
-        gridUsable_ = !w_.restingDirty;
-        if (!gridUsable_)
-            return;
-        listAwake();
-        // Every body is in the grid (static or asleep) or awake. If some are neither, a
-        // static body was made dynamic or kinematic since the index was built.
-        if (w_.restingSlots.size() + awake_.size() != w_.order.size()) {
-            rebuild(w_, index_);
-            listAwake();
-        }
-    }
-
-    /// Calls visit(slot) for each body of the resting grid that touches `region`.
-    template <class Visit> void inGrid(const Box& region, Visit&& visit) const {
-        if (gridUsable_)
-            w_.restingGrid.query(region, [&](std::uint32_t i) { visit(w_.restingSlots[i]); });
-    }
-
-    /// Calls visit(slot) for each body not in the resting grid: the awake ones, or every
-    /// body when the grid is out of date (during a step, after something changed).
-    template <class Visit> void outsideGrid(Visit&& visit) const {
-        if (!gridUsable_) {
-            for (BodyId id : w_.order)
-                visit(id.index);
-            return;
-        }
-        for (std::uint32_t slot : awake_)
-            visit(slot);
-    }
-
-    std::uint32_t rank(std::uint32_t slot) const { return index_.rank[slot]; }
-    float pieceLength() const { return index_.pieceLength; }
-
-private:
-    void listAwake() {
-        awake_.clear();
-        for (std::uint32_t slot : index_.mobile)
-            if (!w_.isResting(w_.slots[slot]))
-                awake_.push_back(slot);
-    }
-
-    const WorldState& w_;
-    QueryIndex& index_;
-    bool gridUsable_ = false;
-    std::vector<std::uint32_t> awake_; ///< slots, in creation order
-};
-
-/// Walks the path of a box of half extents `half` (zero: a ray) from `from` along
-/// `delta` through the resting grid, piece by piece: visit(slot) for each body near each
-/// piece (a body near two pieces is visited twice), then stop(end of the piece, as a
-/// fraction of the path); a true stop ends the walk.
-template <class Visit, class Stop>
-void walkPath(const Candidates& candidates, Vec2 from, Vec2 delta, Vec2 half, Visit&& visit,
-              Stop&& stop) {
-    const float longest = std::max(std::abs(delta.x), std::abs(delta.y));
-    const float wanted = std::ceil(longest / candidates.pieceLength());
-    const int pieces = wanted >= float(kMaxPieces) ? kMaxPieces : std::max(1, int(wanted));
-    // Each piece's box is grown by far more than the rounding of its ends and of the
-    // hit tests, so that a body touching the path is near one of the pieces it touches.
-    const Vec2 to = from + delta;
-    const float magnitude = std::max({std::abs(from.x), std::abs(from.y), std::abs(to.x),
-                                      std::abs(to.y), half.x, half.y, longest});
-    const float slack = std::ldexp(magnitude, -18);
-    const Vec2 grow{half.x + slack, half.y + slack};
-    Vec2 a = from;
-    for (int piece = 1; piece <= pieces; ++piece) {
-        const float end = piece == pieces ? 1.0f : float(piece) / float(pieces);
-        const Vec2 b = piece == pieces ? to : from + delta * end;
-        const Box region{Vec2{std::min(a.x, b.x), std::min(a.y, b.y)} - grow,
-                         Vec2{std::max(a.x, b.x), std::max(a.y, b.y)} + grow};
-        candidates.inGrid(region, visit);
-        if (stop(end))
-            return;
-        a = b;
-    }
-}
 
 bool passes(const WorldState& w, std::uint32_t slot, const QueryFilter& filter) {
     const Body& body = w.slots[slot];
@@ -297,8 +162,7 @@ void firstStop(const WorldState& w, const Candidates& candidates, Vec2 centre, V
         stop.met.push_back({slot, candidates.rank(slot), *contact});
     };
     candidates.outsideGrid(consider);
-    walkPath(candidates, centre, motion, half, consider,
-             [&](float end) { return stop.time < end; });
+    candidates.walkPath(centre, motion, half, consider, [&](float end) { return stop.time < end; });
     if (stop.met.empty())
         return;
     // A body near two pieces of the path was met twice.
@@ -388,8 +252,8 @@ std::optional<RayHit> rayCast(const World& world, Vec2 from, Vec2 to, const Quer
     candidates.outsideGrid(consider);
     // Once a hit lies before the end of a piece, no later piece holds an earlier one (a
     // hit at the same fraction may still be there: it might be of an older body).
-    walkPath(candidates, from, delta, Vec2{}, consider,
-             [&](float end) { return best && best->contact.time < end; });
+    candidates.walkPath(from, delta, Vec2{}, consider,
+                        [&](float end) { return best && best->contact.time < end; });
     if (!best)
         return std::nullopt;
     return toRayHit(w, *best, from, delta);
@@ -408,7 +272,7 @@ void rayCastAll(const World& world, Vec2 from, Vec2 to, const QueryFilter& filte
             found.push_back(*met);
     };
     candidates.outsideGrid(consider);
-    walkPath(candidates, from, delta, Vec2{}, consider, [](float) { return false; });
+    candidates.walkPath(from, delta, Vec2{}, consider, [](float) { return false; });
     // A body near two pieces of the ray was found twice, with the same fraction: the
     // copies end up side by side.
     std::sort(found.begin(), found.end(), before);

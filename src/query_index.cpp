@@ -1,0 +1,81 @@
+// The query index and the candidates of a query.
+#include "query_index.hpp"
+
+#include "world_state.hpp"
+
+namespace jostle {
+
+namespace {
+
+/// Pieces of a long ray or cast are this many typical bodies long.
+constexpr float kPieceBodies = 4.0f;
+/// The typical body size is the median of a sample of at most this many bodies.
+constexpr std::size_t kSizeSample = 63;
+
+bool orderChanged(const WorldState& w, const QueryIndex& index) {
+    return !index.built || index.bodyCount != w.order.size() ||
+           (!w.order.empty() && index.lastBody != w.order.back());
+}
+
+void rebuild(const WorldState& w, QueryIndex& index) {
+    index.rank.resize(w.slots.size());
+    index.mobile.clear();
+    for (std::uint32_t r = 0; r < w.order.size(); ++r) {
+        const std::uint32_t slot = w.order[r].index;
+        index.rank[slot] = r;
+        if (w.slots[slot].type != BodyType::Static)
+            index.mobile.push_back(slot);
+    }
+    // The median, not the mean: one floor as wide as the level must not make every
+    // piece as long as the level. A sample is enough for a length that only tunes speed.
+    index.sizes.clear();
+    const std::size_t stride = w.order.size() / kSizeSample + 1;
+    for (std::size_t r = 0; r < w.order.size(); r += stride) {
+        const Body& body = w.slots[w.order[r].index];
+        index.sizes.push_back(2.0f * std::max(body.half.x, body.half.y));
+    }
+    float typical = 1.0f;
+    if (!index.sizes.empty()) {
+        auto middle = index.sizes.begin() + std::ptrdiff_t(index.sizes.size() / 2);
+        std::nth_element(index.sizes.begin(), middle, index.sizes.end());
+        typical = *middle;
+    }
+    index.pieceLength = kPieceBodies * typical;
+    index.bodyCount = w.order.size();
+    index.lastBody = w.order.empty() ? BodyId{} : w.order.back();
+    index.built = true;
+}
+
+} // namespace
+
+Candidates::Candidates(const WorldState& world)
+    : w_(world), index_(world.queries), grid_(world.restingGrid), gridSlots_(world.restingSlots),
+      order_(world.order) {
+    std::lock_guard<std::mutex> lock(index_.mutex);
+    if (orderChanged(w_, index_))
+        rebuild(w_, index_);
+    // Never during a step: the step may be using the grid (a query from a callback).
+    // Outside a step, bringing it up to date is what the next step would do first.
+    // The state is not const, only the access to it (WorldAccess).
+    if (w_.restingDirty && !w_.stepping)
+        const_cast<WorldState&>(w_).refreshRestingGrid();
+    gridUsable_ = !w_.restingDirty;
+    if (!gridUsable_)
+        return;
+    listAwake();
+    // Every body is in the grid (static or asleep) or awake. If some are neither, a static
+    // body was made dynamic or kinematic since the index was built.
+    if (w_.restingSlots.size() + awake_.size() != w_.order.size()) {
+        rebuild(w_, index_);
+        listAwake();
+    }
+}
+
+void Candidates::listAwake() {
+    awake_.clear();
+    for (std::uint32_t slot : index_.mobile)
+        if (!w_.isResting(w_.slots[slot]))
+            awake_.push_back(slot);
+}
+
+} // namespace jostle
