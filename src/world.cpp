@@ -1,4 +1,5 @@
 // World: body storage, handles, argument checks and the step entry point.
+#include "body_properties.hpp"
 #include "world_access.hpp"
 
 #include <algorithm>
@@ -11,11 +12,6 @@
 namespace jostle {
 
 namespace {
-
-void requireUnit(const char* function, const char* what, float value) {
-    if (!(value >= 0.0f && value <= 1.0f))
-        fail(function, std::string(what) + " must be in [0, 1]");
-}
 
 /// Ends a step however it ends (a callback may throw): the world is steppable again
 /// and the slots destroyed meanwhile become reusable.
@@ -207,6 +203,16 @@ std::span<const BodyId> World::bodies() const {
 
 // --- Body getters and setters ----------------------------------------------------------
 
+namespace {
+
+/// A setter's argument under a property's rule: "setBounce: bounce must be in [0, 1]".
+void require(const char* function, const char* what, properties::Rule rule, float value) {
+    if (const char* problem = properties::problemOf(rule, value))
+        fail(function, std::string(what) + " " + problem);
+}
+
+} // namespace
+
 BodyDef World::bodyDef(BodyId id) const {
     const Body& b = lookUp(*state_, id, "bodyDef");
     BodyDef def;
@@ -238,8 +244,8 @@ BodyType World::type(BodyId id) const {
 
 void World::setType(BodyId id, BodyType type) {
     Body& b = lookUp(*state_, id, "setType");
-    if (type != BodyType::Static && type != BodyType::Kinematic && type != BodyType::Dynamic)
-        fail("setType", "type must be static, kinematic or dynamic");
+    if (const char* problem = properties::formProblem(type))
+        fail("setType", std::string("type ") + problem);
     state_->disturb(id.index); // what rested on it, where it was
     state_->restingDirty = true;
     b.type = type;
@@ -281,8 +287,8 @@ Vec2 World::halfExtents(BodyId id) const {
 
 void World::setHalfExtents(BodyId id, Vec2 halfExtents) {
     Body& b = lookUp(*state_, id, "setHalfExtents");
-    requireSize("setHalfExtents", "halfExtents.x", halfExtents.x);
-    requireSize("setHalfExtents", "halfExtents.y", halfExtents.y);
+    require("setHalfExtents", "halfExtents.x", properties::kHw.rule, halfExtents.x);
+    require("setHalfExtents", "halfExtents.y", properties::kHh.rule, halfExtents.y);
     state_->disturb(id.index); // what rested on it, as it was
     b.half = halfExtents;
     updateMass(b);
@@ -295,7 +301,7 @@ float World::bounce(BodyId id) const {
 
 void World::setBounce(BodyId id, float bounce) {
     Body& b = lookUp(*state_, id, "setBounce");
-    requireUnit("setBounce", "bounce", bounce);
+    require("setBounce", "bounce", properties::kBounce.rule, bounce);
     b.bounce = bounce;
     state_->disturb(id.index);
 }
@@ -306,7 +312,7 @@ float World::friction(BodyId id) const {
 
 void World::setFriction(BodyId id, float friction) {
     Body& b = lookUp(*state_, id, "setFriction");
-    requireUnit("setFriction", "friction", friction);
+    require("setFriction", "friction", properties::kFriction.rule, friction);
     b.friction = friction;
     state_->disturb(id.index);
 }
@@ -318,7 +324,8 @@ float World::mass(BodyId id) const {
 
 void World::setMass(BodyId id, float mass) {
     Body& b = lookUp(*state_, id, "setMass");
-    requireSize("setMass", "mass", mass);
+    // An explicit mass: a size (BodyDef::mass's 0, "from density", is setDensity's to ask).
+    require("setMass", "mass", properties::Rule::Size, mass);
     b.mass = mass;
     updateMass(b);
     state_->disturb(id.index);
@@ -326,7 +333,7 @@ void World::setMass(BodyId id, float mass) {
 
 void World::setDensity(BodyId id, float density) {
     Body& b = lookUp(*state_, id, "setDensity");
-    requireSize("setDensity", "density", density);
+    require("setDensity", "density", properties::kDensity.rule, density);
     b.mass = 0.0f;
     b.density = density;
     updateMass(b);
@@ -339,7 +346,7 @@ float World::gravityScale(BodyId id) const {
 
 void World::setGravityScale(BodyId id, float scale) {
     Body& b = lookUp(*state_, id, "setGravityScale");
-    requireFinite("setGravityScale", "scale", scale);
+    require("setGravityScale", "scale", properties::kGravityScale.rule, scale);
     b.gravityScale = scale;
     state_->disturb(id.index);
 }
@@ -350,9 +357,7 @@ float World::damping(BodyId id) const {
 
 void World::setDamping(BodyId id, float damping) {
     Body& b = lookUp(*state_, id, "setDamping");
-    requireFinite("setDamping", "damping", damping);
-    if (damping < 0.0f)
-        fail("setDamping", "damping must be >= 0");
+    require("setDamping", "damping", properties::kDamping.rule, damping);
     b.damping = damping;
     state_->disturb(id.index);
 }
