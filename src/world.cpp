@@ -136,6 +136,28 @@ bool World::isValid(BodyId id) const {
            state_->slots[id.index].generation == id.generation;
 }
 
+namespace {
+
+/// Calls f(BodyDef member, Body member) for each setting a Body keeps as its BodyDef gives
+/// it; position, velocity and size become vectors.
+template <class F> void forEachKeptSetting(F&& f) {
+    f(&BodyDef::type, &Body::type);
+    f(&BodyDef::bounce, &Body::bounce);
+    f(&BodyDef::friction, &Body::friction);
+    f(&BodyDef::mass, &Body::mass);
+    f(&BodyDef::density, &Body::density);
+    f(&BodyDef::gravityScale, &Body::gravityScale);
+    f(&BodyDef::damping, &Body::damping);
+    f(&BodyDef::bullet, &Body::bullet);
+    f(&BodyDef::oneWay, &Body::oneWay);
+    f(&BodyDef::category, &Body::category);
+    f(&BodyDef::mask, &Body::mask);
+    f(&BodyDef::sensor, &Body::sensor);
+    f(&BodyDef::userData, &Body::userData);
+}
+
+} // namespace
+
 BodyId World::createBody(const BodyDef& def) {
     if (auto problem = checkBodyDef(def))
         fail("createBody", "BodyDef." + problem->field + ": " + problem->problem);
@@ -156,23 +178,11 @@ BodyId World::createBody(const BodyDef& def) {
     body = Body{};
     body.generation = generation;
     body.alive = true;
-    body.type = def.type;
     body.position = {def.x, def.y};
     body.velocity = {def.vx, def.vy};
     body.half = {def.hw, def.hh};
-    body.bounce = def.bounce;
-    body.friction = def.friction;
-    body.mass = def.mass;
-    body.density = def.density;
-    body.gravityScale = def.gravityScale;
-    body.damping = def.damping;
-    body.userData = def.userData;
-    body.bullet = def.bullet;
-    body.oneWay = def.oneWay;
+    forEachKeptSetting([&](auto given, auto kept) { body.*kept = def.*given; });
     body.lastStepVelocity = body.velocity;
-    body.category = def.category;
-    body.mask = def.mask;
-    body.sensor = def.sensor;
     updateMass(body);
 
     if (slot < w.events.touching.size())
@@ -215,26 +225,13 @@ void require(const char* function, const char* what, properties::Rule rule, floa
 
 BodyDef World::bodyDef(BodyId id) const {
     const Body& b = lookUp(*state_, id, "bodyDef");
-    BodyDef def;
-    def.type = b.type;
-    def.x = b.position.x;
-    def.y = b.position.y;
-    def.hw = b.half.x;
-    def.hh = b.half.y;
-    def.vx = b.velocity.x;
-    def.vy = b.velocity.y;
-    def.bounce = b.bounce;
-    def.friction = b.friction;
-    def.mass = b.mass;
-    def.density = b.density;
-    def.gravityScale = b.gravityScale;
-    def.damping = b.damping;
-    def.bullet = b.bullet;
-    def.oneWay = b.oneWay;
-    def.category = b.category;
-    def.mask = b.mask;
-    def.sensor = b.sensor;
-    def.userData = b.userData;
+    BodyDef def{.x = b.position.x,
+                .y = b.position.y,
+                .hw = b.half.x,
+                .hh = b.half.y,
+                .vx = b.velocity.x,
+                .vy = b.velocity.y};
+    forEachKeptSetting([&](auto given, auto kept) { def.*given = b.*kept; });
     return def;
 }
 
