@@ -3,7 +3,7 @@
 // tile map's bodies are ordinary static bodies to everything else in the library.
 #include "tilemap.hpp"
 
-#include "range_check.hpp"
+#include "body_properties.hpp"
 #include "world_access.hpp"
 
 #include <algorithm>
@@ -201,18 +201,8 @@ void buildAll(World& world, TileMapId id) {
 // --- Definitions -------------------------------------------------------------------------
 
 std::optional<FieldError> checkTileMapDef(const TileMapDef& def) {
-    const std::pair<const char*, float> numbers[] = {
-        {"x", def.x},
-        {"y", def.y},
-        {"tile", def.tile},
-        {"friction", def.friction},
-        {"bounce", def.bounce},
-        {"oneWay", def.oneWay.x},
-        {"oneWay", def.oneWay.y},
-    };
-    for (const auto& [field, value] : numbers)
-        if (const char* problem = rangeProblem(value))
-            return FieldError{field, problem};
+    if (auto problem = properties::formProblem(def, properties::kTileMapFields))
+        return problem;
     if (!(def.tile > 0.0f))
         return FieldError{"tile", "must be > 0"};
     // Half a tile is the smallest half extent a box gets: a body's smallest size.
@@ -266,13 +256,8 @@ std::optional<FieldError> checkTileMapDef(const TileMapDef& def) {
         return FieldError{"tile", "is too small for the map's position: its boxes would be "
                                   "narrower than 2e-9 (math.hpp)"};
 
-    if (def.friction < 0.0f || def.friction > 1.0f)
-        return FieldError{"friction", "must be in [0, 1]"};
-    if (def.bounce < 0.0f || def.bounce > 1.0f)
-        return FieldError{"bounce", "must be in [0, 1]"};
-    if (!isValidOneWay(def.oneWay))
-        return FieldError{"oneWay", "must be [0, 0] or one of [1, 0], [-1, 0], [0, 1], [0, -1]"};
-    return std::nullopt;
+    // The rules the map shares with bodies (friction, bounce, oneWay).
+    return properties::ruleProblem(def, properties::kTileMapFields);
 }
 
 // --- Maps --------------------------------------------------------------------------------

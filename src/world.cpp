@@ -1,4 +1,5 @@
 // World: body storage, handles, argument checks and the step entry point.
+#include "body_properties.hpp"
 #include "world_access.hpp"
 
 #include "classic/step.hpp"
@@ -15,11 +16,6 @@
 namespace jostle {
 
 namespace {
-
-void requireUnit(const char* function, const char* what, float value) {
-    if (!(value >= 0.0f && value <= 1.0f))
-        fail(function, std::string(what) + " must be in [0, 1]");
-}
 
 /// Ends a step however it ends (a callback may throw): the world is steppable again
 /// and the slots destroyed meanwhile become reusable.
@@ -113,6 +109,28 @@ bool World::isValid(BodyId id) const {
            state_->slots[id.index].generation == id.generation;
 }
 
+namespace {
+
+/// Calls f(BodyDef member, Body member) for each setting a Body keeps as its BodyDef gives
+/// it; position, velocity and size become vectors.
+template <class F> void forEachKeptSetting(F&& f) {
+    f(&BodyDef::type, &Body::type);
+    f(&BodyDef::bounce, &Body::bounce);
+    f(&BodyDef::friction, &Body::friction);
+    f(&BodyDef::mass, &Body::mass);
+    f(&BodyDef::density, &Body::density);
+    f(&BodyDef::gravityScale, &Body::gravityScale);
+    f(&BodyDef::damping, &Body::damping);
+    f(&BodyDef::bullet, &Body::bullet);
+    f(&BodyDef::oneWay, &Body::oneWay);
+    f(&BodyDef::category, &Body::category);
+    f(&BodyDef::mask, &Body::mask);
+    f(&BodyDef::sensor, &Body::sensor);
+    f(&BodyDef::userData, &Body::userData);
+}
+
+} // namespace
+
 BodyId World::createBody(const BodyDef& def) {
     if (auto problem = checkBodyDef(def))
         fail("createBody", "BodyDef." + problem->field + ": " + problem->problem);
@@ -133,23 +151,11 @@ BodyId World::createBody(const BodyDef& def) {
     body = Body{};
     body.generation = generation;
     body.alive = true;
-    body.type = def.type;
     body.position = {def.x, def.y};
     body.velocity = {def.vx, def.vy};
     body.half = {def.hw, def.hh};
-    body.bounce = def.bounce;
-    body.friction = def.friction;
-    body.mass = def.mass;
-    body.density = def.density;
-    body.gravityScale = def.gravityScale;
-    body.damping = def.damping;
-    body.userData = def.userData;
-    body.bullet = def.bullet;
-    body.oneWay = def.oneWay;
+    forEachKeptSetting([&](auto given, auto kept) { body.*kept = def.*given; });
     body.lastStepVelocity = body.velocity;
-    body.category = def.category;
-    body.mask = def.mask;
-    body.sensor = def.sensor;
     updateMass(body);
 
     if (slot < w.events.touching.size())
@@ -180,28 +186,25 @@ std::span<const BodyId> World::bodies() const {
 
 // --- Body getters and setters ----------------------------------------------------------
 
+namespace {
+
+/// A setter's argument under a property's rule: "setBounce: bounce must be in [0, 1]".
+void require(const char* function, const char* what, properties::Rule rule, float value) {
+    if (const char* problem = properties::problemOf(rule, value))
+        fail(function, std::string(what) + " " + problem);
+}
+
+} // namespace
+
 BodyDef World::bodyDef(BodyId id) const {
     const Body& b = lookUp(*state_, id, "bodyDef");
-    BodyDef def;
-    def.type = b.type;
-    def.x = b.position.x;
-    def.y = b.position.y;
-    def.hw = b.half.x;
-    def.hh = b.half.y;
-    def.vx = b.velocity.x;
-    def.vy = b.velocity.y;
-    def.bounce = b.bounce;
-    def.friction = b.friction;
-    def.mass = b.mass;
-    def.density = b.density;
-    def.gravityScale = b.gravityScale;
-    def.damping = b.damping;
-    def.bullet = b.bullet;
-    def.oneWay = b.oneWay;
-    def.category = b.category;
-    def.mask = b.mask;
-    def.sensor = b.sensor;
-    def.userData = b.userData;
+    BodyDef def{.x = b.position.x,
+                .y = b.position.y,
+                .hw = b.half.x,
+                .hh = b.half.y,
+                .vx = b.velocity.x,
+                .vy = b.velocity.y};
+    forEachKeptSetting([&](auto given, auto kept) { def.*given = b.*kept; });
     return def;
 }
 
@@ -211,8 +214,8 @@ BodyType World::type(BodyId id) const {
 
 void World::setType(BodyId id, BodyType type) {
     Body& b = lookUp(*state_, id, "setType");
-    if (type != BodyType::Static && type != BodyType::Kinematic && type != BodyType::Dynamic)
-        fail("setType", "type must be static, kinematic or dynamic");
+    if (const char* problem = properties::formProblem(type))
+        fail("setType", std::string("type ") + problem);
     state_->disturb(id.index); // what rested on it, where it was
     state_->restingDirty = true;
     b.type = type;
@@ -254,8 +257,8 @@ Vec2 World::halfExtents(BodyId id) const {
 
 void World::setHalfExtents(BodyId id, Vec2 halfExtents) {
     Body& b = lookUp(*state_, id, "setHalfExtents");
-    requireSize("setHalfExtents", "halfExtents.x", halfExtents.x);
-    requireSize("setHalfExtents", "halfExtents.y", halfExtents.y);
+    require("setHalfExtents", "halfExtents.x", properties::kHw.rule, halfExtents.x);
+    require("setHalfExtents", "halfExtents.y", properties::kHh.rule, halfExtents.y);
     state_->disturb(id.index); // what rested on it, as it was
     b.half = halfExtents;
     updateMass(b);
@@ -268,7 +271,7 @@ float World::bounce(BodyId id) const {
 
 void World::setBounce(BodyId id, float bounce) {
     Body& b = lookUp(*state_, id, "setBounce");
-    requireUnit("setBounce", "bounce", bounce);
+    require("setBounce", "bounce", properties::kBounce.rule, bounce);
     b.bounce = bounce;
     state_->disturb(id.index);
 }
@@ -279,7 +282,7 @@ float World::friction(BodyId id) const {
 
 void World::setFriction(BodyId id, float friction) {
     Body& b = lookUp(*state_, id, "setFriction");
-    requireUnit("setFriction", "friction", friction);
+    require("setFriction", "friction", properties::kFriction.rule, friction);
     b.friction = friction;
     state_->disturb(id.index);
 }
@@ -291,7 +294,8 @@ float World::mass(BodyId id) const {
 
 void World::setMass(BodyId id, float mass) {
     Body& b = lookUp(*state_, id, "setMass");
-    requireSize("setMass", "mass", mass);
+    // An explicit mass: a size (BodyDef::mass's 0, "from density", is setDensity's to ask).
+    require("setMass", "mass", properties::Rule::Size, mass);
     b.mass = mass;
     updateMass(b);
     state_->disturb(id.index);
@@ -299,7 +303,7 @@ void World::setMass(BodyId id, float mass) {
 
 void World::setDensity(BodyId id, float density) {
     Body& b = lookUp(*state_, id, "setDensity");
-    requireSize("setDensity", "density", density);
+    require("setDensity", "density", properties::kDensity.rule, density);
     b.mass = 0.0f;
     b.density = density;
     updateMass(b);
@@ -312,7 +316,7 @@ float World::gravityScale(BodyId id) const {
 
 void World::setGravityScale(BodyId id, float scale) {
     Body& b = lookUp(*state_, id, "setGravityScale");
-    requireFinite("setGravityScale", "scale", scale);
+    require("setGravityScale", "scale", properties::kGravityScale.rule, scale);
     b.gravityScale = scale;
     state_->disturb(id.index);
 }
@@ -323,9 +327,7 @@ float World::damping(BodyId id) const {
 
 void World::setDamping(BodyId id, float damping) {
     Body& b = lookUp(*state_, id, "setDamping");
-    requireFinite("setDamping", "damping", damping);
-    if (damping < 0.0f)
-        fail("setDamping", "damping must be >= 0");
+    require("setDamping", "damping", properties::kDamping.rule, damping);
     b.damping = damping;
     state_->disturb(id.index);
 }

@@ -3,6 +3,7 @@
 // every exception into a recorded error before it can reach C code.
 #pragma once
 
+#include "body_properties.hpp"
 #include "jostle/fixed_step.hpp"
 #include "jostle/jostle.h"
 #include "jostle/query.hpp"
@@ -15,6 +16,7 @@
 #include <new>
 #include <span>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 /// A C world: the C++ world and what the C layer keeps beside it.
@@ -233,49 +235,39 @@ inline jostle_world_def toC(const WorldDef& d) {
             toC(d.physical), d.sleeping,    kCookie};
 }
 
+// Numbers, flags, bits and pointers are the same in C and C++.
+template <class T>
+concept SameInC = std::is_same_v<T, float> || std::is_same_v<T, bool> ||
+    std::is_same_v<T, std::uint32_t> || std::is_same_v<T, void*>;
+template <SameInC T> T toCpp(T value) {
+    return value;
+}
+template <SameInC T> T toC(T value) {
+    return value;
+}
+
+/// Copies each field of a definition's table (body_properties.hpp) from the C struct into
+/// the C++ definition (an enum is checked on the way), and back.
+template <class Def, class CDef, class F, std::size_t N>
+void copyFromC(const CDef& from, Def& to, const F (&fields)[N]) {
+    for (const F& field : fields)
+        field.visitWithC([&](auto member, auto cMember) { to.*member = toCpp(from.*cMember); });
+}
+template <class Def, class CDef, class F, std::size_t N>
+void copyToC(const Def& from, CDef& to, const F (&fields)[N]) {
+    for (const F& field : fields)
+        field.visitWithC([&](auto member, auto cMember) { to.*cMember = toC(from.*member); });
+}
+
 inline BodyDef toCpp(const jostle_body_def& d) {
     requireCookie(d.internal_cookie, "def", "jostle_default_body_def");
-    return {.type = toCpp(d.type),
-            .x = d.x,
-            .y = d.y,
-            .hw = d.hw,
-            .hh = d.hh,
-            .vx = d.vx,
-            .vy = d.vy,
-            .bounce = d.bounce,
-            .friction = d.friction,
-            .mass = d.mass,
-            .density = d.density,
-            .gravityScale = d.gravity_scale,
-            .damping = d.damping,
-            .bullet = d.bullet,
-            .oneWay = toCpp(d.one_way),
-            .category = d.category,
-            .mask = d.mask,
-            .sensor = d.sensor,
-            .userData = d.user_data};
+    BodyDef def;
+    copyFromC(d, def, properties::kBodyFields);
+    return def;
 }
 inline jostle_body_def toC(const BodyDef& d) {
     jostle_body_def c{};
-    c.type = toC(d.type);
-    c.x = d.x;
-    c.y = d.y;
-    c.hw = d.hw;
-    c.hh = d.hh;
-    c.vx = d.vx;
-    c.vy = d.vy;
-    c.bounce = d.bounce;
-    c.friction = d.friction;
-    c.mass = d.mass;
-    c.density = d.density;
-    c.gravity_scale = d.gravityScale;
-    c.damping = d.damping;
-    c.bullet = d.bullet;
-    c.one_way = toC(d.oneWay);
-    c.category = d.category;
-    c.mask = d.mask;
-    c.sensor = d.sensor;
-    c.user_data = d.userData;
+    copyToC(d, c, properties::kBodyFields);
     c.internal_cookie = kCookie;
     return c;
 }
@@ -300,17 +292,8 @@ inline TileMapDef toCpp(const jostle_tile_map_def& d) {
         misuse("def.rows must be >= 1, got " + std::to_string(d.rows));
     if (d.cells == nullptr)
         misuse("def.cells is NULL");
-    TileMapDef def{.x = d.x,
-                   .y = d.y,
-                   .tile = d.tile,
-                   .rows = {},
-                   .friction = d.friction,
-                   .bounce = d.bounce,
-                   .category = d.category,
-                   .mask = d.mask,
-                   .oneWay = toCpp(d.one_way),
-                   .sensor = d.sensor,
-                   .userData = d.user_data};
+    TileMapDef def;
+    copyFromC(d, def, properties::kTileMapFields);
     const auto columns = static_cast<std::size_t>(d.columns);
     def.rows.resize(static_cast<std::size_t>(d.rows), std::string(columns, '.'));
     for (std::size_t row = 0; row < def.rows.size(); ++row)

@@ -8,20 +8,8 @@ extern "C" {
 
 jostle_tile_map_def jostle_default_tile_map_def(void) {
     const TileMapDef defaults;
-    jostle_tile_map_def d{};
-    d.x = defaults.x;
-    d.y = defaults.y;
-    d.tile = defaults.tile;
-    d.columns = 0;
-    d.rows = 0;
-    d.cells = nullptr;
-    d.friction = defaults.friction;
-    d.bounce = defaults.bounce;
-    d.category = defaults.category;
-    d.mask = defaults.mask;
-    d.one_way = toC(defaults.oneWay);
-    d.sensor = defaults.sensor;
-    d.user_data = defaults.userData;
+    jostle_tile_map_def d{}; // no columns, no rows, no cells
+    copyToC(defaults, d, properties::kTileMapFields);
     d.internal_cookie = kCookie;
     return d;
 }

@@ -1,11 +1,14 @@
 // Scene files: JSON text in, a checked jostle::Scene out (docs/scene-format.md).
 //
 // Every problem becomes a SceneError that names the place ("bodies[3].hw") and the
-// rule. The value rules of bodies and worlds are not repeated here: checkBodyDef and
-// checkWorldDef are the one source of truth, and this file only adds the place. What
-// is checked here is what only a file can get wrong: syntax, types, unknown, missing
-// and duplicate fields, numbers a float cannot hold, ids.
+// rule. The fields of bodies and tile maps are read by their descriptions
+// (body_properties.hpp), and the value rules of bodies and worlds are not repeated here:
+// checkBodyDef and checkWorldDef are the one source of truth, and this file only adds the
+// place. What is checked here is what only a file can get wrong: syntax, types, unknown,
+// missing and duplicate fields, numbers a float cannot hold, ids.
 #include "jostle/scene.hpp"
+
+#include "body_properties.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -257,41 +260,57 @@ const Json::array_t& readArray(const Json& value, const std::string& place) {
     return value.get_ref<const Json::array_t&>();
 }
 
-// --- Bodies --------------------------------------------------------------------------
-
-struct FloatField {
-    const char* name;
-    float BodyDef::*member;
-};
-
-// Every number of a BodyDef, under its member's name (the contract of body.hpp).
-constexpr FloatField kFloatFields[] = {
-    {"x", &BodyDef::x},
-    {"y", &BodyDef::y},
-    {"hw", &BodyDef::hw},
-    {"hh", &BodyDef::hh},
-    {"vx", &BodyDef::vx},
-    {"vy", &BodyDef::vy},
-    {"bounce", &BodyDef::bounce},
-    {"friction", &BodyDef::friction},
-    {"mass", &BodyDef::mass},
-    {"density", &BodyDef::density},
-    {"gravityScale", &BodyDef::gravityScale},
-    {"damping", &BodyDef::damping},
-};
-
-float BodyDef::*findFloatField(const std::string& name) {
-    for (const FloatField& candidate : kFloatFields)
-        if (name == candidate.name)
-            return candidate.member;
-    return nullptr;
-}
-
 BodyType readBodyType(const Json& value, const std::string& place) {
     if (auto type = bodyTypeFromString(readString(value, place)))
         return *type;
     fail(place, R"(expected one of "static", "kinematic", "dynamic")");
 }
+
+// --- Definitions: fields by their descriptions (body_properties.hpp) ------------------
+
+// A value of each type a property has; a pointer (userData) has no form in a file.
+void readValue(const Json& value, const std::string& place, BodyType& out) {
+    out = readBodyType(value, place);
+}
+void readValue(const Json& value, const std::string& place, float& out) {
+    out = readFloat(value, place);
+}
+void readValue(const Json& value, const std::string& place, Vec2& out) {
+    out = readVec2(value, place);
+}
+void readValue(const Json& value, const std::string& place, bool& out) {
+    out = readBool(value, place);
+}
+void readValue(const Json& value, const std::string& place, std::uint32_t& out) {
+    out = readBits(value, place);
+}
+
+/// Reads the field `name` of `def`; false if `def` has no field of that name that a file
+/// can give.
+template <class Def, class F, std::size_t N>
+bool readField(Def& def, const F (&fields)[N], const std::string& name, const Json& value,
+               const std::string& place) {
+    const F* field = properties::find(fields, name);
+    auto read = [&](auto member) {
+        if constexpr (requires { readValue(value, place, def.*member); }) {
+            readValue(value, place, def.*member);
+            return true;
+        } else {
+            return false;
+        }
+    };
+    return field && std::visit(read, field->member);
+}
+
+/// Fails unless the object `value` has every field its definition requires, in table order.
+template <class F, std::size_t N>
+void requireFields(const Json& value, const std::string& place, const F (&fields)[N]) {
+    for (const F& field : fields)
+        if (field.property->required && !value.contains(field.property->name))
+            fail(place, std::string("missing field \"") + field.property->name + "\"");
+}
+
+// --- Bodies --------------------------------------------------------------------------
 
 SceneBody readBody(const Json& value, const std::string& place, std::size_t index) {
     const Json::object_t& fields = readObject(value, place);
@@ -304,29 +323,11 @@ SceneBody readBody(const Json& value, const std::string& place, std::size_t inde
             body.id = readString(fieldValue, at);
             if (body.id.empty())
                 fail(at, "must not be empty");
-        } else if (name == "type") {
-            body.def.type = readBodyType(fieldValue, at);
-        } else if (float BodyDef::*member = findFloatField(name)) {
-            body.def.*member = readFloat(fieldValue, at);
-        } else if (name == "bullet") {
-            body.def.bullet = readBool(fieldValue, at);
-        } else if (name == "sensor") {
-            body.def.sensor = readBool(fieldValue, at);
-        } else if (name == "oneWay") {
-            body.def.oneWay = readVec2(fieldValue, at);
-        } else if (name == "category") {
-            body.def.category = readBits(fieldValue, at);
-        } else if (name == "mask") {
-            body.def.mask = readBits(fieldValue, at);
-        } else {
+        } else if (!readField(body.def, properties::kBodyFields, name, fieldValue, at)) {
             fail(place, "unknown field " + quoteName(name));
         }
     }
-
-    // A box has no sensible default size.
-    for (const char* required : {"hw", "hh"})
-        if (!value.contains(required))
-            fail(place, std::string("missing field \"") + required + "\"");
+    requireFields(value, place, properties::kBodyFields); // hw, hh: a box has no default size
 
     // In a file, 0 is not a way to ask for the density mass (BodyDef's convention):
     // leaving "mass" out is. And a body cannot have both an explicit mass and a density.
@@ -366,37 +367,19 @@ TileMapDef readTileMap(const Json& value, const std::string& place) {
     TileMapDef def;
     for (const auto& [name, fieldValue] : readObject(value, place)) {
         const std::string at = field(place, name);
-        if (name == "x") {
-            def.x = readFloat(fieldValue, at);
-        } else if (name == "y") {
-            def.y = readFloat(fieldValue, at);
-        } else if (name == "tile") {
-            def.tile = readFloat(fieldValue, at);
-        } else if (name == "rows") {
+        if (name == "rows") {
             const Json::array_t& rows = readArray(fieldValue, at);
             def.rows.reserve(rows.size());
             for (std::size_t i = 0; i < rows.size(); ++i)
                 def.rows.push_back(readString(rows[i], element(at, i)));
-        } else if (name == "friction") {
-            def.friction = readFloat(fieldValue, at);
-        } else if (name == "bounce") {
-            def.bounce = readFloat(fieldValue, at);
-        } else if (name == "category") {
-            def.category = readBits(fieldValue, at);
-        } else if (name == "mask") {
-            def.mask = readBits(fieldValue, at);
-        } else if (name == "oneWay") {
-            def.oneWay = readVec2(fieldValue, at);
-        } else if (name == "sensor") {
-            def.sensor = readBool(fieldValue, at);
-        } else {
+        } else if (!readField(def, properties::kTileMapFields, name, fieldValue, at)) {
             fail(place, "unknown field " + quoteName(name));
         }
     }
     // A map has no sensible default tile size, nor default tiles.
-    for (const char* required : {"tile", "rows"})
-        if (!value.contains(required))
-            fail(place, std::string("missing field \"") + required + "\"");
+    requireFields(value, place, properties::kTileMapFields);
+    if (!value.contains("rows"))
+        fail(place, R"(missing field "rows")");
     if (auto problem = checkTileMapDef(def))
         fail(field(place, problem->field), problem->problem);
     return def;

@@ -1,5 +1,7 @@
-// Scene files: every field read as written, every default, and every error with its
-// place, as docs/scene-format.md promises.
+// Scene files: every field read as written (every property of src/body_properties.hpp
+// among them), every default, and every error with its place, as docs/scene-format.md
+// promises.
+#include "../property_samples.hpp"
 #include "jostle/scene.hpp"
 
 #include <gmock/gmock.h>
@@ -15,10 +17,13 @@
 #include <random>
 #include <string>
 #include <unistd.h>
+#include <variant>
 
 namespace jostle {
 namespace {
 
+using test_support::sampleOf;
+using test_support::valueOf;
 using ::testing::HasSubstr;
 using ::testing::StartsWith;
 
@@ -497,6 +502,70 @@ TEST(SceneTileMaps, SeveralMapsInFileOrder) {
     EXPECT_EQ(scene.tileMaps[1].tile, 4.0f);
     EXPECT_EQ(scene.tileMaps[1].rows, (std::vector<std::string>{".#"}));
     EXPECT_TRUE(parseScene(withTop(R"("tilemaps": [])")).tileMaps.empty());
+}
+
+// --- Every property of src/body_properties.hpp that a file can hold ---------------------
+
+/// `value` as JSON; null for a pointer, which a file cannot hold.
+std::string jsonOf(const properties::Value& value) {
+    auto json = [](auto v) -> std::string {
+        using T = decltype(v);
+        char text[64];
+        if constexpr (std::is_same_v<T, float>) {
+            std::snprintf(text, sizeof text, "%.9g", static_cast<double>(v));
+            return text;
+        } else if constexpr (std::is_same_v<T, Vec2>) {
+            std::snprintf(text, sizeof text, "[%.9g, %.9g]", static_cast<double>(v.x),
+                          static_cast<double>(v.y));
+            return text;
+        } else if constexpr (std::is_same_v<T, bool>) {
+            return v ? "true" : "false";
+        } else if constexpr (std::is_same_v<T, std::uint32_t>) {
+            return std::to_string(v);
+        } else if constexpr (std::is_same_v<T, BodyType>) {
+            return std::string("\"") + toString(v) + "\"";
+        } else {
+            return "null";
+        }
+    };
+    return std::visit(json, value);
+}
+
+TEST(SceneProperties, EveryBodyPropertyAFileCanHoldIsRead) {
+    for (const auto& field : properties::kBodyFields) {
+        const std::string name = field.property->name;
+        const properties::Value sample = sampleOf(*field.property);
+        const std::string given = "\"" + name + "\": " + jsonOf(sample);
+        // hw and hh are required: the sample replaces one of them.
+        std::string body = "{" + given;
+        for (const char* size : {"hw", "hh"})
+            if (name != size)
+                body += std::string(", \"") + size + "\": 1";
+        const std::string scene = withBodies(body + "}");
+        if (std::holds_alternative<void*>(sample)) {
+            EXPECT_EQ(errorOf(scene), "bodies[0]: unknown field \"" + name + "\"");
+            continue;
+        }
+        const Scene parsed = parseScene(scene);
+        EXPECT_TRUE(valueOf(parsed.bodies.at(0).def, field) == sample) << name;
+    }
+}
+
+TEST(SceneProperties, EveryTileMapPropertyAFileCanHoldIsRead) {
+    for (const auto& field : properties::kTileMapFields) {
+        const std::string name = field.property->name;
+        const properties::Value sample = sampleOf(*field.property);
+        std::string map = "{\"" + name + "\": " + jsonOf(sample) + R"(, "rows": ["#"])";
+        if (name != "tile")
+            map += R"(, "tile": 1)";
+        const std::string scene = withTop(R"("tilemap": )" + map + "}");
+        if (std::holds_alternative<void*>(sample)) {
+            EXPECT_EQ(errorOf(scene), "tilemap: unknown field \"" + name + "\"");
+            continue;
+        }
+        const Scene parsed = parseScene(scene);
+        EXPECT_TRUE(valueOf(parsed.tileMaps.at(0), field) == sample) << name;
+    }
 }
 
 TEST(SceneErrors, TileMaps) {

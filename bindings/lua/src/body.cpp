@@ -1,8 +1,15 @@
-// world:newBody and the Body methods.
+// world:newBody and the Body methods. newBody's fields and getDef follow the descriptions
+// of src/body_properties.hpp; the settings World gets and sets whole are a table (Setting).
 #include "binding.hpp"
 
+#include "body_properties.hpp"
+
+#include <array>
 #include <cmath>
 #include <cstdio>
+#include <iterator>
+#include <type_traits>
+#include <variant>
 
 namespace jostle::lua {
 
@@ -61,45 +68,94 @@ int pushFloat(lua_State* L, float value) {
     return 1;
 }
 
+// --- Definition tables: fields by their descriptions (src/body_properties.hpp) ---------
+
+/// Reads the field `name` of each type a property has into `out`: true if it is given.
+bool readField(const Fields& fields, const char* name, BodyType& out) {
+    int type = 0;
+    if (!fields.option(name, type, kTypeNames))
+        return false;
+    out = bodyTypeOf(type);
+    return true;
+}
+bool readField(const Fields& fields, const char* name, float& out) {
+    return fields.number(name, out);
+}
+bool readField(const Fields& fields, const char* name, Vec2& out) {
+    return fields.vec2(name, out);
+}
+bool readField(const Fields& fields, const char* name, bool& out) {
+    return fields.boolean(name, out);
+}
+bool readField(const Fields& fields, const char* name, std::uint32_t& out) {
+    return fields.bits(name, out);
+}
+/// userData is any Lua value: worldNewBody keeps it in the world's user value table.
+bool readField(const Fields&, const char*, void*&) {
+    return false;
+}
+
+/// Pushes a value of each type a property has as one Lua value; false for userData.
+bool pushField(lua_State* L, BodyType type) {
+    lua_pushstring(L, bodyTypeName(type));
+    return true;
+}
+bool pushField(lua_State* L, float value) {
+    lua_pushnumber(L, static_cast<lua_Number>(value));
+    return true;
+}
+bool pushField(lua_State* L, Vec2 value) {
+    lua_createtable(L, 2, 0);
+    lua_pushnumber(L, static_cast<lua_Number>(value.x));
+    lua_rawseti(L, -2, 1);
+    lua_pushnumber(L, static_cast<lua_Number>(value.y));
+    lua_rawseti(L, -2, 2);
+    return true;
+}
+bool pushField(lua_State* L, bool value) {
+    lua_pushboolean(L, value);
+    return true;
+}
+bool pushField(lua_State* L, std::uint32_t value) {
+    pushWhole(L, value);
+    return true;
+}
+bool pushField(lua_State*, void*) {
+    return false;
+}
+
 // --- newBody ---------------------------------------------------------------------------
 
-constexpr const char* kBodyFields[] = {
-    "type",   "x",        "y",    "hw",      "hh",           "vx",      "vy",
-    "bounce", "friction", "mass", "density", "gravityScale", "damping", "bullet",
-    "oneWay", "category", "mask", "sensor",  "userData",     nullptr};
+/// The fields newBody takes: every property's, ended by nullptr.
+constexpr auto kBodyFieldNames = [] {
+    std::array<const char*, std::size(properties::kBodyFields) + 1> names{};
+    for (std::size_t i = 0; i < std::size(properties::kBodyFields); ++i)
+        names[i] = properties::kBodyFields[i].property->name;
+    return names;
+}();
 
 /// The BodyDef of the table at `index`, with the rules of scene files: hw and hh
 /// required, mass (> 0) or density but not both, every value checked.
 BodyDef readBodyDef(lua_State* L, int index, const char* where) {
     checkTable(L, index, where, "def");
     const Fields fields(L, index, where);
-    fields.allowOnly(kBodyFields);
+    fields.allowOnly(kBodyFieldNames.data());
     BodyDef def;
-    int type = 2;
-    if (fields.option("type", type, kTypeNames))
-        def.type = bodyTypeOf(type);
-    fields.number("x", def.x);
-    fields.number("y", def.y);
-    if (!fields.number("hw", def.hw))
-        raise(L, where, "missing field \"hw\"");
-    if (!fields.number("hh", def.hh))
-        raise(L, where, "missing field \"hh\"");
-    fields.number("vx", def.vx);
-    fields.number("vy", def.vy);
-    fields.number("bounce", def.bounce);
-    fields.number("friction", def.friction);
-    const bool hasMass = fields.number("mass", def.mass);
-    if (hasMass && !(def.mass > 0.0f))
-        fields.fail("mass", "must be > 0");
-    if (fields.number("density", def.density) && hasMass)
-        raise(L, where, "give \"mass\" or \"density\", not both");
-    fields.number("gravityScale", def.gravityScale);
-    fields.number("damping", def.damping);
-    fields.boolean("bullet", def.bullet);
-    fields.vec2("oneWay", def.oneWay);
-    fields.bits("category", def.category);
-    fields.bits("mask", def.mask);
-    fields.boolean("sensor", def.sensor);
+    bool hasMass = false;
+    for (const auto& field : properties::kBodyFields) {
+        const char* name = field.property->name;
+        auto read = [&](auto member) { return readField(fields, name, def.*member); };
+        const bool given = std::visit(read, field.member);
+        if (!given && field.property->required)
+            raise(L, where, "missing field \"%s\"", name);
+        if (given && field.property == &properties::kMass) {
+            hasMass = true;
+            if (!(def.mass > 0.0f))
+                fields.fail(name, "must be > 0");
+        }
+        if (given && hasMass && field.property == &properties::kDensity)
+            raise(L, where, "give \"mass\" or \"density\", not both");
+    }
 
     char message[kMessageSize];
     bool bad = false;
@@ -209,32 +265,6 @@ int bodySetType(lua_State* L) {
     return 0;
 }
 
-int bodyGetPosition(lua_State* L) {
-    return pushVec2(L, read<Vec2>(L, "Body:getPosition",
-                                  [](const World& w, BodyId id) { return w.position(id); }));
-}
-
-int bodySetPosition(lua_State* L) {
-    const char* where = "Body:setPosition";
-    const BodyHandle& body = checkBody(L, 1, where);
-    const Vec2 p = checkVec2(L, 2, where, "x", "y");
-    change(L, where, body, [&](World& w, BodyId id) { w.setPosition(id, p); });
-    return 0;
-}
-
-int bodyGetVelocity(lua_State* L) {
-    return pushVec2(L, read<Vec2>(L, "Body:getVelocity",
-                                  [](const World& w, BodyId id) { return w.velocity(id); }));
-}
-
-int bodySetVelocity(lua_State* L) {
-    const char* where = "Body:setVelocity";
-    const BodyHandle& body = checkBody(L, 1, where);
-    const Vec2 v = checkVec2(L, 2, where, "vx", "vy");
-    change(L, where, body, [&](World& w, BodyId id) { w.setVelocity(id, v); });
-    return 0;
-}
-
 int bodyGetHalfExtents(lua_State* L) {
     return pushVec2(L, read<Vec2>(L, "Body:getHalfExtents",
                                   [](const World& w, BodyId id) { return w.halfExtents(id); }));
@@ -265,27 +295,6 @@ int bodyGetRect(lua_State* L) {
     return 2 + pushVec2(L, half * 2.0f);
 }
 
-/// A float property with a getter and a setter taking one number.
-#define JOSTLE_FLOAT_PROPERTY(Name, getter, setter, argument)                                      \
-    int bodyGet##Name(lua_State* L) {                                                              \
-        return pushFloat(L, read<float>(L, "Body:get" #Name,                                       \
-                                        [](const World& w, BodyId id) { return w.getter(id); }));  \
-    }                                                                                              \
-    int bodySet##Name(lua_State* L) {                                                              \
-        const char* where = "Body:set" #Name;                                                      \
-        const BodyHandle& body = checkBody(L, 1, where);                                           \
-        const float value = checkNumber(L, 2, where, argument);                                    \
-        change(L, where, body, [&](World& w, BodyId id) { w.setter(id, value); });                 \
-        return 0;                                                                                  \
-    }
-
-JOSTLE_FLOAT_PROPERTY(Bounce, bounce, setBounce, "bounce")
-JOSTLE_FLOAT_PROPERTY(Friction, friction, setFriction, "friction")
-JOSTLE_FLOAT_PROPERTY(Mass, mass, setMass, "mass")
-JOSTLE_FLOAT_PROPERTY(GravityScale, gravityScale, setGravityScale, "scale")
-JOSTLE_FLOAT_PROPERTY(Damping, damping, setDamping, "damping")
-#undef JOSTLE_FLOAT_PROPERTY
-
 int bodyGetDensity(lua_State* L) {
     return pushFloat(L, read<float>(L, "Body:getDensity", [](const World& w, BodyId id) {
                          return w.bodyDef(id).density;
@@ -297,34 +306,6 @@ int bodySetDensity(lua_State* L) {
     const BodyHandle& body = checkBody(L, 1, where);
     const float density = checkNumber(L, 2, where, "density");
     change(L, where, body, [&](World& w, BodyId id) { w.setDensity(id, density); });
-    return 0;
-}
-
-int bodyIsBullet(lua_State* L) {
-    lua_pushboolean(L, read<bool>(L, "Body:isBullet",
-                                  [](const World& w, BodyId id) { return w.isBullet(id); }));
-    return 1;
-}
-
-int bodySetBullet(lua_State* L) {
-    const char* where = "Body:setBullet";
-    const BodyHandle& body = checkBody(L, 1, where);
-    const bool bullet = checkBoolean(L, 2, where, "bullet");
-    change(L, where, body, [&](World& w, BodyId id) { w.setBullet(id, bullet); });
-    return 0;
-}
-
-int bodyIsSensor(lua_State* L) {
-    lua_pushboolean(L, read<bool>(L, "Body:isSensor",
-                                  [](const World& w, BodyId id) { return w.isSensor(id); }));
-    return 1;
-}
-
-int bodySetSensor(lua_State* L) {
-    const char* where = "Body:setSensor";
-    const BodyHandle& body = checkBody(L, 1, where);
-    const bool sensor = checkBoolean(L, 2, where, "sensor");
-    change(L, where, body, [&](World& w, BodyId id) { w.setSensor(id, sensor); });
     return 0;
 }
 
@@ -364,53 +345,11 @@ int bodySetUserData(lua_State* L) {
     return 0;
 }
 
-int bodyGetOneWay(lua_State* L) {
-    return pushVec2(
-        L, read<Vec2>(L, "Body:getOneWay", [](const World& w, BodyId id) { return w.oneWay(id); }));
-}
-
-int bodySetOneWay(lua_State* L) {
-    const char* where = "Body:setOneWay";
-    const BodyHandle& body = checkBody(L, 1, where);
-    const Vec2 normal = checkVec2(L, 2, where, "nx", "ny");
-    change(L, where, body, [&](World& w, BodyId id) { w.setOneWay(id, normal); });
-    return 0;
-}
-
 int bodyDropThrough(lua_State* L) {
     const char* where = "Body:dropThrough";
     const BodyHandle& body = checkBody(L, 1, where);
     const float seconds = checkNumber(L, 2, where, "seconds");
     change(L, where, body, [&](World& w, BodyId id) { w.dropThrough(id, seconds); });
-    return 0;
-}
-
-int bodyGetCategory(lua_State* L) {
-    pushWhole(L, read<std::uint32_t>(L, "Body:getCategory",
-                                     [](const World& w, BodyId id) { return w.category(id); }));
-    return 1;
-}
-
-int bodySetCategory(lua_State* L) {
-    const char* where = "Body:setCategory";
-    const BodyHandle& body = checkBody(L, 1, where);
-    const auto bits =
-        static_cast<std::uint32_t>(checkWhole(L, 2, where, "category", 0, 0xFFFFFFFF));
-    change(L, where, body, [&](World& w, BodyId id) { w.setCategory(id, bits); });
-    return 0;
-}
-
-int bodyGetMask(lua_State* L) {
-    pushWhole(L, read<std::uint32_t>(L, "Body:getMask",
-                                     [](const World& w, BodyId id) { return w.mask(id); }));
-    return 1;
-}
-
-int bodySetMask(lua_State* L) {
-    const char* where = "Body:setMask";
-    const BodyHandle& body = checkBody(L, 1, where);
-    const auto bits = static_cast<std::uint32_t>(checkWhole(L, 2, where, "mask", 0, 0xFFFFFFFF));
-    change(L, where, body, [&](World& w, BodyId id) { w.setMask(id, bits); });
     return 0;
 }
 
@@ -440,43 +379,17 @@ int bodyGetTouching(lua_State* L) {
 int bodyGetDef(lua_State* L) {
     const BodyDef def =
         read<BodyDef>(L, "Body:getDef", [](const World& w, BodyId id) { return w.bodyDef(id); });
-    lua_createtable(L, 0, 18);
-    lua_pushstring(L, bodyTypeName(def.type));
-    lua_setfield(L, -2, "type");
-    const struct {
-        const char* name;
-        float value;
-    } numbers[] = {{"x", def.x},
-                   {"y", def.y},
-                   {"hw", def.hw},
-                   {"hh", def.hh},
-                   {"vx", def.vx},
-                   {"vy", def.vy},
-                   {"bounce", def.bounce},
-                   {"friction", def.friction},
-                   {"gravityScale", def.gravityScale},
-                   {"damping", def.damping}};
-    for (const auto& number : numbers) {
-        lua_pushnumber(L, static_cast<lua_Number>(number.value));
-        lua_setfield(L, -2, number.name);
-    }
     // mass or density, never both, as newBody wants it.
-    lua_pushnumber(L, static_cast<lua_Number>(def.mass > 0.0f ? def.mass : def.density));
-    lua_setfield(L, -2, def.mass > 0.0f ? "mass" : "density");
-    lua_pushboolean(L, def.bullet);
-    lua_setfield(L, -2, "bullet");
-    lua_createtable(L, 2, 0);
-    lua_pushnumber(L, static_cast<lua_Number>(def.oneWay.x));
-    lua_rawseti(L, -2, 1);
-    lua_pushnumber(L, static_cast<lua_Number>(def.oneWay.y));
-    lua_rawseti(L, -2, 2);
-    lua_setfield(L, -2, "oneWay");
-    pushWhole(L, def.category);
-    lua_setfield(L, -2, "category");
-    pushWhole(L, def.mask);
-    lua_setfield(L, -2, "mask");
-    lua_pushboolean(L, def.sensor);
-    lua_setfield(L, -2, "sensor");
+    const properties::Property* leftOut =
+        def.mass > 0.0f ? &properties::kDensity : &properties::kMass;
+    lua_createtable(L, 0, 18);
+    for (const auto& field : properties::kBodyFields) {
+        if (field.property == leftOut)
+            continue;
+        auto push = [&](auto member) { return pushField(L, def.*member); };
+        if (std::visit(push, field.member))
+            lua_setfield(L, -2, field.property->name);
+    }
     return 1;
 }
 
@@ -501,6 +414,98 @@ int bodyToString(lua_State* L) {
     return 1;
 }
 
+// --- Settings World gets and sets whole ------------------------------------------------
+
+/// A setting of a body that World gets and sets as one value, and Lua's methods for it.
+template <class T> struct Setting {
+    const char* getter; ///< Lua's method names
+    const char* setter;
+    std::array<const char*, 2> arguments; ///< the setter's argument in messages (a vector's two)
+    T (World::*get)(BodyId) const;
+    void (World::*set)(BodyId, T);
+};
+
+// clang-format off
+constexpr Setting<Vec2> kVectorSettings[] = {
+    {"getPosition", "setPosition", {"x", "y"}, &World::position, &World::setPosition},
+    {"getVelocity", "setVelocity", {"vx", "vy"}, &World::velocity, &World::setVelocity},
+    {"getOneWay", "setOneWay", {"nx", "ny"}, &World::oneWay, &World::setOneWay},
+};
+constexpr Setting<float> kNumberSettings[] = {
+    {"getBounce", "setBounce", {"bounce"}, &World::bounce, &World::setBounce},
+    {"getFriction", "setFriction", {"friction"}, &World::friction, &World::setFriction},
+    {"getMass", "setMass", {"mass"}, &World::mass, &World::setMass},
+    {"getGravityScale", "setGravityScale", {"scale"}, &World::gravityScale,
+        &World::setGravityScale},
+    {"getDamping", "setDamping", {"damping"}, &World::damping, &World::setDamping},
+};
+constexpr Setting<bool> kFlagSettings[] = {
+    {"isBullet", "setBullet", {"bullet"}, &World::isBullet, &World::setBullet},
+    {"isSensor", "setSensor", {"sensor"}, &World::isSensor, &World::setSensor},
+};
+constexpr Setting<std::uint32_t> kBitsSettings[] = {
+    {"getCategory", "setCategory", {"category"}, &World::category, &World::setCategory},
+    {"getMask", "setMask", {"mask"}, &World::mask, &World::setMask},
+};
+// clang-format on
+
+/// Reads a setter's argument (at 2, and 3 for a vector's y) of each type a setting has.
+void checkArgument(lua_State* L, const char* where, const char* const* names, Vec2& out) {
+    out = checkVec2(L, 2, where, names[0], names[1]);
+}
+void checkArgument(lua_State* L, const char* where, const char* const* names, float& out) {
+    out = checkNumber(L, 2, where, names[0]);
+}
+void checkArgument(lua_State* L, const char* where, const char* const* names, bool& out) {
+    out = checkBoolean(L, 2, where, names[0]);
+}
+void checkArgument(lua_State* L, const char* where, const char* const* names, std::uint32_t& out) {
+    out = static_cast<std::uint32_t>(checkWhole(L, 2, where, names[0], 0, 0xFFFFFFFF));
+}
+
+/// The Setting<T> a getter's or setter's closure was made for (its upvalue).
+template <class T> const Setting<T>& settingOf(lua_State* L) {
+    return *static_cast<const Setting<T>*>(lua_touserdata(L, lua_upvalueindex(1)));
+}
+
+template <class T> int getSetting(lua_State* L) {
+    const Setting<T>& setting = settingOf<T>(L);
+    char where[64];
+    std::snprintf(where, sizeof where, "Body:%s", setting.getter);
+    const T value =
+        read<T>(L, where, [&](const World& w, BodyId id) { return (w.*setting.get)(id); });
+    if constexpr (std::is_same_v<T, Vec2>) {
+        return pushVec2(L, value); // two results: x, y
+    } else {
+        pushField(L, value);
+        return 1;
+    }
+}
+
+template <class T> int setSetting(lua_State* L) {
+    const Setting<T>& setting = settingOf<T>(L);
+    char where[64];
+    std::snprintf(where, sizeof where, "Body:%s", setting.setter);
+    const BodyHandle& body = checkBody(L, 1, where);
+    T value{};
+    checkArgument(L, where, setting.arguments.data(), value);
+    change(L, where, body, [&](World& w, BodyId id) { (w.*setting.set)(id, value); });
+    return 0;
+}
+
+/// Adds each setting's getter and setter to the methods table on top of the stack.
+template <class T, std::size_t N> void addSettings(lua_State* L, const Setting<T> (&settings)[N]) {
+    for (const Setting<T>& setting : settings) {
+        void* entry = const_cast<Setting<T>*>(&setting);
+        lua_pushlightuserdata(L, entry);
+        lua_pushcclosure(L, getSetting<T>, 1);
+        lua_setfield(L, -2, setting.getter);
+        lua_pushlightuserdata(L, entry);
+        lua_pushcclosure(L, setSetting<T>, 1);
+        lua_setfield(L, -2, setting.setter);
+    }
+}
+
 constexpr luaL_Reg kBodyMethods[] = {
     {"destroy", bodyDestroy},
     {"isDestroyed", bodyIsDestroyed},
@@ -508,40 +513,16 @@ constexpr luaL_Reg kBodyMethods[] = {
     {"getId", bodyGetId},
     {"getType", bodyGetType},
     {"setType", bodySetType},
-    {"getPosition", bodyGetPosition},
-    {"setPosition", bodySetPosition},
-    {"getVelocity", bodyGetVelocity},
-    {"setVelocity", bodySetVelocity},
     {"getHalfExtents", bodyGetHalfExtents},
     {"setHalfExtents", bodySetHalfExtents},
     {"getRect", bodyGetRect},
-    {"getBounce", bodyGetBounce},
-    {"setBounce", bodySetBounce},
-    {"getFriction", bodyGetFriction},
-    {"setFriction", bodySetFriction},
-    {"getMass", bodyGetMass},
-    {"setMass", bodySetMass},
     {"getDensity", bodyGetDensity},
     {"setDensity", bodySetDensity},
-    {"getGravityScale", bodyGetGravityScale},
-    {"setGravityScale", bodySetGravityScale},
-    {"getDamping", bodyGetDamping},
-    {"setDamping", bodySetDamping},
-    {"isBullet", bodyIsBullet},
-    {"setBullet", bodySetBullet},
-    {"isSensor", bodyIsSensor},
-    {"setSensor", bodySetSensor},
     {"isAwake", bodyIsAwake},
     {"wake", bodyWake},
     {"getUserData", bodyGetUserData},
     {"setUserData", bodySetUserData},
-    {"getOneWay", bodyGetOneWay},
-    {"setOneWay", bodySetOneWay},
     {"dropThrough", bodyDropThrough},
-    {"getCategory", bodyGetCategory},
-    {"setCategory", bodySetCategory},
-    {"getMask", bodyGetMask},
-    {"setMask", bodySetMask},
     {"getSeparation", bodyGetSeparation},
     {"getTouching", bodyGetTouching},
     {"getDef", bodyGetDef},
@@ -585,6 +566,10 @@ void openBody(lua_State* L) {
     luaL_newmetatable(L, kBodyType);
     lua_createtable(L, 0, 48);
     luaL_setfuncs(L, kBodyMethods, 0);
+    addSettings(L, kVectorSettings);
+    addSettings(L, kNumberSettings);
+    addSettings(L, kFlagSettings);
+    addSettings(L, kBitsSettings);
     lua_setfield(L, -2, "__index");
     lua_pushcfunction(L, bodyToString);
     lua_setfield(L, -2, "__tostring");
