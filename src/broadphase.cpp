@@ -1,6 +1,7 @@
 // The broadphase: the grid of resting bodies, and the pairs of the physical step.
 #include "broadphase.hpp"
 
+#include "physical/sleep.hpp"
 #include "world_state.hpp"
 
 #include <algorithm>
@@ -8,27 +9,21 @@
 
 namespace jostle {
 
-void WorldState::refreshRanks() {
-    rank.resize(slots.size());
-    for (std::uint32_t r = 0; r < order.size(); ++r)
-        rank[order[r].index] = r;
-}
-
-void WorldState::refreshRestingGrid() {
-    if (!restingDirty)
+void refreshRestingGrid(WorldState& world) {
+    if (!world.restingDirty)
         return;
-    restingDirty = false;
-    restingSlots.clear();
-    std::vector<Box>& bounds = boundsScratch;
-    bounds.clear();
-    for (BodyId id : order) {
-        const Body& body = slots[id.index];
-        if (isResting(body)) {
-            restingSlots.push_back(id.index);
-            bounds.push_back(body.box());
+    world.restingDirty = false;
+    world.restingSlots.clear();
+    std::vector<Box>& boxes = world.boundsScratch;
+    boxes.clear();
+    for (BodyId id : world.order) {
+        const Body& body = world.slots[id.index];
+        if (world.isResting(body)) {
+            world.restingSlots.push_back(id.index);
+            boxes.push_back(body.box());
         }
     }
-    restingGrid.build(bounds);
+    world.restingGrid.build(boxes);
 }
 
 namespace {
@@ -48,7 +43,7 @@ public:
     /// False if sleeping bodies were found in the way and woken: run again.
     bool run() {
         pairs_.clear();
-        w_.refreshRestingGrid();
+        refreshRestingGrid(w_);
         buildMovingGrid();
         std::vector<std::uint32_t> toWake;
         // The moving grid holds its bodies in creation order: the smaller index is `a`.
@@ -71,7 +66,7 @@ public:
             });
         }
         for (std::uint32_t slot : toWake)
-            w_.wakeIsland(slot);
+            wakeIsland(w_, slot);
         return toWake.empty();
     }
 
@@ -93,7 +88,7 @@ private:
     }
 
     void add(std::uint32_t a, std::uint32_t b) {
-        if (w_.rank[a] > w_.rank[b])
+        if (w_.createdBefore(b, a))
             std::swap(a, b);
         pairs_.push_back({a, b});
     }
@@ -106,7 +101,6 @@ private:
 } // namespace
 
 void findPairs(WorldState& world, float dt, std::vector<BodyPair>& pairs) {
-    world.refreshRanks();
     PairFinder finder(world, dt, pairs);
     // Each round wakes at least one island, and woken bodies stay awake: this ends.
     while (!finder.run()) {

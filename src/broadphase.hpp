@@ -16,6 +16,9 @@ struct BodyPair {
     std::uint32_t b;
 };
 
+/// Rebuilds the world's resting grid (static and sleeping bodies) if one of them changed.
+void refreshRestingGrid(WorldState& world);
+
 /// Every pair of live bodies, at least one of them dynamic and awake, whose boxes, each
 /// grown by the distance its velocity carries it in `dt`, overlap or touch; `a` is the
 /// one created first. Sleeping bodies touched by awake ones are woken first, so they take

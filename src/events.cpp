@@ -84,7 +84,7 @@ void recordContact(WorldState& world, std::uint32_t body, std::uint32_t other, V
     flag(body, normal);
     flag(other, -normal);
     // Listed with the body created first as `a`, the normal pointing towards it.
-    if (world.rank[body] < world.rank[other])
+    if (world.createdBefore(body, other))
         events.contactsNow.push_back({world.idOf(body), world.idOf(other), normal, approachSpeed});
     else
         events.contactsNow.push_back({world.idOf(other), world.idOf(body), -normal, approachSpeed});

@@ -59,7 +59,7 @@ void collect(const WorldState& w, const Box& region, const QueryFilter& filter, 
     candidates.inGrid(region, consider);
     candidates.outsideGrid(consider);
     std::sort(out.begin(), out.end(), [&](BodyId p, BodyId q) {
-        return candidates.rank(p.index) < candidates.rank(q.index);
+        return candidates.created(p.index) < candidates.created(q.index);
     });
 }
 
@@ -74,12 +74,13 @@ void overlapping(const WorldState& w, Box box, const QueryFilter& filter,
 
 struct RayFound {
     std::uint32_t slot;
-    std::uint32_t rank;
+    std::uint64_t created; ///< when its body was created: results follow it
     Hit contact;
 };
 
 bool before(const RayFound& p, const RayFound& q) {
-    return p.contact.time < q.contact.time || (p.contact.time == q.contact.time && p.rank < q.rank);
+    return p.contact.time < q.contact.time ||
+           (p.contact.time == q.contact.time && p.created < q.created);
 }
 
 /// The ray against the body in `slot`, by the rules of rayCast: the body passes the filter,
@@ -93,7 +94,7 @@ std::optional<RayFound> rayMeets(const WorldState& w, const Candidates& candidat
     const std::optional<Hit> contact = castRay(from, delta, body.box());
     if (!contact || !body.blocks(contact->normal, contact->axis >= 0, 0.0f))
         return std::nullopt;
-    return RayFound{slot, candidates.rank(slot), *contact};
+    return RayFound{slot, candidates.created(slot), *contact};
 }
 
 RayHit toRayHit(const WorldState& w, const RayFound& found, Vec2 from, Vec2 delta) {
@@ -124,7 +125,7 @@ void checkRay(const WorldState& w, const char* function, Vec2 from, Vec2 to,
 /// A body a moving box runs into.
 struct Met {
     std::uint32_t slot;
-    std::uint32_t rank;
+    std::uint64_t created; ///< when its body was created: results follow it
     Hit contact;
 };
 
@@ -159,7 +160,7 @@ void firstStop(const WorldState& w, const Candidates& candidates, Vec2 centre, V
             stop.time = contact->time;
             stop.met.clear();
         }
-        stop.met.push_back({slot, candidates.rank(slot), *contact});
+        stop.met.push_back({slot, candidates.created(slot), *contact});
     };
     candidates.outsideGrid(consider);
     candidates.walkPath(centre, motion, half, consider, [&](float end) { return stop.time < end; });
@@ -167,7 +168,7 @@ void firstStop(const WorldState& w, const Candidates& candidates, Vec2 centre, V
         return;
     // A body near two pieces of the path was met twice.
     std::sort(stop.met.begin(), stop.met.end(),
-              [](const Met& p, const Met& q) { return p.rank < q.rank; });
+              [](const Met& p, const Met& q) { return p.created < q.created; });
     stop.met.erase(std::unique(stop.met.begin(), stop.met.end(),
                                [](const Met& p, const Met& q) { return p.slot == q.slot; }),
                    stop.met.end());

@@ -1,6 +1,7 @@
 // The query index and the candidates of a query.
 #include "query_index.hpp"
 
+#include "broadphase.hpp"
 #include "world_state.hpp"
 
 namespace jostle {
@@ -18,14 +19,10 @@ bool orderChanged(const WorldState& w, const QueryIndex& index) {
 }
 
 void rebuild(const WorldState& w, QueryIndex& index) {
-    index.rank.resize(w.slots.size());
     index.mobile.clear();
-    for (std::uint32_t r = 0; r < w.order.size(); ++r) {
-        const std::uint32_t slot = w.order[r].index;
-        index.rank[slot] = r;
-        if (w.slots[slot].type != BodyType::Static)
-            index.mobile.push_back(slot);
-    }
+    for (BodyId id : w.order)
+        if (w.slots[id.index].type != BodyType::Static)
+            index.mobile.push_back(id.index);
     // The median, not the mean: one floor as wide as the level must not make every
     // piece as long as the level. A sample is enough for a length that only tunes speed.
     index.sizes.clear();
@@ -50,7 +47,7 @@ void rebuild(const WorldState& w, QueryIndex& index) {
 
 Candidates::Candidates(const WorldState& world)
     : w_(world), index_(world.queries), grid_(world.restingGrid), gridSlots_(world.restingSlots),
-      order_(world.order) {
+      order_(world.order), created_(world.created) {
     std::lock_guard<std::mutex> lock(index_.mutex);
     if (orderChanged(w_, index_))
         rebuild(w_, index_);
@@ -58,7 +55,7 @@ Candidates::Candidates(const WorldState& world)
     // Outside a step, bringing it up to date is what the next step would do first.
     // The state is not const, only the access to it (WorldAccess).
     if (w_.restingDirty && !w_.stepping)
-        const_cast<WorldState&>(w_).refreshRestingGrid();
+        refreshRestingGrid(const_cast<WorldState&>(w_));
     gridUsable_ = !w_.restingDirty;
     if (!gridUsable_)
         return;

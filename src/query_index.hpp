@@ -36,8 +36,6 @@ struct QueryIndex {
     /// so is the order.
     std::size_t bodyCount = 0;
     BodyId lastBody{};
-    /// By slot: the body's place in creation order.
-    std::vector<std::uint32_t> rank;
     /// Slots of the dynamic and kinematic bodies when it was built, in creation order: the
     /// only bodies that may be outside the resting grid (when awake). A static body made
     /// dynamic since is missing; Candidates notice and rebuild.
@@ -69,7 +67,8 @@ public:
     template <class Visit, class Stop>
     void walkPath(Vec2 from, Vec2 delta, Vec2 half, Visit&& visit, Stop&& stop) const;
 
-    std::uint32_t rank(std::uint32_t slot) const { return index_.rank[slot]; }
+    /// When the body in `slot` was created (WorldState::created): results are sorted by it.
+    std::uint64_t created(std::uint32_t slot) const { return created_[slot]; }
 
 private:
     void listAwake();
@@ -85,6 +84,7 @@ private:
     const BoxGrid& grid_;
     const std::vector<std::uint32_t>& gridSlots_;
     const std::vector<BodyId>& order_;
+    const std::vector<std::uint64_t>& created_;
 };
 
 // --- Template definitions ----------------------------------------------------------------

@@ -37,13 +37,9 @@ std::string describeChar(char c) {
 }
 
 TileMapData& lookUp(WorldState& world, TileMapId id, const char* function) {
-    if (id.isNull())
-        fail(function, "null TileMapId");
     std::vector<TileMapData>& maps = world.tileMaps.maps;
-    if (id.index >= maps.size() || !maps[id.index].alive ||
-        maps[id.index].generation != id.generation)
-        fail(function,
-             "stale or foreign TileMapId (the map was destroyed or is not of this world)");
+    if (std::optional<std::string> problem = handleProblem(maps, id, "TileMapId", "map"))
+        fail(function, *problem);
     return maps[id.index];
 }
 
@@ -267,16 +263,11 @@ TileMapId createTileMap(World& world, const TileMapDef& def) {
         fail("createTileMap", "TileMapDef." + problem->field + ": " + problem->problem);
 
     TileMaps& maps = WorldAccess::state(world).tileMaps;
-    std::uint32_t index;
-    if (!maps.freeMaps.empty()) {
-        index = maps.freeMaps.back();
-        maps.freeMaps.pop_back();
-    } else {
-        if (maps.maps.size() >= UINT32_MAX)
-            fail("createTileMap", "too many tile maps");
-        index = static_cast<std::uint32_t>(maps.maps.size());
-        maps.maps.emplace_back().generation = WorldAccess::state(world).firstGeneration;
-    }
+    const std::optional<std::uint32_t> taken =
+        takeSlot(maps.maps, maps.freeMaps, WorldAccess::state(world).firstGeneration);
+    if (!taken)
+        fail("createTileMap", "too many tile maps");
+    const std::uint32_t index = *taken;
     TileMapData& map = maps.maps[index];
     const std::uint32_t generation = map.generation;
     map = TileMapData{};
@@ -302,15 +293,12 @@ void destroyTileMap(World& world, TileMapId id) {
     Boxes(world, id).removeAll();
     const std::uint32_t generation = map.generation;
     map = TileMapData{};
-    // Skip 0 on wrap-around: generation 0 is the null handle's.
-    map.generation = generation == UINT32_MAX ? 1 : generation + 1;
+    map.generation = nextGeneration(generation);
     WorldAccess::state(world).tileMaps.freeMaps.push_back(id.index);
 }
 
 bool World::isValid(TileMapId id) const {
-    const std::vector<TileMapData>& maps = WorldAccess::state(*this).tileMaps.maps;
-    return !id.isNull() && id.index < maps.size() && maps[id.index].alive &&
-           maps[id.index].generation == id.generation;
+    return isCurrent(WorldAccess::state(*this).tileMaps.maps, id);
 }
 
 // --- Tiles -------------------------------------------------------------------------------

@@ -4,6 +4,7 @@
 
 #include "classic/step.hpp"
 #include "integrate.hpp"
+#include "physical/sleep.hpp"
 #include "physical/step.hpp"
 
 #include <algorithm>
@@ -36,17 +37,9 @@ struct StepScope {
 
 namespace {
 
-float dynamicMass(const Body& body) {
-    return body.mass > 0.0f ? body.mass : body.density * 4.0f * body.half.x * body.half.y;
-}
-
-} // namespace
-
-namespace {
-
 void wakeAll(WorldState& world) {
     for (BodyId id : world.order)
-        world.wakeIsland(id.index);
+        wakeIsland(world, id.index);
 }
 
 // Each world's handles start at their own generation, spread over the 32 bits by the
@@ -58,10 +51,6 @@ std::uint32_t nextFirstGeneration() {
 }
 
 } // namespace
-
-void updateMass(Body& body) {
-    body.invMass = body.isDynamic() ? 1.0f / dynamicMass(body) : 0.0f;
-}
 
 // --- Construction ----------------------------------------------------------------------
 
@@ -105,8 +94,7 @@ World& World::operator=(World&& other) noexcept {
 // --- Handles ---------------------------------------------------------------------------
 
 bool World::isValid(BodyId id) const {
-    return !id.isNull() && id.index < state_->slots.size() && state_->slots[id.index].alive &&
-           state_->slots[id.index].generation == id.generation;
+    return state_->isCurrent(id);
 }
 
 namespace {
@@ -136,16 +124,12 @@ BodyId World::createBody(const BodyDef& def) {
         fail("createBody", "BodyDef." + problem->field + ": " + problem->problem);
 
     WorldState& w = *state_;
-    std::uint32_t slot;
-    if (!w.freeSlots.empty()) {
-        slot = w.freeSlots.back();
-        w.freeSlots.pop_back();
-    } else {
-        if (w.slots.size() >= UINT32_MAX)
-            fail("createBody", "too many bodies");
-        slot = static_cast<std::uint32_t>(w.slots.size());
-        w.slots.emplace_back().generation = w.firstGeneration;
-    }
+    const std::optional<std::uint32_t> taken = takeSlot(w.slots, w.freeSlots, w.firstGeneration);
+    if (!taken)
+        fail("createBody", "too many bodies");
+    const std::uint32_t slot = *taken;
+    w.created.resize(w.slots.size());
+    w.created[slot] = w.bodiesCreated++;
     Body& body = w.slots[slot];
     const std::uint32_t generation = body.generation;
     body = Body{};
@@ -156,26 +140,25 @@ BodyId World::createBody(const BodyDef& def) {
     body.half = {def.hw, def.hh};
     forEachKeptSetting([&](auto given, auto kept) { body.*kept = def.*given; });
     body.lastStepVelocity = body.velocity;
-    updateMass(body);
+    body.updateMass();
 
     if (slot < w.events.touching.size())
         w.events.touching[slot] = 0; // the slot's last body's flags
     const BodyId id = w.idOf(slot);
     w.order.push_back(id);
-    w.disturb(slot);
+    disturb(w, slot);
     return id;
 }
 
 void World::destroyBody(BodyId id) {
     WorldState& w = *state_;
     Body& body = lookUp(w, id, "destroyBody");
-    w.disturb(id.index);
+    disturb(w, id.index);
     w.events.destroyedSincePublish = true;
     if (body.type == BodyType::Static)
         w.restingDirty = true;
     body.alive = false;
-    // Skip 0 on wrap-around: generation 0 is the null handle's.
-    body.generation = body.generation == UINT32_MAX ? 1 : body.generation + 1;
+    body.generation = nextGeneration(body.generation);
     (w.stepping ? w.pendingFree : w.freeSlots).push_back(id.index);
     w.order.erase(std::find(w.order.begin(), w.order.end(), id));
 }
@@ -216,14 +199,14 @@ void World::setType(BodyId id, BodyType type) {
     Body& b = lookUp(*state_, id, "setType");
     if (const char* problem = properties::formProblem(type))
         fail("setType", std::string("type ") + problem);
-    state_->disturb(id.index); // what rested on it, where it was
+    disturb(*state_, id.index); // what rested on it, where it was
     state_->restingDirty = true;
     b.type = type;
     if (type == BodyType::Static)
         b.velocity = {};
     b.lastStepVelocity = b.velocity;
-    updateMass(b);
-    state_->disturb(id.index);
+    b.updateMass();
+    disturb(*state_, id.index);
 }
 
 Vec2 World::position(BodyId id) const {
@@ -233,9 +216,9 @@ Vec2 World::position(BodyId id) const {
 void World::setPosition(BodyId id, Vec2 centre) {
     Body& b = lookUp(*state_, id, "setPosition");
     requireFinite("setPosition", "centre", centre);
-    state_->disturb(id.index); // what rested on it, where it was
+    disturb(*state_, id.index); // what rested on it, where it was
     b.position = centre;
-    state_->disturb(id.index);
+    disturb(*state_, id.index);
 }
 
 Vec2 World::velocity(BodyId id) const {
@@ -248,7 +231,7 @@ void World::setVelocity(BodyId id, Vec2 velocity) {
     if (b.type == BodyType::Static && (velocity.x != 0.0f || velocity.y != 0.0f))
         fail("setVelocity", "a static body cannot move (make it kinematic)");
     b.velocity = velocity;
-    state_->disturb(id.index);
+    disturb(*state_, id.index);
 }
 
 Vec2 World::halfExtents(BodyId id) const {
@@ -259,10 +242,10 @@ void World::setHalfExtents(BodyId id, Vec2 halfExtents) {
     Body& b = lookUp(*state_, id, "setHalfExtents");
     require("setHalfExtents", "halfExtents.x", properties::kHw.rule, halfExtents.x);
     require("setHalfExtents", "halfExtents.y", properties::kHh.rule, halfExtents.y);
-    state_->disturb(id.index); // what rested on it, as it was
+    disturb(*state_, id.index); // what rested on it, as it was
     b.half = halfExtents;
-    updateMass(b);
-    state_->disturb(id.index);
+    b.updateMass();
+    disturb(*state_, id.index);
 }
 
 float World::bounce(BodyId id) const {
@@ -273,7 +256,7 @@ void World::setBounce(BodyId id, float bounce) {
     Body& b = lookUp(*state_, id, "setBounce");
     require("setBounce", "bounce", properties::kBounce.rule, bounce);
     b.bounce = bounce;
-    state_->disturb(id.index);
+    disturb(*state_, id.index);
 }
 
 float World::friction(BodyId id) const {
@@ -284,12 +267,12 @@ void World::setFriction(BodyId id, float friction) {
     Body& b = lookUp(*state_, id, "setFriction");
     require("setFriction", "friction", properties::kFriction.rule, friction);
     b.friction = friction;
-    state_->disturb(id.index);
+    disturb(*state_, id.index);
 }
 
 float World::mass(BodyId id) const {
     const Body& b = lookUp(*state_, id, "mass");
-    return b.isDynamic() ? dynamicMass(b) : std::numeric_limits<float>::infinity();
+    return b.isDynamic() ? b.dynamicMass() : std::numeric_limits<float>::infinity();
 }
 
 void World::setMass(BodyId id, float mass) {
@@ -297,8 +280,8 @@ void World::setMass(BodyId id, float mass) {
     // An explicit mass: a size (BodyDef::mass's 0, "from density", is setDensity's to ask).
     require("setMass", "mass", properties::Rule::Size, mass);
     b.mass = mass;
-    updateMass(b);
-    state_->disturb(id.index);
+    b.updateMass();
+    disturb(*state_, id.index);
 }
 
 void World::setDensity(BodyId id, float density) {
@@ -306,8 +289,8 @@ void World::setDensity(BodyId id, float density) {
     require("setDensity", "density", properties::kDensity.rule, density);
     b.mass = 0.0f;
     b.density = density;
-    updateMass(b);
-    state_->disturb(id.index);
+    b.updateMass();
+    disturb(*state_, id.index);
 }
 
 float World::gravityScale(BodyId id) const {
@@ -318,7 +301,7 @@ void World::setGravityScale(BodyId id, float scale) {
     Body& b = lookUp(*state_, id, "setGravityScale");
     require("setGravityScale", "scale", properties::kGravityScale.rule, scale);
     b.gravityScale = scale;
-    state_->disturb(id.index);
+    disturb(*state_, id.index);
 }
 
 float World::damping(BodyId id) const {
@@ -329,7 +312,7 @@ void World::setDamping(BodyId id, float damping) {
     Body& b = lookUp(*state_, id, "setDamping");
     require("setDamping", "damping", properties::kDamping.rule, damping);
     b.damping = damping;
-    state_->disturb(id.index);
+    disturb(*state_, id.index);
 }
 
 bool World::isBullet(BodyId id) const {
@@ -346,7 +329,7 @@ bool World::isAwake(BodyId id) const {
 
 void World::wake(BodyId id) {
     lookUp(*state_, id, "wake");
-    state_->disturb(id.index); // its island, and the time it has been still, start over
+    disturb(*state_, id.index); // its island, and the time it has been still, start over
 }
 
 Vec2 World::oneWay(BodyId id) const {
@@ -358,7 +341,7 @@ void World::setOneWay(BodyId id, Vec2 normal) {
     if (!isValidOneWay(normal))
         fail("setOneWay", "normal must be {0, 0} or one of {±1, 0}, {0, ±1}");
     body.oneWay = normal;
-    state_->disturb(id.index);
+    disturb(*state_, id.index);
 }
 
 void World::dropThrough(BodyId id, float seconds) {
@@ -366,7 +349,7 @@ void World::dropThrough(BodyId id, float seconds) {
     if (!(seconds >= 0.0f) || !std::isfinite(seconds))
         fail("dropThrough", "seconds must be a finite number >= 0");
     body.dropThroughTime = seconds;
-    state_->disturb(id.index);
+    disturb(*state_, id.index);
 }
 
 std::uint32_t World::category(BodyId id) const {
@@ -375,7 +358,7 @@ std::uint32_t World::category(BodyId id) const {
 
 void World::setCategory(BodyId id, std::uint32_t bits) {
     lookUp(*state_, id, "setCategory").category = bits;
-    state_->disturb(id.index);
+    disturb(*state_, id.index);
 }
 
 std::uint32_t World::mask(BodyId id) const {
@@ -384,7 +367,7 @@ std::uint32_t World::mask(BodyId id) const {
 
 void World::setMask(BodyId id, std::uint32_t bits) {
     lookUp(*state_, id, "setMask").mask = bits;
-    state_->disturb(id.index);
+    disturb(*state_, id.index);
 }
 
 bool World::isSensor(BodyId id) const {
@@ -393,7 +376,7 @@ bool World::isSensor(BodyId id) const {
 
 void World::setSensor(BodyId id, bool sensor) {
     lookUp(*state_, id, "setSensor").sensor = sensor;
-    state_->disturb(id.index);
+    disturb(*state_, id.index);
 }
 
 void* World::userData(BodyId id) const {

@@ -45,11 +45,8 @@ inline void requireSize(const char* function, const char* what, float value) {
 
 /// The live body `id` names, or jostle::Error (null, stale or foreign handle).
 inline Body& lookUp(WorldState& world, BodyId id, const char* function) {
-    if (id.isNull())
-        fail(function, "null BodyId");
-    if (id.index >= world.slots.size() || !world.slots[id.index].alive ||
-        world.slots[id.index].generation != id.generation)
-        fail(function, "stale or foreign BodyId (the body was destroyed or is not of this world)");
+    if (std::optional<std::string> problem = handleProblem(world.slots, id, "BodyId", "body"))
+        fail(function, *problem);
     return world.slots[id.index];
 }
 

@@ -5,6 +5,7 @@
 #include "broadphase.hpp"
 #include "events.hpp"
 #include "geometry.hpp"
+#include "handles.hpp"
 #include "jostle/world.hpp"
 #include "physical/contact_cache.hpp"
 #include "physical/scratch.hpp"
@@ -61,6 +62,10 @@ struct alignas(64) Body {
     std::uint32_t island = 0;
 
     bool isDynamic() const { return type == BodyType::Dynamic; }
+    /// The mass it has as a dynamic body: explicit, or density × area.
+    float dynamicMass() const { return mass > 0.0f ? mass : density * 4.0f * half.x * half.y; }
+    /// Sets invMass from the type, mass, density and size.
+    void updateMass() { invMass = isDynamic() ? 1.0f / dynamicMass() : 0.0f; }
     bool isOneWay() const { return oneWay.x != 0.0f || oneWay.y != 0.0f; }
     /// Whether this body stops another that meets it along `normal` (from this body
     /// towards the other). A one-way platform stops only what meets its blocking face,
@@ -111,9 +116,11 @@ struct WorldState {
     std::vector<BodyPair> pairs;
     std::vector<Box> boundsScratch;
 
-    /// Creation rank of each slot's body (its place in `order`), refreshed by
-    /// refreshRanks(); pairs are ordered by it.
-    std::vector<std::uint32_t> rank;
+    /// When each slot's body was created, as a count of the bodies created before it in
+    /// this world: "created before" is the order every solver, event list and query
+    /// result follows. Set by createBody, never renumbered.
+    std::vector<std::uint64_t> created;
+    std::uint64_t bodiesCreated = 0;
 
     /// The broadphase of bodies at rest: static and sleeping bodies, rebuilt only when
     /// one of them changes (restingDirty), so a still level costs nothing per step.
@@ -145,26 +152,11 @@ struct WorldState {
 
     BodyId idOf(std::uint32_t slot) const { return {slot, slots[slot].generation}; }
     /// True if `id` still names a live body (its slot not reused since).
-    bool isCurrent(BodyId id) const {
-        return id.index < slots.size() && slots[id.index].alive &&
-               slots[id.index].generation == id.generation;
-    }
+    bool isCurrent(BodyId id) const { return jostle::isCurrent(slots, id); }
     bool isLive(std::uint32_t slot) const { return slots[slot].alive; }
     bool isResting(const Body& body) const { return body.type == BodyType::Static || body.asleep; }
-
-    void refreshRanks();
-    /// Rebuilds restingGrid if a resting body changed.
-    void refreshRestingGrid();
-    /// Wakes the island of a sleeping body (nothing if it is awake).
-    void wakeIsland(std::uint32_t slot);
-    /// Wakes every sleeping body touching `bounds`.
-    void wakeTouching(const Box& bounds);
-    /// A body is about to change (or go): it and whatever sleeps against it wake, and the
-    /// resting grid is rebuilt if it is part of it.
-    void disturb(std::uint32_t slot);
+    /// Whether the body in slot `a` was created before the one in slot `b`.
+    bool createdBefore(std::uint32_t a, std::uint32_t b) const { return created[a] < created[b]; }
 };
-
-/// Computes invMass from the body's type, mass, density and size. world.cpp.
-void updateMass(Body& body);
 
 } // namespace jostle

@@ -7,6 +7,7 @@
 // "lost". jostle follows the text: the tangent velocity becomes (1 - f) × t.
 #include "step.hpp"
 
+#include "../broadphase.hpp"
 #include "../integrate.hpp"
 #include "../world_state.hpp"
 
@@ -41,7 +42,6 @@ public:
     ClassicStep(WorldState& world, float dt) : w_(world), dt_(dt) {}
 
     void run() {
-        w_.refreshRanks();
         w_.events.beginStep(w_);
         // The tutorial keeps two lists, statics and dynamics, in creation order. Kinematic
         // bodies go with the statics: the dynamic bodies collide with them the same way.
@@ -93,7 +93,7 @@ private:
 
     void buildGrids() {
         // Static bodies have their own grid in the world, rebuilt only when they change.
-        w_.refreshRestingGrid();
+        refreshRestingGrid(w_);
         // Kinematic bodies over the step they have just made (where they are now, and
         // for the ccd option's sweeps where they were); dynamic bodies where they start
         // the step, which is where the later ones still are when an earlier one meets
@@ -137,21 +137,22 @@ private:
                inner.max.x <= outer.max.x && inner.max.y <= outer.max.y;
     }
 
-    /// Static and kinematic bodies touching `region`, ranked after `after`, by rank.
+    /// Static and kinematic bodies touching `region`, created after `after` (a creation
+    /// count, WorldState::created), in creation order.
     void gatherStatics(const Box& region, std::int64_t after) {
         candidates_.clear();
         w_.restingGrid.query(region, [&](std::uint32_t k) {
             const std::uint32_t s = w_.restingSlots[k];
-            if (w_.slots[s].type == BodyType::Static && std::int64_t(w_.rank[s]) > after)
+            if (w_.slots[s].type == BodyType::Static && std::int64_t(w_.created[s]) > after)
                 candidates_.push_back(s);
         });
         kinematicGrid_.query(region, [&](std::uint32_t k) {
             const std::uint32_t s = kinematicSlots_[k];
-            if (std::int64_t(w_.rank[s]) > after)
+            if (std::int64_t(w_.created[s]) > after)
                 candidates_.push_back(s);
         });
         std::sort(candidates_.begin(), candidates_.end(),
-                  [&](std::uint32_t p, std::uint32_t q) { return w_.rank[p] < w_.rank[q]; });
+                  [&](std::uint32_t p, std::uint32_t q) { return w_.createdBefore(p, q); });
     }
 
     /// Dynamic bodies touching `region` that come after position `after` in dynamics_.
@@ -169,7 +170,7 @@ private:
     Outcome resolveAgainstStatics(std::uint32_t a) {
         return resolveInOrder(
             a, -1, [&](const Box& region, std::int64_t after) { gatherStatics(region, after); },
-            [&](std::uint32_t s) { return std::int64_t(w_.rank[s]); });
+            [&](std::uint32_t s) { return std::int64_t(w_.created[s]); });
     }
 
     Outcome resolveAgainstLaterDynamics(std::uint32_t a, std::size_t index) {

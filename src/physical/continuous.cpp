@@ -84,7 +84,7 @@ void addFoundContact(StepContext& step, std::uint32_t slot, std::uint32_t obstac
                      float speed) {
     WorldState& w = step.world;
     ContinuousScratch& s = step.scratch.continuous;
-    const bool bodyFirst = w.rank[slot] < w.rank[obstacle];
+    const bool bodyFirst = w.createdBefore(slot, obstacle);
     const std::uint32_t slotA = bodyFirst ? slot : obstacle;
     const std::uint32_t slotB = bodyFirst ? obstacle : slot;
     const std::uint32_t ia = step.solverBodyOf(slotA), ib = step.solverBodyOf(slotB);

@@ -36,7 +36,7 @@ public:
         std::uint32_t ra = find(a), rb = find(b);
         if (ra == rb)
             return;
-        if (world_.rank[ra] > world_.rank[rb])
+        if (world_.createdBefore(rb, ra))
             std::swap(ra, rb);
         parent_[rb] = ra;
     }
@@ -127,43 +127,43 @@ void fallAsleep(StepContext& step) {
 
 // --- Waking ------------------------------------------------------------------------------
 
-void WorldState::wakeIsland(std::uint32_t slot) {
-    if (!slots[slot].asleep)
+void wakeIsland(WorldState& world, std::uint32_t slot) {
+    if (!world.slots[slot].asleep)
         return;
-    const std::uint32_t island = slots[slot].island;
-    for (std::uint32_t member : islands[island]) {
-        Body& body = slots[member];
+    const std::uint32_t island = world.slots[slot].island;
+    for (std::uint32_t member : world.islands[island]) {
+        Body& body = world.slots[member];
         body.asleep = false;
         body.sleepTime = 0.0f;
     }
-    islands[island].clear();
-    freeIslands.push_back(island);
-    restingDirty = true;
+    world.islands[island].clear();
+    world.freeIslands.push_back(island);
+    world.restingDirty = true;
 }
 
-void WorldState::wakeTouching(const Box& bounds) {
+void wakeTouching(WorldState& world, const Box& box) {
     // Nobody asleep, nobody to wake: and no need to bring the resting grid up to date,
     // which would make creating n static bodies cost n rebuilds.
-    if (islands.size() == freeIslands.size())
+    if (world.islands.size() == world.freeIslands.size())
         return;
-    refreshRestingGrid();
+    refreshRestingGrid(world);
     std::vector<std::uint32_t> sleepers;
-    restingGrid.query(bounds, [&](std::uint32_t i) {
-        if (slots[restingSlots[i]].asleep)
-            sleepers.push_back(restingSlots[i]);
+    world.restingGrid.query(box, [&](std::uint32_t i) {
+        if (world.slots[world.restingSlots[i]].asleep)
+            sleepers.push_back(world.restingSlots[i]);
     });
     for (std::uint32_t slot : sleepers)
-        wakeIsland(slot);
+        wakeIsland(world, slot);
 }
 
-void WorldState::disturb(std::uint32_t slot) {
-    ++changes;
-    Body& body = slots[slot];
+void disturb(WorldState& world, std::uint32_t slot) {
+    ++world.changes;
+    Body& body = world.slots[slot];
     body.sleepTime = 0.0f;
-    wakeIsland(slot);
+    wakeIsland(world, slot);
     if (body.type == BodyType::Static)
-        restingDirty = true;
-    wakeTouching(body.box());
+        world.restingDirty = true;
+    wakeTouching(world, body.box());
 }
 
 } // namespace jostle

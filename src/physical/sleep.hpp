@@ -10,6 +10,8 @@ namespace jostle {
 
 struct StepContext;
 struct Body;
+struct Box;
+struct WorldState;
 
 struct SleepScratch {
     std::vector<std::uint32_t> parent; ///< union-find of islands, by slot
@@ -25,5 +27,15 @@ float restingSpeed(const Body& body);
 /// contact among them is within the slop. A body touching a moving kinematic body never
 /// sleeps: its platform may carry it off.
 void fallAsleep(StepContext& step);
+
+/// Wakes the island of the body in `slot` (nothing if it is awake).
+void wakeIsland(WorldState& world, std::uint32_t slot);
+
+/// Wakes every sleeping body touching `box`.
+void wakeTouching(WorldState& world, const Box& box);
+
+/// A body is about to change (or go) through the API: it and whatever sleeps against it
+/// wake, the resting grid is rebuilt if it is part of it, and the world counts a change.
+void disturb(WorldState& world, std::uint32_t slot);
 
 } // namespace jostle
