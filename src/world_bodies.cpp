@@ -1,0 +1,314 @@
+// World's bodies: creating and destroying them, their handles, and every getter and
+// setter, each setter checking its argument (body_properties.hpp has the rules).
+#include "body_properties.hpp"
+#include "physical/sleep.hpp"
+#include "world_access.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+
+namespace jostle {
+
+// --- Handles ---------------------------------------------------------------------------
+
+bool World::isValid(BodyId id) const {
+    return state_->isCurrent(id);
+}
+
+namespace {
+
+/// Calls f(BodyDef member, Body member) for each setting a Body keeps as its BodyDef gives
+/// it; position, velocity and size become vectors.
+template <class F> void forEachKeptSetting(F&& f) {
+    f(&BodyDef::type, &Body::type);
+    f(&BodyDef::bounce, &Body::bounce);
+    f(&BodyDef::friction, &Body::friction);
+    f(&BodyDef::mass, &Body::mass);
+    f(&BodyDef::density, &Body::density);
+    f(&BodyDef::gravityScale, &Body::gravityScale);
+    f(&BodyDef::damping, &Body::damping);
+    f(&BodyDef::bullet, &Body::bullet);
+    f(&BodyDef::oneWay, &Body::oneWay);
+    f(&BodyDef::category, &Body::category);
+    f(&BodyDef::mask, &Body::mask);
+    f(&BodyDef::sensor, &Body::sensor);
+    f(&BodyDef::userData, &Body::userData);
+}
+
+} // namespace
+
+BodyId World::createBody(const BodyDef& def) {
+    if (auto problem = checkBodyDef(def))
+        fail("createBody", "BodyDef." + problem->field + ": " + problem->problem);
+
+    WorldState& w = *state_;
+    const std::optional<std::uint32_t> taken = takeSlot(w.slots, w.freeSlots, w.firstGeneration);
+    if (!taken)
+        fail("createBody", "too many bodies");
+    const std::uint32_t slot = *taken;
+    w.created.resize(w.slots.size());
+    w.created[slot] = w.bodiesCreated++;
+    Body& body = w.slots[slot];
+    const std::uint32_t generation = body.generation;
+    body = Body{};
+    body.generation = generation;
+    body.alive = true;
+    body.position = {def.x, def.y};
+    body.velocity = {def.vx, def.vy};
+    body.half = {def.hw, def.hh};
+    forEachKeptSetting([&](auto given, auto kept) { body.*kept = def.*given; });
+    body.lastStepVelocity = body.velocity;
+    body.updateMass();
+
+    if (slot < w.events.touching.size())
+        w.events.touching[slot] = 0; // the slot's last body's flags
+    const BodyId id = w.idOf(slot);
+    w.order.push_back(id);
+    disturb(w, slot);
+    return id;
+}
+
+void World::destroyBody(BodyId id) {
+    WorldState& w = *state_;
+    Body& body = lookUp(w, id, "destroyBody");
+    disturb(w, id.index);
+    w.events.destroyedSincePublish = true;
+    if (body.type == BodyType::Static)
+        w.restingDirty = true;
+    body.alive = false;
+    body.generation = nextGeneration(body.generation);
+    (w.stepping ? w.pendingFree : w.freeSlots).push_back(id.index);
+    w.order.erase(std::find(w.order.begin(), w.order.end(), id));
+}
+
+std::span<const BodyId> World::bodies() const {
+    return state_->order;
+}
+
+// --- Body getters and setters ----------------------------------------------------------
+
+namespace {
+
+/// A setter's argument under a property's rule: "setBounce: bounce must be in [0, 1]".
+void require(const char* function, const char* what, properties::Rule rule, float value) {
+    if (const char* problem = properties::problemOf(rule, value))
+        fail(function, std::string(what) + " " + problem);
+}
+
+} // namespace
+
+BodyDef World::bodyDef(BodyId id) const {
+    const Body& b = lookUp(*state_, id, "bodyDef");
+    BodyDef def{.x = b.position.x,
+                .y = b.position.y,
+                .hw = b.half.x,
+                .hh = b.half.y,
+                .vx = b.velocity.x,
+                .vy = b.velocity.y};
+    forEachKeptSetting([&](auto given, auto kept) { def.*given = b.*kept; });
+    return def;
+}
+
+BodyType World::type(BodyId id) const {
+    return lookUp(*state_, id, "type").type;
+}
+
+void World::setType(BodyId id, BodyType type) {
+    Body& b = lookUp(*state_, id, "setType");
+    if (const char* problem = properties::formProblem(type))
+        fail("setType", std::string("type ") + problem);
+    disturb(*state_, id.index); // what rested on it, where it was
+    state_->restingDirty = true;
+    b.type = type;
+    if (type == BodyType::Static)
+        b.velocity = {};
+    b.lastStepVelocity = b.velocity;
+    b.updateMass();
+    disturb(*state_, id.index);
+}
+
+Vec2 World::position(BodyId id) const {
+    return lookUp(*state_, id, "position").position;
+}
+
+void World::setPosition(BodyId id, Vec2 centre) {
+    Body& b = lookUp(*state_, id, "setPosition");
+    requireFinite("setPosition", "centre", centre);
+    disturb(*state_, id.index); // what rested on it, where it was
+    b.position = centre;
+    disturb(*state_, id.index);
+}
+
+Vec2 World::velocity(BodyId id) const {
+    return lookUp(*state_, id, "velocity").velocity;
+}
+
+void World::setVelocity(BodyId id, Vec2 velocity) {
+    Body& b = lookUp(*state_, id, "setVelocity");
+    requireFinite("setVelocity", "velocity", velocity);
+    if (b.type == BodyType::Static && (velocity.x != 0.0f || velocity.y != 0.0f))
+        fail("setVelocity", "a static body cannot move (make it kinematic)");
+    b.velocity = velocity;
+    disturb(*state_, id.index);
+}
+
+Vec2 World::halfExtents(BodyId id) const {
+    return lookUp(*state_, id, "halfExtents").half;
+}
+
+void World::setHalfExtents(BodyId id, Vec2 halfExtents) {
+    Body& b = lookUp(*state_, id, "setHalfExtents");
+    require("setHalfExtents", "halfExtents.x", properties::kHw.rule, halfExtents.x);
+    require("setHalfExtents", "halfExtents.y", properties::kHh.rule, halfExtents.y);
+    disturb(*state_, id.index); // what rested on it, as it was
+    b.half = halfExtents;
+    b.updateMass();
+    disturb(*state_, id.index);
+}
+
+float World::bounce(BodyId id) const {
+    return lookUp(*state_, id, "bounce").bounce;
+}
+
+void World::setBounce(BodyId id, float bounce) {
+    Body& b = lookUp(*state_, id, "setBounce");
+    require("setBounce", "bounce", properties::kBounce.rule, bounce);
+    b.bounce = bounce;
+    disturb(*state_, id.index);
+}
+
+float World::friction(BodyId id) const {
+    return lookUp(*state_, id, "friction").friction;
+}
+
+void World::setFriction(BodyId id, float friction) {
+    Body& b = lookUp(*state_, id, "setFriction");
+    require("setFriction", "friction", properties::kFriction.rule, friction);
+    b.friction = friction;
+    disturb(*state_, id.index);
+}
+
+float World::mass(BodyId id) const {
+    const Body& b = lookUp(*state_, id, "mass");
+    return b.isDynamic() ? b.dynamicMass() : std::numeric_limits<float>::infinity();
+}
+
+void World::setMass(BodyId id, float mass) {
+    Body& b = lookUp(*state_, id, "setMass");
+    // An explicit mass: a size (BodyDef::mass's 0, "from density", is setDensity's to ask).
+    require("setMass", "mass", properties::Rule::Size, mass);
+    b.mass = mass;
+    b.updateMass();
+    disturb(*state_, id.index);
+}
+
+void World::setDensity(BodyId id, float density) {
+    Body& b = lookUp(*state_, id, "setDensity");
+    require("setDensity", "density", properties::kDensity.rule, density);
+    b.mass = 0.0f;
+    b.density = density;
+    b.updateMass();
+    disturb(*state_, id.index);
+}
+
+float World::gravityScale(BodyId id) const {
+    return lookUp(*state_, id, "gravityScale").gravityScale;
+}
+
+void World::setGravityScale(BodyId id, float scale) {
+    Body& b = lookUp(*state_, id, "setGravityScale");
+    require("setGravityScale", "scale", properties::kGravityScale.rule, scale);
+    b.gravityScale = scale;
+    disturb(*state_, id.index);
+}
+
+float World::damping(BodyId id) const {
+    return lookUp(*state_, id, "damping").damping;
+}
+
+void World::setDamping(BodyId id, float damping) {
+    Body& b = lookUp(*state_, id, "setDamping");
+    require("setDamping", "damping", properties::kDamping.rule, damping);
+    b.damping = damping;
+    disturb(*state_, id.index);
+}
+
+bool World::isBullet(BodyId id) const {
+    return lookUp(*state_, id, "isBullet").bullet;
+}
+
+void World::setBullet(BodyId id, bool bullet) {
+    lookUp(*state_, id, "setBullet").bullet = bullet;
+}
+
+bool World::isAwake(BodyId id) const {
+    return !lookUp(*state_, id, "isAwake").asleep;
+}
+
+void World::wake(BodyId id) {
+    lookUp(*state_, id, "wake");
+    disturb(*state_, id.index); // its island, and the time it has been still, start over
+}
+
+Vec2 World::oneWay(BodyId id) const {
+    return lookUp(*state_, id, "oneWay").oneWay;
+}
+
+void World::setOneWay(BodyId id, Vec2 normal) {
+    Body& body = lookUp(*state_, id, "setOneWay");
+    if (!isValidOneWay(normal))
+        fail("setOneWay", "normal must be {0, 0} or one of {±1, 0}, {0, ±1}");
+    body.oneWay = normal;
+    disturb(*state_, id.index);
+}
+
+void World::dropThrough(BodyId id, float seconds) {
+    Body& body = lookUp(*state_, id, "dropThrough");
+    if (!(seconds >= 0.0f) || !std::isfinite(seconds))
+        fail("dropThrough", "seconds must be a finite number >= 0");
+    body.dropThroughTime = seconds;
+    disturb(*state_, id.index);
+}
+
+std::uint32_t World::category(BodyId id) const {
+    return lookUp(*state_, id, "category").category;
+}
+
+void World::setCategory(BodyId id, std::uint32_t bits) {
+    lookUp(*state_, id, "setCategory").category = bits;
+    disturb(*state_, id.index);
+}
+
+std::uint32_t World::mask(BodyId id) const {
+    return lookUp(*state_, id, "mask").mask;
+}
+
+void World::setMask(BodyId id, std::uint32_t bits) {
+    lookUp(*state_, id, "setMask").mask = bits;
+    disturb(*state_, id.index);
+}
+
+bool World::isSensor(BodyId id) const {
+    return lookUp(*state_, id, "isSensor").sensor;
+}
+
+void World::setSensor(BodyId id, bool sensor) {
+    lookUp(*state_, id, "setSensor").sensor = sensor;
+    disturb(*state_, id.index);
+}
+
+void* World::userData(BodyId id) const {
+    return lookUp(*state_, id, "userData").userData;
+}
+
+void World::setUserData(BodyId id, void* data) {
+    lookUp(*state_, id, "setUserData").userData = data;
+}
+
+Vec2 World::separation(BodyId id) const {
+    return lookUp(*state_, id, "separation").separation;
+}
+
+} // namespace jostle
