@@ -1,0 +1,267 @@
+// JSON as scene files read it (json.hpp).
+#include "json.hpp"
+
+#include "jostle/scene.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <functional>
+#include <limits>
+#include <unordered_set>
+#include <vector>
+
+namespace jostle::json {
+
+namespace {
+
+// The format needs four levels (scene, tilemaps, tile map, rows); anything much deeper is
+// not a scene, and refusing it early bounds the memory spent on hostile input.
+constexpr int kMaxDepth = 32;
+
+// Error messages quote what they cite, at most this many bytes of it.
+constexpr std::size_t kMaxQuoted = 200;
+
+} // namespace
+
+[[noreturn]] void fail(const std::string& place, const std::string& rule) {
+    throw SceneError(place.empty() ? rule : place + ": " + rule);
+}
+
+std::string field(const std::string& place, const std::string& name) {
+    return place.empty() ? name : place + "." + name;
+}
+
+std::string element(const std::string& place, std::size_t index) {
+    return place + "[" + std::to_string(index) + "]";
+}
+
+namespace {
+
+/// Cuts `text` to at most kMaxQuoted bytes, never inside a UTF-8 sequence.
+std::string clip(std::string text) {
+    if (text.size() <= kMaxQuoted)
+        return text;
+    std::size_t end = kMaxQuoted;
+    while (end > 0 && (static_cast<unsigned char>(text[end]) & 0xC0u) == 0x80u)
+        --end;
+    text.resize(end);
+    return text + "...";
+}
+
+} // namespace
+
+/// A name as JSON spells it, quotes and escapes included, so that odd names stay
+/// readable in a one-line message.
+std::string quoteName(const std::string& name) {
+    return clip(Json(name).dump(-1, ' ', false, Json::error_handler_t::replace));
+}
+
+std::string got(const Json& value) {
+    return std::string(", got ") + value.type_name();
+}
+
+namespace {
+
+// --- Syntax: parsing with duplicate fields and depth refused -------------------------
+
+/// Follows the parser through the document, knowing the place of the value being read,
+/// to refuse with that place what nlohmann-json would accept: a duplicate field (it
+/// would keep the last of two, and {"hw": 1, "hw": -1} should not mean whatever the
+/// parser picks) and nesting beyond kMaxDepth. It also names the place of a number the
+/// parser itself refuses.
+class PlaceTracker {
+public:
+    bool operator()(int depth, Json::parse_event_t event, Json& parsed) {
+        switch (event) {
+        case Json::parse_event_t::object_start:
+        case Json::parse_event_t::array_start:
+            if (depth >= kMaxDepth)
+                fail(childPlace(), "nested deeper than " + std::to_string(kMaxDepth) + " levels");
+            containers_.push_back(
+                {childPlace(), event == Json::parse_event_t::object_start, {}, {}, 0});
+            break;
+        case Json::parse_event_t::object_end:
+        case Json::parse_event_t::array_end:
+            containers_.pop_back();
+            if (!containers_.empty() && !containers_.back().isObject)
+                ++containers_.back().elements;
+            break;
+        case Json::parse_event_t::key: {
+            Container& object = containers_.back();
+            object.lastKey = parsed.get<std::string>();
+            if (!object.keys.insert(object.lastKey).second)
+                fail(object.place, "duplicate field " + quoteName(object.lastKey));
+            break;
+        }
+        case Json::parse_event_t::value:
+            if (!containers_.empty() && !containers_.back().isObject)
+                ++containers_.back().elements;
+            break;
+        }
+        return true; // keep every value
+    }
+
+    /// The place of the value being read now.
+    std::string childPlace() const {
+        if (containers_.empty())
+            return "";
+        const Container& parent = containers_.back();
+        return parent.isObject ? field(parent.place, parent.lastKey)
+                               : element(parent.place, parent.elements);
+    }
+
+private:
+    struct Container {
+        std::string place;
+        bool isObject;
+        std::unordered_set<std::string> keys;
+        std::string lastKey;
+        std::size_t elements;
+    };
+
+    std::vector<Container> containers_;
+};
+
+/// The length of the valid UTF-8 sequence at the start of `text`, or 0 if there is none.
+std::size_t utf8Length(std::string_view text) {
+    const auto byte = [&](std::size_t i) { return static_cast<unsigned char>(text[i]); };
+    const unsigned char lead = byte(0);
+    const std::size_t length = lead < 0x80                    ? 1
+                               : lead >= 0xC2 && lead <= 0xDF ? 2
+                               : lead >= 0xE0 && lead <= 0xEF ? 3
+                               : lead >= 0xF0 && lead <= 0xF4 ? 4
+                                                              : 0;
+    if (length == 0 || length > text.size())
+        return 0;
+    for (std::size_t i = 1; i < length; ++i)
+        if ((byte(i) & 0xC0u) != 0x80u)
+            return 0;
+    return length;
+}
+
+/// `text` with every byte that is not part of valid UTF-8 spelt as <0xNN>: the parser
+/// quotes what it last read, and a message must stay printable text even when the
+/// file is binary garbage.
+std::string printable(std::string_view text) {
+    std::string result;
+    while (!text.empty()) {
+        std::size_t length = utf8Length(text);
+        if (length == 0) {
+            char escaped[8];
+            std::snprintf(escaped, sizeof escaped, "<0x%02X>",
+                          static_cast<unsigned>(static_cast<unsigned char>(text[0])));
+            result += escaped;
+            length = 1;
+        } else {
+            result.append(text.substr(0, length));
+        }
+        text.remove_prefix(length);
+    }
+    return result;
+}
+
+/// "[json.exception.parse_error.101] parse error at line 2, column 7: syntax error ..."
+/// becomes "invalid JSON at line 2, column 7: syntax error ...".
+std::string describe(const nlohmann::json::parse_error& error) {
+    std::string message = error.what();
+    const std::string marker = "parse error ";
+    if (const std::size_t at = message.find(marker); at != std::string::npos)
+        message = message.substr(at + marker.size());
+    else if (const std::size_t bracket = message.find("] "); bracket != std::string::npos)
+        message = ": " + message.substr(bracket + 2);
+    // The parser quotes the last token it read, which may be a whole megabyte string.
+    return "invalid JSON " + printable(clip(message));
+}
+
+} // namespace
+
+Json parse(std::string_view text) {
+    PlaceTracker tracker;
+    try {
+        // No comments: a scene file is plain JSON, readable by every other tool.
+        return Json::parse(text.begin(), text.end(), std::ref(tracker),
+                           /*allow_exceptions=*/true, /*ignore_comments=*/false);
+    } catch (const nlohmann::json::parse_error& error) {
+        throw SceneError(describe(error));
+    } catch (const nlohmann::json::out_of_range& error) {
+        // The parser refuses numbers beyond a double (1e400) itself, while reading the
+        // value whose place the tracker knows.
+        if (error.id == 406)
+            fail(tracker.childPlace(), "must be a finite number");
+        throw;
+    }
+}
+
+// --- Values --------------------------------------------------------------------------
+
+float readFloat(const Json& value, const std::string& place) {
+    // is_number() is false for booleans: true is not 1 in a scene file.
+    if (!value.is_number())
+        fail(place, "expected a number" + got(value));
+    const double number = value.get<double>();
+    // 2^128 - 2^103 is FLT_MAX plus half its ulp: doubles below it round to a finite
+    // float, doubles from it up (1e39) to infinity. (The parser refuses 1e400 itself.)
+    constexpr double kFloatLimit = 0x1.ffffffp127;
+    if (!(std::fabs(number) < kFloatLimit))
+        fail(place, "must be a finite number");
+    return static_cast<float>(number);
+}
+
+Vec2 readVec2(const Json& value, const std::string& place) {
+    if (!value.is_array())
+        fail(place, "expected an array of 2 numbers" + got(value));
+    if (value.size() != 2)
+        fail(place, "expected an array of 2 numbers, got " + std::to_string(value.size()) +
+                        (value.size() == 1 ? " number" : " numbers"));
+    return {readFloat(value[0], element(place, 0)), readFloat(value[1], element(place, 1))};
+}
+
+/// Bit fields (category, mask): a whole number from 0 to 2^32 - 1.
+std::uint32_t readBits(const Json& value, const std::string& place) {
+    if (!value.is_number_integer())
+        fail(place, "expected a whole number from 0 to 4294967295" + got(value));
+    if (value.is_number_unsigned() ? value.get<std::uint64_t>() > 0xFFFFFFFFull
+                                   : value.get<std::int64_t>() < 0)
+        fail(place, "must be a whole number from 0 to 4294967295");
+    return static_cast<std::uint32_t>(value.get<std::uint64_t>());
+}
+
+bool readBool(const Json& value, const std::string& place) {
+    if (!value.is_boolean())
+        fail(place, "expected true or false" + got(value));
+    return value.get<bool>();
+}
+
+const std::string& readString(const Json& value, const std::string& place) {
+    if (!value.is_string())
+        fail(place, "expected a string" + got(value));
+    return value.get_ref<const std::string&>();
+}
+
+const Json::object_t& readObject(const Json& value, const std::string& place) {
+    if (!value.is_object())
+        fail(place, "expected an object" + got(value));
+    return value.get_ref<const Json::object_t&>();
+}
+
+const Json::array_t& readArray(const Json& value, const std::string& place) {
+    if (!value.is_array())
+        fail(place, "expected an array" + got(value));
+    return value.get_ref<const Json::array_t&>();
+}
+
+/// An int option: a whole number. Those beyond an int are kept as INT_MIN or INT_MAX,
+/// which every int option's range (checked by checkWorldDef) refuses.
+int readInt(const Json& value, const std::string& place) {
+    if (!value.is_number())
+        fail(place, "expected a whole number" + got(value));
+    const double number = value.get<double>();
+    if (number != std::floor(number))
+        fail(place, "expected a whole number");
+    constexpr double lowest = std::numeric_limits<int>::min();
+    constexpr double highest = std::numeric_limits<int>::max();
+    return static_cast<int>(std::clamp(number, lowest, highest));
+}
+
+} // namespace jostle::json
