@@ -1,3 +1,4 @@
+// BoxGrid: building the grid and finding in it (box_grid.hpp explains the grid).
 #include "box_grid.hpp"
 
 #include <algorithm>

@@ -1,6 +1,7 @@
-// The physical model's broadphase: which bodies may touch in a step. Two BoxGrids: one
-// of the bodies at rest (static and sleeping), rebuilt only when one of them changes, and
-// one of the moving bodies, rebuilt every step (docs/broadphase.md).
+// The world's broadphase: which bodies may touch. Two BoxGrids: one of the bodies at rest
+// (static and sleeping), rebuilt only when one of them changes, which both models and the
+// queries use, and one of the moving bodies, rebuilt every physical step
+// (docs/broadphase.md).
 #pragma once
 
 #include <cstdint>

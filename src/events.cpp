@@ -1,3 +1,5 @@
+// Events: what touches at the end of this step against what touched at the end of the last,
+// made into begin and end events and touching flags (events.hpp).
 #include "events.hpp"
 
 #include "counting_sort.hpp"
