@@ -113,9 +113,8 @@ void setTarget(Contact& c, const CachedContact* cached, float bounce, float impa
     }
 }
 
-} // namespace
-
-Contact contactAlong(const StepContext& step, const Body& a, const Body& b, Vec2 normal) {
+/// contactAlong, with internal linkage so that buildContacts, its hot caller, inlines it.
+Contact contactOf(const StepContext& step, const Body& a, const Body& b, Vec2 normal) {
     Contact c;
     const bool alongX = normal.x != 0.0f;
     c.axis = alongX ? 0 : 1;
@@ -126,6 +125,12 @@ Contact contactAlong(const StepContext& step, const Body& a, const Body& b, Vec2
         step.options.slop * (alongX ? std::min(a.half.x, b.half.x) : std::min(a.half.y, b.half.y));
     c.friction = combineFriction(step.options.frictionMix, a.friction, b.friction);
     return c;
+}
+
+} // namespace
+
+Contact contactAlong(const StepContext& step, const Body& a, const Body& b, Vec2 normal) {
+    return contactOf(step, a, b, normal);
 }
 
 void buildContacts(StepContext& step) {
@@ -161,7 +166,7 @@ void buildContacts(StepContext& step) {
             continue;
 
         const float approach = dot(a.velocity - b.velocity, normal);
-        Contact c = contactAlong(step, a, b, normal);
+        Contact c = contactOf(step, a, b, normal);
         c.approachSpeed = std::max(0.0f, -approach);
         float bounce = std::max(a.bounce, b.bounce);
         if (w.preSolve) {

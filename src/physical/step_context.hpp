@@ -5,12 +5,17 @@
 
 #include "../world_state.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 
 namespace jostle {
 
 struct StepContext {
-    StepContext(WorldState& w, float stepDt);
+    StepContext(WorldState& w, float stepDt)
+        : world(w), scratch(w.physical), options(w.def.physical), dt(stepDt),
+          bodies(w.physical.bodies), contacts(w.physical.contacts),
+          noisePerSlop_(options.slop > 0.0f ? kMinimumSkin / options.slop : 0.0f) {}
 
     WorldState& world;
     PhysicalScratch& scratch;
@@ -22,20 +27,44 @@ struct StepContext {
 
     static constexpr std::uint32_t kNoSolverBody = UINT32_MAX;
     /// The solver body of a body, made on first use.
-    std::uint32_t solverBodyOf(std::uint32_t slot);
+    std::uint32_t solverBodyOf(std::uint32_t slot) {
+        std::uint32_t& index = scratch.solverIndex[slot];
+        if (index == kNoSolverBody) {
+            const Body& body = world.slots[slot];
+            index = std::uint32_t(bodies.size());
+            bodies.push_back({{body.velocity.x, body.velocity.y},
+                              {body.position.x, body.position.y},
+                              body.invMass,
+                              slot});
+        }
+        return index;
+    }
 
     /// The contact skin of two half extents along one axis (geometry.hpp's contactSkin).
-    float skinOf(float halfA, float halfB) const;
+    float skinOf(float halfA, float halfB) const { return contactSkin(options.slop, halfA, halfB); }
+
     /// How deep the pair of contact `c` overlaps along its normal where the solver bodies
     /// are now (negative: the gap between them).
-    float overlapOf(const Contact& c) const;
+    float overlapOf(const Contact& c) const {
+        return c.extent - c.sign * (bodies[c.ia].position[c.axis] - bodies[c.ib].position[c.axis]);
+    }
+
     /// Float noise in the overlap of `c` where the solver bodies are now: kMinimumSkin of
     /// the smaller half extent along the normal, and four float steps at the pair's
     /// coordinates. Overlap within the slop and this is within the slop.
-    float noiseOf(const Contact& c) const;
+    float noiseOf(const Contact& c) const {
+        const float pa = bodies[c.ia].position[c.axis], pb = bodies[c.ib].position[c.axis];
+        const float largest = std::max({std::abs(pa), std::abs(pb), c.extent});
+        return c.slop * noisePerSlop_ + 4.0f * ulpOf(largest);
+    }
+
     /// Whether the pair overlaps deeper than the slop, beyond float noise, where the
-    /// solver bodies are now.
-    bool beyondSlop(const Contact& c) const;
+    /// solver bodies are now. Centres that have passed each other are left alone, as
+    /// position correction leaves them.
+    bool beyondSlop(const Contact& c) const {
+        const float overlap = overlapOf(c);
+        return overlap <= c.extent && overlap - c.slop > noiseOf(c);
+    }
 
 private:
     /// kMinimumSkin of the smaller half extent, as a multiple of a contact's slop.
