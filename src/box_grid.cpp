@@ -10,11 +10,6 @@ namespace jostle {
 
 namespace {
 
-// Cell coordinates are clamped here, so that a window can add and subtract one without
-// overflow. Clamping keeps the order of cells, so a box beyond the limit is still found,
-// in a crowded edge cell: slower, never wrong. It takes a world 2^30 cells wide to reach.
-constexpr double kCellLimit = 1073741824.0;
-
 // A level is dense (an array of cells) when it has at most this many cells per box.
 constexpr std::int64_t kDenseCellsPerBox = 16;
 
@@ -31,17 +26,6 @@ int BoxGrid::levelOf(const Box& box) const {
     while (level < kLevels - 1 && levels_[level].size < size)
         ++level;
     return level;
-}
-
-BoxGrid::Cell BoxGrid::cellOf(Vec2 point, const Level& level) const {
-    auto coordinate = [&](float value) {
-        // floor() by hand: truncate, then step down for negative fractions. (std::floor
-        // is a library call on baseline x86-64, and this runs for every box and query.)
-        const double cell = std::clamp(double(value) * level.inverse, -kCellLimit, kCellLimit);
-        const auto truncated = std::int32_t(cell);
-        return truncated - std::int32_t(double(truncated) > cell);
-    };
-    return {coordinate(point.x), coordinate(point.y)};
 }
 
 std::size_t BoxGrid::hashOf(int level, Cell cell) const {
@@ -137,14 +121,14 @@ void BoxGrid::build(const std::vector<Box>& boxes) {
     levels_[kLevels - 1].inverse = 0.0;
 
     // Each box's level and cell, and the cells each level's boxes span.
-    levelOfBox_.resize(n);
+    keyOfBox_.resize(n);
     cellOfBox_.resize(n);
     std::uint32_t counts[kLevels] = {};
     Cell low[kLevels], high[kLevels];
     for (std::size_t i = 0; i < n; ++i) {
         const int level = levelOf(boxes_[i]);
         const Cell c = cellOf(boxes_[i].min, levels_[level]);
-        levelOfBox_[i] = std::uint8_t(level);
+        keyOfBox_[i] = std::uint32_t(level); // its key, once the levels are laid out
         cellOfBox_[i] = c;
         if (counts[level]++ == 0) {
             low[level] = high[level] = c;
@@ -175,21 +159,23 @@ void BoxGrid::build(const std::vector<Box>& boxes) {
         }
     }
     auto keyOf = [&](std::uint32_t i) {
-        const Level& level = levels_[levelOfBox_[i]];
+        const Level& level = levels_[keyOfBox_[i]];
         if (!level.dense)
-            return std::size_t(level.cellStart);
+            return level.cellStart;
         const Cell c = cellOfBox_[i];
         return level.cellStart +
-               std::size_t((std::int64_t(c.y) - level.low.y) * level.width + (c.x - level.low.x));
+               std::uint32_t((std::int64_t(c.y) - level.low.y) * level.width + (c.x - level.low.x));
     };
     // One counting sort by key: by level, then (dense levels) by cell, each cell's boxes
     // in insertion order.
     cells_.reset(keys);
-    for (std::uint32_t i = 0; i < n; ++i)
-        cells_.count(keyOf(i));
+    for (std::uint32_t i = 0; i < n; ++i) {
+        keyOfBox_[i] = keyOf(i);
+        cells_.count(keyOfBox_[i]);
+    }
     cells_.endCounting();
     for (std::uint32_t i = 0; i < n; ++i)
-        sorted_[cells_.place(keyOf(i))] = i;
+        sorted_[cells_.place(keyOfBox_[i])] = i;
     cells_.endPlacing();
 
     // A hashed level's boxes by cell, then insertion order.

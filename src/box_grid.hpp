@@ -44,6 +44,11 @@ public:
 
 private:
     static constexpr std::uint32_t kNone = UINT32_MAX;
+    /// Cell coordinates are clamped here, so that a window can add and subtract one
+    /// without overflow. Clamping keeps the order of cells, so a box beyond the limit is
+    /// still found, in a crowded edge cell: slower, never wrong. It takes a world 2^30
+    /// cells wide to reach.
+    static constexpr double kCellLimit = 1073741824.0;
     static constexpr int kLevels = 64;
 
     struct Cell {
@@ -97,8 +102,8 @@ private:
     /// that come after its own cell (and after it in its own cell).
     template <class Visit> void pairsWithinLevel(int level, Visit&& visit) const;
 
-    std::vector<Box> boxes_; ///< as given: bounds(i)
-    std::vector<std::uint8_t> levelOfBox_;
+    std::vector<Box> boxes_;              ///< as given: bounds(i)
+    std::vector<std::uint32_t> keyOfBox_; ///< build's scratch: each box's level, then key
     std::vector<Cell> cellOfBox_;
     std::vector<std::uint32_t> sorted_; ///< box indices by level, then cell, then index
     /// The boxes and their cells in the order of sorted_, so that the scans of a cell's
@@ -114,7 +119,18 @@ private:
     std::uint64_t usedLevels_ = 0; ///< bit k: level k has boxes
 };
 
-// --- Template definitions ----------------------------------------------------------------
+// --- Inline and template definitions -----------------------------------------------------
+
+inline BoxGrid::Cell BoxGrid::cellOf(Vec2 point, const Level& level) const {
+    auto coordinate = [&](float value) {
+        // floor() by hand: truncate, then step down for negative fractions. (std::floor
+        // is a library call on baseline x86-64, and this runs for every box and query.)
+        const double cell = std::clamp(double(value) * level.inverse, -kCellLimit, kCellLimit);
+        const auto truncated = std::int32_t(cell);
+        return truncated - std::int32_t(double(truncated) > cell);
+    };
+    return {coordinate(point.x), coordinate(point.y)};
+}
 
 template <class Visit>
 void BoxGrid::visitLevel(int levelIndex, const Box& query, Visit&& visit) const {
