@@ -43,6 +43,14 @@ void checkTranslation(const char* function, Vec2 centre, Vec2 translation) {
         fail(function, "centre + translation must be finite numbers");
 }
 
+/// The arguments of a moving box: a box, a translation it can make, a filter.
+void checkCast(const WorldState& w, const char* function, Vec2 centre, Vec2 half, Vec2 translation,
+               const QueryFilter& filter) {
+    checkBox(function, centre, half, false);
+    checkTranslation(function, centre, translation);
+    checkFilter(w, filter, function);
+}
+
 // --- What is here? -----------------------------------------------------------------------
 
 /// Fills `out` with the bodies that pass the filter and for which inside(body) holds,
@@ -294,9 +302,7 @@ std::vector<RayHit> rayCastAll(const World& world, Vec2 from, Vec2 to, const Que
 std::optional<BoxCastHit> boxCast(const World& world, Vec2 centre, Vec2 half, Vec2 translation,
                                   const QueryFilter& filter) {
     const WorldState& w = WorldAccess::state(world);
-    checkBox("boxCast", centre, half, false);
-    checkTranslation("boxCast", centre, translation);
-    checkFilter(w, filter, "boxCast");
+    checkCast(w, "boxCast", centre, half, translation, filter);
     const Candidates candidates(w);
     FirstStop stop;
     firstStop(w, candidates, centre, half, translation, filter, true, stop);
@@ -309,9 +315,7 @@ std::optional<BoxCastHit> boxCast(const World& world, Vec2 centre, Vec2 half, Ve
 MoveResult moveAndSlide(const World& world, Vec2 centre, Vec2 half, Vec2 translation,
                         const QueryFilter& filter) {
     const WorldState& w = WorldAccess::state(world);
-    checkBox("moveAndSlide", centre, half, false);
-    checkTranslation("moveAndSlide", centre, translation);
-    checkFilter(w, filter, "moveAndSlide");
+    checkCast(w, "moveAndSlide", centre, half, translation, filter);
     const Candidates candidates(w);
     MoveResult result{centre, {}};
     Vec2 left = translation;

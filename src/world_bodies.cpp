@@ -97,6 +97,17 @@ void require(const char* function, const char* what, properties::Rule rule, floa
         fail(function, std::string(what) + " " + problem);
 }
 
+/// A setter of a setting a body keeps as given: the argument checked by its property's
+/// rule, stored, and the body disturbed (docs/sleeping.md).
+template <class T>
+void setKept(WorldState& w, BodyId id, const char* function, const char* what,
+             const properties::Property& property, T Body::*member, T value) {
+    Body& b = lookUp(w, id, function);
+    require(function, what, property.rule, value);
+    b.*member = value;
+    disturb(w, id.index);
+}
+
 } // namespace
 
 BodyDef World::bodyDef(BodyId id) const {
@@ -173,10 +184,7 @@ float World::bounce(BodyId id) const {
 }
 
 void World::setBounce(BodyId id, float bounce) {
-    Body& b = lookUp(*state_, id, "setBounce");
-    require("setBounce", "bounce", properties::kBounce.rule, bounce);
-    b.bounce = bounce;
-    disturb(*state_, id.index);
+    setKept(*state_, id, "setBounce", "bounce", properties::kBounce, &Body::bounce, bounce);
 }
 
 float World::friction(BodyId id) const {
@@ -184,10 +192,8 @@ float World::friction(BodyId id) const {
 }
 
 void World::setFriction(BodyId id, float friction) {
-    Body& b = lookUp(*state_, id, "setFriction");
-    require("setFriction", "friction", properties::kFriction.rule, friction);
-    b.friction = friction;
-    disturb(*state_, id.index);
+    setKept(*state_, id, "setFriction", "friction", properties::kFriction, &Body::friction,
+            friction);
 }
 
 float World::mass(BodyId id) const {
@@ -218,10 +224,8 @@ float World::gravityScale(BodyId id) const {
 }
 
 void World::setGravityScale(BodyId id, float scale) {
-    Body& b = lookUp(*state_, id, "setGravityScale");
-    require("setGravityScale", "scale", properties::kGravityScale.rule, scale);
-    b.gravityScale = scale;
-    disturb(*state_, id.index);
+    setKept(*state_, id, "setGravityScale", "scale", properties::kGravityScale, &Body::gravityScale,
+            scale);
 }
 
 float World::damping(BodyId id) const {
@@ -229,10 +233,7 @@ float World::damping(BodyId id) const {
 }
 
 void World::setDamping(BodyId id, float damping) {
-    Body& b = lookUp(*state_, id, "setDamping");
-    require("setDamping", "damping", properties::kDamping.rule, damping);
-    b.damping = damping;
-    disturb(*state_, id.index);
+    setKept(*state_, id, "setDamping", "damping", properties::kDamping, &Body::damping, damping);
 }
 
 bool World::isBullet(BodyId id) const {
