@@ -48,21 +48,25 @@ public:
         std::vector<std::uint32_t> toWake;
         // The moving grid holds its bodies in creation order: the smaller index is `a`.
         w_.movingGrid.forEachPair([&](std::uint32_t i, std::uint32_t j) {
-            if (w_.movingDynamic[i] || w_.movingDynamic[j])
-                pairs_.push_back({w_.movingSlots[std::min(i, j)], w_.movingSlots[std::max(i, j)]});
+            const std::uint32_t a = w_.movingSlots[std::min(i, j)];
+            const std::uint32_t b = w_.movingSlots[std::max(i, j)];
+            if (w_.movingDynamic[i] || w_.movingDynamic[j] || oneIsSensor(a, b))
+                pairs_.push_back({a, b});
         });
         for (std::uint32_t i = 0; i < w_.movingSlots.size(); ++i) {
             const std::uint32_t a = w_.movingSlots[i];
             const Body& body = w_.slots[a];
+            // A kinematic body at rest wakes nobody, and meets only sensors (a character
+            // moved by setPosition picks up a coin).
             const bool moving = body.velocity.x != 0.0f || body.velocity.y != 0.0f;
-            if (!body.isDynamic() && !moving)
-                continue; // a kinematic body at rest neither meets statics nor wakes anyone
             w_.restingGrid.query(w_.movingGrid.bounds(i), [&](std::uint32_t k) {
                 const std::uint32_t b = w_.restingSlots[k];
-                if (w_.slots[b].asleep)
-                    toWake.push_back(b);
-                else if (body.isDynamic())
+                if (w_.slots[b].asleep) {
+                    if (body.isDynamic() || moving)
+                        toWake.push_back(b);
+                } else if (body.isDynamic() || oneIsSensor(a, b)) {
                     add(a, b);
+                }
             });
         }
         for (std::uint32_t slot : toWake)
@@ -85,6 +89,11 @@ private:
             }
         }
         w_.movingGrid.build(bounds_);
+    }
+
+    /// A sensor and a body it may report: sensors see every body that moves.
+    bool oneIsSensor(std::uint32_t a, std::uint32_t b) const {
+        return w_.slots[a].sensor != w_.slots[b].sensor;
     }
 
     void add(std::uint32_t a, std::uint32_t b) {

@@ -11,14 +11,21 @@ namespace jostle {
 
 namespace {
 
-/// A pair the step did not look at: neither body is an awake dynamic body.
-bool notEvaluated(const WorldState& world, const TouchRecord& record) {
+/// A contact the step did not look at: neither body is an awake dynamic body.
+bool contactNotEvaluated(const WorldState& world, const TouchRecord& record) {
     auto resting = [&](BodyId id) {
         const Body& body = world.slots[id.index];
         return !body.isDynamic() || body.asleep;
     };
     return world.isCurrent(record.a) && world.isCurrent(record.b) && resting(record.a) &&
            resting(record.b);
+}
+
+/// A sensor overlap the step did not look at: one of the two sleeps. Sensors see every
+/// body that moves, kinematic ones included, at every step.
+bool sensorNotEvaluated(const WorldState& world, const TouchRecord& record) {
+    return world.isCurrent(record.a) && world.isCurrent(record.b) &&
+           (world.slots[record.a.index].asleep || world.slots[record.b.index].asleep);
 }
 
 /// Sorts `records` by pair (a's slot, then b's) in two stable counting sorts, by b then by
@@ -35,10 +42,10 @@ void sortByPair(std::vector<TouchRecord>& records, std::vector<TouchRecord>& scr
 /// pairs only in `now` begin; pairs only in `before` end, unless the step did not look
 /// at them (then they carry over); a slot pair holding other bodies than before ends
 /// and begins. `before` becomes the new list.
-template <class OnBegin, class OnEnd>
+template <class NotEvaluated, class OnBegin, class OnEnd>
 void compare(const WorldState& world, std::vector<TouchRecord>& now,
-             std::vector<TouchRecord>& before, std::vector<TouchRecord>& out, OnBegin&& begin,
-             OnEnd&& end) {
+             std::vector<TouchRecord>& before, std::vector<TouchRecord>& out,
+             NotEvaluated&& notEvaluated, OnBegin&& begin, OnEnd&& end) {
     out.clear();
     std::size_t i = 0, j = 0;
     while (i < now.size() || j < before.size()) {
@@ -134,7 +141,7 @@ void StepEvents::publish(const WorldState& world, bool anyAwake) {
     destroyedSincePublish = false;
     sortByPair(contactsNow, scratch_, buckets_, world.slots.size());
     compare(
-        world, contactsNow, contactsBefore_, scratch_,
+        world, contactsNow, contactsBefore_, scratch_, contactNotEvaluated,
         [&](const TouchRecord& r) {
             begins.push_back({r.a, r.b, r.normal, r.approachSpeed});
         },
@@ -143,7 +150,7 @@ void StepEvents::publish(const WorldState& world, bool anyAwake) {
         });
     sortByPair(sensorsNow, scratch_, buckets_, world.slots.size());
     compare(
-        world, sensorsNow, sensorsBefore_, scratch_,
+        world, sensorsNow, sensorsBefore_, scratch_, sensorNotEvaluated,
         [&](const TouchRecord& r) {
             sensorBegins.push_back({r.a, r.b});
         },

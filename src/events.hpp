@@ -47,8 +47,8 @@ struct StepEvents {
     /// Turns this step's lists into begin and end events against the last step's, and
     /// keeps them for the next step. Pairs that were not looked at this step (neither
     /// body an awake dynamic one: a sleeping pile on its floor) carry over unchanged.
-    /// `anyAwake`: whether the step had any awake dynamic body (if not, and nothing was
-    /// destroyed, there is nothing to compare).
+    /// `anyAwake`: whether the step had any awake dynamic or kinematic body (if not, and
+    /// nothing was destroyed, there is nothing to compare).
     void publish(const WorldState& world, bool anyAwake);
 
     /// Set by destroyBody: the next publish must look for the pairs it ended.

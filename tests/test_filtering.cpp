@@ -82,6 +82,52 @@ TEST_P(BothModels, ASensorReportsOverlapsAndPushesNothing) {
     EXPECT_NEAR(world.position(box).y, -5.0f, 0.1f); // landed on the floor below
 }
 
+/// Counts the begins and ends of `sensor` with `visitor` over `steps` steps, calling
+/// move(step) before each.
+template <class Move>
+std::pair<int, int> sensorEvents(World& world, BodyId sensor, BodyId visitor, int steps,
+                                 Move&& move) {
+    int begins = 0, ends = 0;
+    for (int i = 0; i < steps; ++i) {
+        move(i);
+        world.step(kDt);
+        for (const SensorEvent& e : world.sensorBegins())
+            begins += e.sensor == sensor && e.visitor == visitor;
+        for (const SensorEvent& e : world.sensorEnds())
+            ends += e.sensor == sensor && e.visitor == visitor;
+    }
+    return {begins, ends};
+}
+
+TEST_P(BothModels, ASensorSeesAKinematicBodyMovedByItsVelocity) {
+    // A coin 100 units to the right of a kinematic character moving at 120/s: the
+    // character (hw 5) reaches it (hw 5) after 90 units, 0.75 s, and leaves it 20 units
+    // later; two seconds cover both.
+    for (BodyType sensorType : {BodyType::Static, BodyType::Kinematic}) {
+        BodyId coin = world.createBody(
+            {.type = sensorType, .x = 100, .y = -100, .hw = 5, .hh = 5, .sensor = true});
+        BodyId character = world.createBody(
+            {.type = BodyType::Kinematic, .x = 0, .y = -100, .hw = 5, .hh = 5, .vx = 120});
+        EXPECT_EQ(sensorEvents(world, coin, character, 120, [](int) {}), std::make_pair(1, 1))
+            << toString(sensorType) << " sensor";
+        world.destroyBody(coin);
+        world.destroyBody(character);
+    }
+}
+
+TEST_P(BothModels, ASensorSeesAKinematicBodyMovedByHand) {
+    // The docs' character: a kinematic body at rest, moved by setPosition 2 units a step.
+    BodyId coin = world.createBody(
+        {.type = BodyType::Static, .x = 100, .y = -100, .hw = 5, .hh = 5, .sensor = true});
+    BodyId character =
+        world.createBody({.type = BodyType::Kinematic, .x = 0, .y = -100, .hw = 5, .hh = 5});
+    const auto [begins, ends] = sensorEvents(world, coin, character, 120, [&](int step) {
+        world.setPosition(character, {2.0f * float(step), -100});
+    });
+    EXPECT_EQ(begins, 1);
+    EXPECT_EQ(ends, 1);
+}
+
 INSTANTIATE_TEST_SUITE_P(Models, BothModels, ::testing::Values(Solver::Classic, Solver::Physical),
                          [](const ::testing::TestParamInfo<Solver>& model) {
                              return model.param == Solver::Classic ? "Classic" : "Physical";

@@ -62,6 +62,7 @@ public:
             }
         }
         buildGrids();
+        reportKinematicVisitors();
 
         // move dynamic objects, then check and resolve their collisions
         for (std::size_t i = 0; i < dynamics_.size(); ++i) {
@@ -117,6 +118,24 @@ private:
         w_.movingGrid.build(dynamic);
         w_.movingSlots = dynamics_;
         builtAt_ = w_.changes;
+    }
+
+    /// Sensors see kinematic bodies too, which the tutorial's loop never resolves: each
+    /// kinematic body, where it has moved to, against the static and kinematic sensors it
+    /// overlaps.
+    void reportKinematicVisitors() {
+        for (std::uint32_t k : kinematicSlots_) {
+            const Body& visitor = w_.slots[k];
+            const Box box = visitor.box();
+            auto consider = [&](std::uint32_t s) {
+                const Body& sensor = w_.slots[s];
+                if (s != k && sensor.sensor && !visitor.sensor && canCollide(sensor, visitor) &&
+                    overlaps(sensor.box(), box))
+                    recordSensor(w_, s, k);
+            };
+            w_.restingGrid.query(box, [&](std::uint32_t i) { consider(w_.restingSlots[i]); });
+            kinematicGrid_.query(box, [&](std::uint32_t i) { consider(kinematicSlots_[i]); });
+        }
     }
 
     /// A callback changed bodies (moved one, say): the grids are rebuilt from where the

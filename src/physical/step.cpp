@@ -15,7 +15,6 @@
 #include "step_context.hpp"
 #include "support.hpp"
 
-#include <algorithm>
 
 namespace jostle {
 
@@ -37,9 +36,8 @@ void stepPhysical(WorldState& world, float dt) {
     rememberPlatformVelocities(step);
     if (world.def.sleeping)
         fallAsleep(step);
-    const bool anyAwake = std::find(world.movingDynamic.begin(), world.movingDynamic.end(),
-                                    std::uint8_t{1}) != world.movingDynamic.end();
-    world.events.publish(world, anyAwake);
+    // Kinematic bodies count: sensors see them.
+    world.events.publish(world, !world.movingSlots.empty());
 }
 
 } // namespace jostle
