@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 namespace jostle {
 
@@ -52,16 +53,27 @@ struct Facing {
     float skin;
 };
 
-/// Where a contact's normal is chosen: the axis geometry.hpp's contactAxis picks, unless
-/// the pair meets at a corner that is a seam between two static bodies; then the face
-/// that axis would push on is inside the level, and the other axis is the one.
-Facing chooseNormal(const StepContext& step, const Body& a, const Body& b) {
+/// Where a contact's normal is chosen, or nothing if the pair cannot meet in this step.
+/// The axis is geometry.hpp's contactAxis, with two exceptions at corners:
+/// - A dynamic body apart on both axes from a static or kinematic one meets it where its
+///   path across the step first touches it, and not at all if the path clears it: a box
+///   rising past a ledge does not hit the ledge's side.
+/// - If the corner is a seam between two static bodies, the face the contact would push
+///   on is inside the level, and the other axis is the one.
+std::optional<Facing> chooseNormal(const StepContext& step, const Body& a, const Body& b) {
     const Vec2 d = a.position - b.position;
     const float gapX = std::abs(d.x) - (a.half.x + b.half.x);
     const float gapY = std::abs(d.y) - (a.half.y + b.half.y);
     const float skinX = step.skinOf(a.half.x, b.half.x);
     const float skinY = step.skinOf(a.half.y, b.half.y);
     bool alongX = contactAxis(gapX, gapY, skinX, skinY) == Axis::X;
+    if (gapX > skinX && gapY > skinY && (a.invMass == 0.0f || b.invMass == 0.0f)) {
+        const std::optional<Hit> path =
+            sweepBox(d, a.half + b.half, (a.velocity - b.velocity) * step.dt, Vec2{});
+        if (!path)
+            return std::nullopt;
+        alongX = path->axis == 0;
+    }
     if (gapX >= -skinX && gapY >= -skinY && a.type != b.type &&
         (a.type == BodyType::Static || b.type == BodyType::Static)) {
         const bool aStatic = a.type == BodyType::Static;
@@ -69,8 +81,8 @@ Facing chooseNormal(const StepContext& step, const Body& a, const Body& b) {
             alongX = !alongX;
     }
     if (alongX)
-        return {Vec2{d.x < 0.0f ? -1.0f : 1.0f, 0.0f}, gapX, skinX};
-    return {Vec2{0.0f, d.y < 0.0f ? -1.0f : 1.0f}, gapY, skinY};
+        return Facing{Vec2{d.x < 0.0f ? -1.0f : 1.0f, 0.0f}, gapX, skinX};
+    return Facing{Vec2{0.0f, d.y < 0.0f ? -1.0f : 1.0f}, gapY, skinY};
 }
 
 /// Apart along `normal` by `gap`, and neither body moving fast enough towards the other
@@ -156,7 +168,10 @@ void buildContacts(StepContext& step) {
                 step.scratch.sensorPairs.push_back(a.sensor ? pair : BodyPair{pair.b, pair.a});
             continue;
         }
-        const auto [normal, gap, skin] = chooseNormal(step, a, b);
+        const std::optional<Facing> facing = chooseNormal(step, a, b);
+        if (!facing)
+            continue;
+        const auto [normal, gap, skin] = *facing;
         if (staysApart(a, b, normal, gap, step.dt))
             continue;
         // The normal points from b towards a; a pair touching within the skin was on the
