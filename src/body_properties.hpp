@@ -160,6 +160,8 @@ inline constexpr Property kCategory{"category", Rule::Any, std::uint32_t{1}};
 inline constexpr Property kMask{"mask", Rule::Any, std::uint32_t{0xFFFFFFFF}};
 inline constexpr Property kSensor{"sensor", Rule::Any, false};
 inline constexpr Property kUserData{"userData", Rule::Any, static_cast<void*>(nullptr)};
+inline constexpr Property kCharacter{"character", Rule::Any, false};
+inline constexpr Property kWallFriction{"wallFriction", Rule::Unit, 0.0f};
 /// A tile map's own: the side of its square tiles (checkTileMapDef has its further rules).
 inline constexpr Property kTile{"tile", Rule::Finite, 0.0f, true};
 
@@ -232,6 +234,8 @@ inline constexpr BodyField kBodyFields[] = {
     {kMask, &BodyDef::mask, &jostle_body_def::mask},
     {kSensor, &BodyDef::sensor, &jostle_body_def::sensor},
     {kUserData, &BodyDef::userData, &jostle_body_def::user_data},
+    {kCharacter, &BodyDef::character, &jostle_body_def::character},
+    {kWallFriction, &BodyDef::wallFriction, &jostle_body_def::wall_friction},
 };
 
 /// TileMapDef's members but its rows, which are a map's alone, in tilemap.hpp's order.

@@ -74,29 +74,25 @@ void compare(const WorldState& world, std::vector<TouchRecord>& now,
 } // namespace
 
 void recordContact(WorldState& world, std::uint32_t body, std::uint32_t other, Vec2 normal,
-                   float approachSpeed) {
+                   float approachSpeed, float impulse, Vec2 point) {
     StepEvents& events = world.events;
-    const Vec2 down = events.down;
-    const Vec2 right{down.y, -down.x};
-    auto flag = [&](std::uint32_t slot, Vec2 push) {
-        // `push`: the direction the surface pushes the body.
-        const float vertical = dot(push, down);
-        std::uint8_t bit;
-        if (vertical < -0.5f)
-            bit = kFloor;
-        else if (vertical > 0.5f)
-            bit = kCeiling;
-        else
-            bit = dot(push, right) < 0.0f ? kWallRight : kWallLeft;
-        events.touching[slot] |= bit;
+    // `push`: the direction the surface pushes the body.
+    auto note = [&](std::uint32_t slot, std::uint32_t by, Vec2 push) {
+        const TouchingBit surface = surfaceOf(push, events.down);
+        events.touching[slot] |= surface;
+        GroundRecord& ground = events.ground[slot];
+        if (surface == kFloor && (ground.body.isNull() || impulse > ground.impulse))
+            ground = {world.idOf(by), push, impulse};
     };
-    flag(body, normal);
-    flag(other, -normal);
+    note(body, other, normal);
+    note(other, body, -normal);
     // Listed with the body created first as `a`, the normal pointing towards it.
     if (world.createdBefore(body, other))
-        events.contactsNow.push_back({world.idOf(body), world.idOf(other), normal, approachSpeed});
+        events.contactsNow.push_back(
+            {world.idOf(body), world.idOf(other), normal, approachSpeed, point, impulse});
     else
-        events.contactsNow.push_back({world.idOf(other), world.idOf(body), -normal, approachSpeed});
+        events.contactsNow.push_back(
+            {world.idOf(other), world.idOf(body), -normal, approachSpeed, point, impulse});
 }
 
 void recordSensor(WorldState& world, std::uint32_t sensor, std::uint32_t visitor) {
@@ -112,6 +108,7 @@ void StepEvents::beginStep(const WorldState& world) {
     contactsNow.clear();
     sensorsNow.clear();
     touching.resize(world.slots.size(), 0);
+
     // "Down" is where gravity pulls; with none, the screen's down (y grows downward).
     const Vec2 g = world.def.gravity;
     down = g == Vec2{} ? Vec2{0.0f, 1.0f} : g * (1.0f / length(g));
@@ -120,6 +117,15 @@ void StepEvents::beginStep(const WorldState& world) {
         const Body& body = world.slots[id.index];
         if (body.isDynamic() && !body.asleep)
             touching[id.index] = 0;
+    }
+}
+
+void StepEvents::beginGrounds(const WorldState& world) {
+    ground.resize(world.slots.size());
+    for (BodyId id : world.order) {
+        const Body& body = world.slots[id.index];
+        if (body.isDynamic() && !body.asleep)
+            ground[id.index] = {};
     }
 }
 
@@ -143,11 +149,12 @@ void StepEvents::publish(const WorldState& world, bool anyAwake) {
     compare(
         world, contactsNow, contactsBefore_, scratch_, contactNotEvaluated,
         [&](const TouchRecord& r) {
-            begins.push_back({r.a, r.b, r.normal, r.approachSpeed});
+            begins.push_back({r.a, r.b, r.normal, r.approachSpeed, r.point});
         },
         [&](const TouchRecord& r) {
-            ends.push_back({r.a, r.b, r.normal, 0.0f});
+            ends.push_back({r.a, r.b, r.normal, 0.0f, r.point});
         });
+    indexTouches(world.slots.size());
     sortByPair(sensorsNow, scratch_, buckets_, world.slots.size());
     compare(
         world, sensorsNow, sensorsBefore_, scratch_, sensorNotEvaluated,
@@ -157,6 +164,20 @@ void StepEvents::publish(const WorldState& world, bool anyAwake) {
         [&](const TouchRecord& r) {
             sensorEnds.push_back({r.a, r.b});
         });
+}
+
+void StepEvents::indexTouches(std::size_t slotCount) {
+    touchesBySlot_.reset(slotCount);
+    for (const TouchRecord& r : contactsBefore_) {
+        touchesBySlot_.count(r.a.index);
+        touchesBySlot_.count(r.b.index);
+    }
+    touchIndex_.resize(touchesBySlot_.endCounting());
+    for (std::uint32_t k = 0; k < contactsBefore_.size(); ++k) {
+        touchIndex_[touchesBySlot_.place(contactsBefore_[k].a.index)] = k;
+        touchIndex_[touchesBySlot_.place(contactsBefore_[k].b.index)] = k;
+    }
+    touchesBySlot_.endPlacing();
 }
 
 void StepEvents::clear() {

@@ -18,6 +18,8 @@ struct TouchRecord {
     BodyId a, b; ///< contacts: a created first; sensors: a is the sensor
     Vec2 normal;
     float approachSpeed = 0.0f;
+    Vec2 point;
+    float impulse = 0.0f;
 
     std::uint64_t key() const { return std::uint64_t(a.index) << 32 | b.index; }
 };
@@ -30,12 +32,33 @@ enum TouchingBit : std::uint8_t {
     kWallRight = 8,
 };
 
+/// What a surface that pushes a body along `push` is to it, with gravity along `down`
+/// (both unit): a floor pushes against gravity (within 60 degrees), a ceiling with it,
+/// a wall sideways.
+inline TouchingBit surfaceOf(Vec2 push, Vec2 down) {
+    const float vertical = dot(push, down);
+    if (vertical < -0.5f)
+        return kFloor;
+    if (vertical > 0.5f)
+        return kCeiling;
+    return dot(push, Vec2{down.y, -down.x}) < 0.0f ? kWallRight : kWallLeft;
+}
+
+/// What a body stands on: the body that pushed it up hardest in its last evaluated step.
+struct GroundRecord {
+    BodyId body; ///< null: nothing
+    Vec2 normal;
+    float impulse = 0.0f;
+};
+
 struct StepEvents {
     std::vector<ContactEvent> begins, ends;
     std::vector<SensorEvent> sensorBegins, sensorEnds;
     std::vector<CrushEvent> crushes;
     /// TouchingBit flags by slot, from the last step that evaluated the body.
     std::vector<std::uint8_t> touching;
+    /// What each body stands on, by slot, from the last step that evaluated it.
+    std::vector<GroundRecord> ground;
     /// Unit "down" for the touching flags this step, set by beginStep().
     Vec2 down{0.0f, 1.0f};
 
@@ -44,6 +67,9 @@ struct StepEvents {
 
     /// Empties the outputs and the lists of the step about to run.
     void beginStep(const WorldState& world);
+    /// Forgets the grounds of the bodies the step evaluates, which it records afresh:
+    /// after the characters have walked on the last step's (characters.hpp).
+    void beginGrounds(const WorldState& world);
     /// Turns this step's lists into begin and end events against the last step's, and
     /// keeps them for the next step. Pairs that were not looked at this step (neither
     /// body an awake dynamic one: a sleeping pile on its floor) carry over unchanged.
@@ -56,20 +82,32 @@ struct StepEvents {
     /// Forgets everything (the model changed).
     void clear();
 
-    /// The pairs that touched at the end of the last step.
+    /// The pairs that touched at the end of the last step, sorted by pair.
     const std::vector<TouchRecord>& touchingBefore() const { return contactsBefore_; }
+    /// Calls visit(record) for each pair of touchingBefore() that `slot` is part of.
+    template <class Visit> void forEachTouchOf(std::uint32_t slot, Visit&& visit) const {
+        if (slot >= touchesBySlot_.keyCount())
+            return;
+        for (std::uint32_t k = touchesBySlot_.begin(slot); k < touchesBySlot_.end(slot); ++k)
+            visit(contactsBefore_[touchIndex_[k]]);
+    }
 
 private:
     std::vector<TouchRecord> contactsBefore_, sensorsBefore_;
     std::vector<TouchRecord> scratch_;
     Buckets buckets_;
+    /// contactsBefore_ by slot: each slot's run of indices into it (forEachTouchOf).
+    Buckets touchesBySlot_;
+    std::vector<std::uint32_t> touchIndex_;
+    void indexTouches(std::size_t slotCount);
 };
 
 /// Records that two bodies touch at the end of this step: `normal` points from `other`
-/// towards `body`, `approachSpeed` is how fast they closed. Sets both bodies' touching
-/// flags.
+/// towards `body`, `approachSpeed` is how fast they closed, `impulse` how hard they
+/// pushed each other (0 where the model does not say), `point` where they touch. Sets
+/// both bodies' touching flags and grounds.
 void recordContact(WorldState& world, std::uint32_t body, std::uint32_t other, Vec2 normal,
-                   float approachSpeed);
+                   float approachSpeed, float impulse, Vec2 point);
 
 /// Records that `visitor` overlaps `sensor` at the end of this step.
 void recordSensor(WorldState& world, std::uint32_t sensor, std::uint32_t visitor);

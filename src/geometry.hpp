@@ -53,6 +53,21 @@ inline bool overlaps(const Box& a, const Box& b) {
 /// signs come from the offset, so coincident centres push `a` towards +x or +y.
 std::optional<Vec2> shortestSeparation(Vec2 offset, Vec2 reach);
 
+/// Where two boxes touch along `normal` (unit, along x or y, from b towards a): halfway
+/// between the faces they turn to each other, at the middle of their overlap along them.
+inline Vec2 touchPoint(const Box& a, const Box& b, Vec2 normal) {
+    const int axis = normal.x != 0.0f ? 0 : 1;
+    const int along = 1 - axis;
+    const bool aAfter = normal[axis] > 0.0f; // a lies on the + side of b
+    const float aFace = aAfter ? a.min[axis] : a.max[axis];
+    const float bFace = aAfter ? b.max[axis] : b.min[axis];
+    Vec2 point;
+    point[axis] = 0.5f * (aFace + bFace);
+    point[along] = 0.5f * (std::max(a.min[along], b.min[along]) +
+                           std::min(a.max[along], b.max[along]));
+    return point;
+}
+
 inline constexpr float kMinimumSkin = 1e-4f; ///< of the smaller half extent: float noise
 
 /// The gap from |x| to the next float up: how finely coordinates near x are resolved.

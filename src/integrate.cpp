@@ -30,6 +30,16 @@ void integrateVelocity(const WorldDef& def, Body& body, float dt) {
     }
 }
 
+void applyForces(WorldState& world, float dt) {
+    for (const auto& [id, force] : world.forces) {
+        if (!world.isCurrent(id))
+            continue; // destroyed since
+        Body& body = world.slots[id.index];
+        body.velocity += force * (body.invMass * dt);
+    }
+    world.forces.clear();
+}
+
 void integrateAwakeBodies(WorldState& world, float dt) {
     for (BodyId id : world.order) {
         Body& body = world.slots[id.index];

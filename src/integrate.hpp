@@ -12,6 +12,10 @@ struct WorldState;
 /// them at the start of a step: the tutorial's `d.yv = d.yv + grav` and clampVec.
 void integrateVelocity(const WorldDef& def, Body& body, float dt);
 
+/// The forces applied since the last step act for this one (World::applyForce), and
+/// are cleared. Both models, before they integrate velocities.
+void applyForces(WorldState& world, float dt);
+
 /// The physical model's first stage: integrateVelocity for every awake dynamic body, and
 /// the time each one has left to drop through one-way platforms counts down.
 void integrateAwakeBodies(WorldState& world, float dt);

@@ -109,6 +109,33 @@ std::span<const CrushEvent> World::crushes() const {
     return state_->events.crushes;
 }
 
+void World::contacts(BodyId id, std::vector<ContactInfo>& out) const {
+    lookUp(*state_, id, "contacts");
+    out.clear();
+    state_->events.forEachTouchOf(id.index, [&](const TouchRecord& r) {
+        if (r.a != id && r.b != id)
+            return; // of the slot's previous body
+        const bool isA = r.a == id;
+        out.push_back({isA ? r.b : r.a, isA ? r.normal : -r.normal, r.point, r.impulse});
+    });
+}
+
+std::vector<ContactInfo> World::contacts(BodyId id) const {
+    std::vector<ContactInfo> out;
+    contacts(id, out);
+    return out;
+}
+
+bool World::isTouching(BodyId a, BodyId b) const {
+    lookUp(*state_, a, "isTouching");
+    lookUp(*state_, b, "isTouching");
+    bool touching = false;
+    state_->events.forEachTouchOf(a.index, [&](const TouchRecord& r) {
+        touching = touching || (r.a == a && r.b == b) || (r.a == b && r.b == a);
+    });
+    return touching;
+}
+
 Touching World::touching(BodyId id) const {
     lookUp(*state_, id, "touching");
     const std::vector<std::uint8_t>& flags = state_->events.touching;

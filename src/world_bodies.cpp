@@ -35,6 +35,8 @@ template <class F> void forEachKeptSetting(F&& f) {
     f(&BodyDef::mask, &Body::mask);
     f(&BodyDef::sensor, &Body::sensor);
     f(&BodyDef::userData, &Body::userData);
+    f(&BodyDef::character, &Body::character);
+    f(&BodyDef::wallFriction, &Body::wallFriction);
 }
 
 } // namespace
@@ -270,6 +272,68 @@ void World::dropThrough(BodyId id, float seconds) {
     if (!(seconds >= 0.0f) || !std::isfinite(seconds))
         fail("dropThrough", "seconds must be a finite number >= 0");
     body.dropThroughTime = seconds;
+    disturb(*state_, id.index);
+}
+
+// --- Characters ---------------------------------------------------------------------------
+
+bool World::isCharacter(BodyId id) const {
+    return lookUp(*state_, id, "isCharacter").character;
+}
+
+void World::setCharacter(BodyId id, bool character) {
+    lookUp(*state_, id, "setCharacter").character = character;
+    disturb(*state_, id.index);
+}
+
+float World::wallFriction(BodyId id) const {
+    return lookUp(*state_, id, "wallFriction").wallFriction;
+}
+
+void World::setWallFriction(BodyId id, float friction) {
+    setKept(*state_, id, "setWallFriction", "friction", properties::kWallFriction,
+            &Body::wallFriction, friction);
+}
+
+float World::walkSpeed(BodyId id) const {
+    return lookUp(*state_, id, "walkSpeed").walkSpeed;
+}
+
+void World::setWalkSpeed(BodyId id, float speed) {
+    Body& b = lookUp(*state_, id, "setWalkSpeed");
+    requireFinite("setWalkSpeed", "speed", speed);
+    if (b.walkSpeed == speed)
+        return; // a standing character, told to stand every frame, may sleep
+    b.walkSpeed = speed;
+    disturb(*state_, id.index);
+}
+
+std::optional<Ground> World::ground(BodyId id) const {
+    lookUp(*state_, id, "ground");
+    const std::vector<GroundRecord>& grounds = state_->events.ground;
+    if (id.index >= grounds.size() || !state_->isCurrent(grounds[id.index].body))
+        return std::nullopt;
+    const GroundRecord& g = grounds[id.index];
+    return Ground{g.body, g.normal, state_->slots[g.body.index].velocity};
+}
+
+// --- Forces -------------------------------------------------------------------------------
+
+void World::applyForce(BodyId id, Vec2 force) {
+    const Body& b = lookUp(*state_, id, "applyForce");
+    requireFinite("applyForce", "force", force);
+    if (!b.isDynamic())
+        return;
+    state_->forces.push_back({id, force});
+    disturb(*state_, id.index);
+}
+
+void World::applyImpulse(BodyId id, Vec2 impulse) {
+    Body& b = lookUp(*state_, id, "applyImpulse");
+    requireFinite("applyImpulse", "impulse", impulse);
+    if (!b.isDynamic())
+        return;
+    b.velocity += impulse * b.invMass;
     disturb(*state_, id.index);
 }
 

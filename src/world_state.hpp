@@ -14,6 +14,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace jostle {
@@ -46,6 +47,8 @@ struct alignas(64) Body {
 
     // --- Read once a step, or less ---
     bool bullet = false;
+    /// BodyDef::character: walks at walkSpeed, rubs only on floors (docs/characters.md).
+    bool character = false;
     /// Sum of the separation vectors applied to this body during the last step.
     Vec2 separation;
     float mass = 0.0f; ///< explicit mass, or 0 for density × area
@@ -60,6 +63,10 @@ struct alignas(64) Body {
     float sleepTime = 0.0f;
     /// While asleep: the index of its island in WorldState::islands.
     std::uint32_t island = 0;
+    /// A character's friction against walls and ceilings.
+    float wallFriction = 0.0f;
+    /// The speed a character walks at, along its ground and relative to it.
+    float walkSpeed = 0.0f;
 
     bool isDynamic() const { return type == BodyType::Dynamic; }
     /// The mass it has as a dynamic body: explicit, or density × area.
@@ -80,6 +87,7 @@ struct alignas(64) Body {
 };
 
 static_assert(offsetof(Body, asleep) < 64, "the hot part of Body fits one cache line");
+static_assert(sizeof(Body) == 128, "a Body is two cache lines");
 
 /// The filter rule: each one's category shares a bit with the other's mask.
 inline bool canCollide(const Body& a, const Body& b) {
@@ -131,6 +139,9 @@ struct WorldState {
     BoxGrid movingGrid;
     std::vector<std::uint32_t> movingSlots;  ///< grid index -> slot, in creation order
     std::vector<std::uint8_t> movingDynamic; ///< grid index -> is the body dynamic
+
+    /// Forces applied since the last step (World::applyForce), in the order given.
+    std::vector<std::pair<BodyId, Vec2>> forces;
 
     /// Counts changes made to bodies through the API (see disturb), so that a step can
     /// tell that a callback moved something under its feet.

@@ -5,7 +5,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -100,6 +103,212 @@ TEST(Corners, ABoxFallingOntoALedgeCornerLandsOnItsTop) {
     EXPECT_FLOAT_EQ(world.velocity(lands).y, 120.0f);
     EXPECT_NEAR(world.position(lands).y, -8.0f, 1e-3f);
 }
+
+// --- Walls --------------------------------------------------------------------------------
+
+constexpr float kG = 800.0f;
+
+/// A character 12 × 16 with the default friction (0.5), standing on a floor whose top is
+/// at y = 0, against a wall whose left face is at x = 100 if `wall` (else in open air),
+/// walking into it at 150.
+struct WallScene {
+    World world;
+    BodyId hero;
+
+    WallScene(Solver solver, bool wall, bool character)
+        : world(WorldDef{.gravity = {0, kG}, .solver = solver}) {
+        world.createBody({.type = BodyType::Static, .x = 0, .y = 50, .hw = 500, .hh = 50});
+        if (wall)
+            world.createBody({.type = BodyType::Static, .x = 150, .y = -200, .hw = 50, .hh = 200});
+        hero = world.createBody({.x = 94, .y = -8, .hw = 6, .hh = 8, .character = character});
+        world.setWalkSpeed(hero, 150);
+        world.setSleeping(false);
+    }
+
+    /// Pushes into the wall (walking, or by setting its velocity if not a character) for
+    /// `steps` steps; the highest its top rose above where it started.
+    float push(int steps, bool character) {
+        const float start = world.position(hero).y;
+        float highest = 0;
+        for (int i = 0; i < steps; ++i) {
+            if (!character)
+                world.setVelocity(hero, {150, world.velocity(hero).y});
+            world.step(kDt);
+            highest = std::max(highest, start - world.position(hero).y);
+        }
+        return highest;
+    }
+};
+
+class Characters : public ::testing::TestWithParam<Solver> {};
+
+TEST_P(Characters, JumpingWhilePressedIntoAWallRisesAsInOpenAir) {
+    // A jump of sqrt(2 g 99): about 99 high.
+    const float jump = std::sqrt(2 * kG * 99);
+    WallScene open(GetParam(), false, true), walled(GetParam(), true, true);
+    for (WallScene* scene : {&open, &walled}) {
+        scene->push(10, true); // settle, against the wall
+        scene->world.setVelocity(scene->hero, {0, -jump});
+    }
+    const float inOpenAir = open.push(60, true);
+    const float againstTheWall = walled.push(60, true);
+    EXPECT_GT(inOpenAir, 90.0f);
+    EXPECT_NEAR(againstTheWall, inOpenAir, 0.01f * inOpenAir);
+    EXPECT_TRUE(walled.world.touching(walled.hero).wallRight ||
+                walled.world.touching(walled.hero).floor);
+}
+
+TEST_P(Characters, ABodyThatIsNotACharacterHangsOnTheWallItIsPushedInto) {
+    // Why characters exist: the wall's friction, from the push the game commands every
+    // step, holds an ordinary body up.
+    const float jump = std::sqrt(2 * kG * 99);
+    WallScene walled(GetParam(), true, false);
+    walled.push(10, false);
+    walled.world.setVelocity(walled.hero, {150, -jump});
+    EXPECT_LT(walled.push(60, false), 50.0f);
+}
+
+TEST_P(Characters, FallingWhilePressedIntoAWallFallsAsInOpenAir) {
+    WallScene open(GetParam(), false, true), walled(GetParam(), true, true);
+    for (WallScene* scene : {&open, &walled}) {
+        scene->push(5, true);
+        scene->world.setPosition(scene->hero, {94, -300}); // high up, against the wall
+        scene->world.setVelocity(scene->hero, {0, 0});
+        for (int i = 0; i < 20; ++i)
+            scene->world.step(kDt);
+    }
+    EXPECT_FLOAT_EQ(walled.world.position(walled.hero).y, open.world.position(open.hero).y);
+    EXPECT_FLOAT_EQ(walled.world.velocity(walled.hero).y, open.world.velocity(open.hero).y);
+}
+
+TEST_P(Characters, WallFrictionIsTheGamesToAskFor) {
+    // wallFriction 0.5: each step the walk into the wall (150) meets a push back of 150,
+    // and friction up to 0.5 × 150 = 75 holds it against the g dt = 13.3 gravity adds: it
+    // hangs, as an ordinary body does. In open air it falls g dt² (1 + ... + 20) = 46.7 in
+    // 20 steps.
+    WallScene walled(GetParam(), true, true);
+    walled.world.setWallFriction(walled.hero, 0.5f);
+    walled.push(5, true);
+    walled.world.setPosition(walled.hero, {94, -300});
+    walled.world.setVelocity(walled.hero, {0, 0});
+    for (int i = 0; i < 20; ++i)
+        walled.world.step(kDt);
+    EXPECT_LT(walled.world.position(walled.hero).y + 300, 0.25f * 46.7f);
+}
+
+// --- Walking --------------------------------------------------------------------------------
+
+TEST_P(Characters, WalksAtTheCommandedSpeedOnTheGround) {
+    // An ordinary body set to 150 each frame reads back 150 - mu g dt = 142.5 (friction
+    // ate a step's worth); a character walks at 150 exactly. Crates keep Coulomb friction.
+    World world(WorldDef{.gravity = {0, kG}, .solver = GetParam(), .sleeping = false});
+    world.createBody({.type = BodyType::Static, .x = 0, .y = 50, .hw = 5000, .hh = 50});
+    const BodyId hero = world.createBody({.x = 0, .y = -8, .hw = 6, .hh = 8, .character = true});
+    const BodyId crate = world.createBody({.x = 100, .y = -8, .hw = 8, .hh = 8});
+    for (int i = 0; i < 10; ++i)
+        world.step(kDt); // settle
+    world.setWalkSpeed(hero, 150);
+    world.setVelocity(crate, {150, 0});
+    for (int i = 0; i < 30; ++i) {
+        world.step(kDt);
+        EXPECT_EQ(world.velocity(hero).x, 150.0f) << "step " << i;
+    }
+    if (GetParam() == Solver::Physical) {
+        // Coulomb: 30 steps of mu g dt = 6.667 each (the first step's push only half: it
+        // starts at rest on the floor). 150 - 30 × 6.667 is < 0: it stopped, after
+        // 150 / (mu g) = 0.375 s, 150² / (2 mu g) = 28.1 along.
+        EXPECT_EQ(world.velocity(crate).x, 0.0f);
+        EXPECT_NEAR(world.position(crate).x, 100.0f + 28.1f, 1.5f);
+    }
+}
+
+/// A lift 80 × 12 with its top at y = 0 and a character standing on it, in the middle.
+struct LiftScene {
+    World world;
+    BodyId lift, hero;
+
+    explicit LiftScene(Solver solver) : world(WorldDef{.gravity = {0, kG}, .solver = solver}) {
+        world.setSleeping(false);
+        lift = world.createBody({.type = BodyType::Kinematic, .x = 0, .y = 6, .hw = 40, .hh = 6});
+        hero = world.createBody({.x = 0, .y = -8, .hw = 6, .hh = 8, .character = true});
+        for (int i = 0; i < 10; ++i)
+            world.step(kDt);
+    }
+    Vec2 offset() const { return world.position(hero) - world.position(lift); }
+};
+
+/// Rides a lift through `legs` of 0.5 s each; the game sets the lift's velocity at the
+/// start of each leg, before or after it commands the walk (0: standing). The character's
+/// place on the lift never moves, and it never leaves the lift's top.
+void rideLegs(Solver solver, std::span<const Vec2> legs) {
+    for (bool liftFirst : {true, false}) {
+        LiftScene scene(solver);
+        const Vec2 start = scene.offset();
+        for (Vec2 leg : legs) {
+            for (int i = 0; i < 30; ++i) {
+                if (liftFirst && i == 0)
+                    scene.world.setVelocity(scene.lift, leg);
+                scene.world.setWalkSpeed(scene.hero, 0);
+                if (!liftFirst && i == 0)
+                    scene.world.setVelocity(scene.lift, leg);
+                scene.world.step(kDt);
+                const Vec2 offset = scene.offset();
+                ASSERT_NEAR(offset.x, start.x, 1e-3f) << "leg " << leg.x << ", " << leg.y;
+                ASSERT_NEAR(offset.y, start.y, 0.2f) << "leg " << leg.x << ", " << leg.y;
+                ASSERT_TRUE(scene.world.touching(scene.hero).floor);
+            }
+        }
+    }
+}
+
+TEST_P(Characters, RidesALiftThatMovesSideways) {
+    const Vec2 legs[] = {{60, 0}, {0, 0}, {-60, 0}, {-120, 0}, {0, 0}, {45, 0}};
+    rideLegs(GetParam(), legs);
+}
+
+TEST(PhysicalCharacters, RidesALiftExactlyWhateverItDoes) {
+    // Up, down and diagonally too: the physical model hands a rider what its platform's
+    // velocity changed by (the classic model lets momentum carry it off a lift that stops
+    // on the way up, as the tutorial does).
+    const Vec2 legs[] = {{60, 0}, {0, 0},   {-60, 0}, {0, -60},  {0, 0},
+                         {0, 60}, {0, 120}, {0, 0},   {90, -45}, {-30, 60}};
+    rideLegs(Solver::Physical, legs);
+}
+
+TEST_P(Characters, WalksOverAMovingLiftAtItsOwnSpeed) {
+    // Walking at 50 on a lift moving at -60: it moves at 50 relative to the lift, -10 in
+    // the world: in 0.5 s, 25 along the lift.
+    LiftScene scene(GetParam());
+    const Vec2 start = scene.offset();
+    scene.world.setVelocity(scene.lift, {-60, 0});
+    scene.world.setWalkSpeed(scene.hero, 50);
+    for (int i = 0; i < 30; ++i)
+        scene.world.step(kDt);
+    EXPECT_NEAR(scene.offset().x - start.x, 25.0f, 1e-3f);
+    EXPECT_FLOAT_EQ(scene.world.velocity(scene.hero).x, -10.0f);
+}
+
+TEST_P(Characters, KnowsWhatItStandsOn) {
+    LiftScene scene(GetParam());
+    scene.world.setVelocity(scene.lift, {30, -20});
+    scene.world.step(kDt);
+    const std::optional<Ground> ground = scene.world.ground(scene.hero);
+    ASSERT_TRUE(ground);
+    EXPECT_EQ(ground->body, scene.lift);
+    EXPECT_EQ(ground->normal, (Vec2{0, -1}));
+    EXPECT_EQ(ground->velocity, (Vec2{30, -20}));
+    // Jumping: in the air, nothing.
+    scene.world.setVelocity(scene.hero, {0, -400});
+    scene.world.step(kDt);
+    scene.world.step(kDt);
+    EXPECT_FALSE(scene.world.ground(scene.hero));
+    EXPECT_FALSE(scene.world.ground(scene.lift));
+}
+
+INSTANTIATE_TEST_SUITE_P(Models, Characters, ::testing::Values(Solver::Classic, Solver::Physical),
+                         [](const ::testing::TestParamInfo<Solver>& model) {
+                             return model.param == Solver::Classic ? "Classic" : "Physical";
+                         });
 
 } // namespace
 } // namespace jostle

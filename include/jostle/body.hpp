@@ -93,6 +93,16 @@ struct BodyDef {
     /// A sensor detects overlaps and reports them (World::sensorBegins, sensorEnds),
     /// but never pushes nor is pushed. docs/events.md.
     bool sensor = false;
+    /// A character, for a player or an enemy (docs/characters.md). A dynamic body that
+    /// walks at the speed the game commands (World::setWalkSpeed) along what it stands
+    /// on, relative to it, so that friction neither eats that speed nor leaves it
+    /// behind a moving lift; and that rubs only on floors: against walls and ceilings its
+    /// friction is wallFriction, so pushing into a wall while jumping does not hold it up.
+    /// Ignored for static and kinematic bodies.
+    bool character = false;
+    /// A character's friction against walls and ceilings, in [0, 1]. 0 (the default):
+    /// it slides along a wall it is pressed into as in open air.
+    float wallFriction = 0.0f;
     /// Yours: jostle stores it and gives it back, nothing more.
     void* userData = nullptr;
 };
@@ -106,7 +116,8 @@ struct FieldError {
 
 /// The first problem with `def`, or nothing if World::createBody will accept it.
 /// The rules: every number finite; hw, hh, density > 0; mass, damping >= 0;
-/// bounce and friction in [0, 1]; oneWay {0, 0} or a unit vector along x or y.
+/// bounce, friction and wallFriction in [0, 1]; oneWay {0, 0} or a unit vector along x
+/// or y.
 std::optional<FieldError> checkBodyDef(const BodyDef& def);
 
 /// True if `normal` is acceptable as BodyDef::oneWay.

@@ -289,6 +289,10 @@ typedef struct jostle_body_def {
     uint32_t mask;     ///< the categories it collides with, default 0xFFFFFFFF
     bool sensor;       ///< detects overlaps, never pushes nor is pushed
     void* user_data;   ///< yours: stored and given back, default NULL
+    /// A character (jostle::BodyDef::character, docs/characters.md): walks at
+    /// jostle_body_set_walk_speed along its ground, rubs only on floors.
+    bool character;
+    float wall_friction; ///< a character's friction on walls and ceilings, default 0
     /// Set by jostle_default_body_def() (and jostle_body_get_def); leave it alone.
     uint32_t internal_cookie;
 } jostle_body_def;

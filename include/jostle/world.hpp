@@ -23,6 +23,7 @@
 #include <memory>
 #include <optional>
 #include <span>
+#include <vector>
 #include <string>
 
 namespace jostle {
@@ -128,6 +129,25 @@ struct ContactEvent {
     Vec2 normal; ///< unit, along x or y, pointing from b towards a
     /// Begin: how fast they closed along the normal when they met (>= 0). End: 0.
     float approachSpeed;
+    /// Where they touch: the middle of the stretch of face they share (the middle of
+    /// their overlap along the face, halfway between the two faces along the normal).
+    /// Begin: where they met; end: where they last touched.
+    Vec2 point;
+};
+
+/// A contact of one body with another, as World::contacts lists it.
+struct ContactInfo {
+    BodyId other;
+    Vec2 normal;   ///< unit, along x or y, pointing from `other` towards the body
+    Vec2 point;    ///< where they touch, as in ContactEvent
+    float impulse; ///< the normal impulse between them in the last step (mass × speed)
+};
+
+/// What a body stands on (World::ground).
+struct Ground {
+    BodyId body;   ///< the body under it
+    Vec2 normal;   ///< the push of the ground: against gravity
+    Vec2 velocity; ///< the ground's velocity now: what a rider moves with
 };
 
 /// A body that started or stopped overlapping a sensor.
@@ -256,6 +276,49 @@ public:
     /// See BodyDef::sensor.
     bool isSensor(BodyId id) const;
     void setSensor(BodyId id, bool sensor);
+
+    // --- Characters (docs/characters.md) ----------------------------------------------
+
+    /// See BodyDef::character.
+    bool isCharacter(BodyId id) const;
+    void setCharacter(BodyId id, bool character);
+    /// See BodyDef::wallFriction: in [0, 1].
+    float wallFriction(BodyId id) const;
+    void setWallFriction(BodyId id, float friction);
+    /// The speed a character walks at (finite): along what it stands on and relative to
+    /// it, so that it keeps pace with a lift; positive to the right of gravity's "down"
+    /// (+x in a y-down world); in the air, relative to the world. It holds until changed:
+    /// set it from the input every frame (0 stands still). Its velocity across gravity
+    /// is this at every step; along gravity it is the physics' (set it to jump). Bodies
+    /// that are not characters keep it and ignore it.
+    float walkSpeed(BodyId id) const;
+    void setWalkSpeed(BodyId id, float speed);
+    /// What the body stood on at the end of the last step: of the bodies that pushed it
+    /// against gravity (floors, in touching()'s sense), the one that pushed hardest.
+    /// Nothing in the air, nor if that body has been destroyed since. A sleeping body
+    /// keeps the ground it fell asleep on.
+    std::optional<Ground> ground(BodyId id) const;
+
+    // --- Forces ------------------------------------------------------------------------
+
+    /// Adds a force (mass × units / s²) at the body's centre for the next step: its
+    /// velocity changes by force / mass × dt then. Forces add up until that step, which
+    /// clears them: apply a lasting force before every step. Wakes the body. Static and
+    /// kinematic bodies are infinitely heavy: nothing happens to them.
+    void applyForce(BodyId id, Vec2 force);
+    /// Changes the body's velocity by impulse / mass (mass × units / s) at once: a kick,
+    /// a blast, a jump of a given strength. Wakes the body. Nothing happens to static and
+    /// kinematic bodies.
+    void applyImpulse(BodyId id, Vec2 impulse);
+
+    // --- Contacts now --------------------------------------------------------------------
+
+    /// The bodies this one touched at the end of the last step (sensors excluded), in
+    /// the order of the bodies they pair with, created first first. `out` is cleared first.
+    void contacts(BodyId id, std::vector<ContactInfo>& out) const;
+    std::vector<ContactInfo> contacts(BodyId id) const;
+    /// True if the two touched at the end of the last step.
+    bool isTouching(BodyId a, BodyId b) const;
 
     /// The sum of the separation vectors that pushed this body out of others during the
     /// last step. Pushed up by a floor in a y-down world means separation().y < 0: that

@@ -8,6 +8,7 @@
 #include "step.hpp"
 
 #include "../broadphase.hpp"
+#include "../characters.hpp"
 #include "../integrate.hpp"
 #include "../world_state.hpp"
 
@@ -50,8 +51,11 @@ public:
         }
 
         // update velocity vectors
+        applyForces(w_, dt_);
         for (std::uint32_t d : dynamics_)
             integrateVelocity(w_.def, w_.slots[d], dt_);
+        walkCharacters(w_);
+        w_.events.beginGrounds(w_);
 
         // Kinematic bodies move by their own velocity before the dynamic ones.
         for (std::uint32_t s : statics_) {
@@ -334,8 +338,12 @@ private:
     /// callback, separation by (nx, ny) × depth, and the velocity response.
     Outcome respond(std::uint32_t ia, std::uint32_t ib, float nx, float ny, float vx, float vy,
                     float ps, float depth) {
+        const Vec2 normal{nx, ny};
+        const Vec2 down = w_.events.down;
         float bounce = std::max(w_.slots[ia].bounce, w_.slots[ib].bounce);
-        float friction = std::min(w_.slots[ia].friction, w_.slots[ib].friction);
+        // A character rubs only on floors (characters.hpp).
+        float friction = std::min(frictionAgainst(w_.slots[ia], normal, down),
+                                  frictionAgainst(w_.slots[ib], -normal, down));
         if (w_.preSolve) {
             Collision c{w_.idOf(ia), w_.idOf(ib), {nx, ny}, depth, bounce, friction};
             const bool keep = w_.preSolve(c);
@@ -352,7 +360,6 @@ private:
                 friction = std::clamp(c.friction, 0.0f, 1.0f);
         }
 
-        recordContact(w_, ia, ib, {nx, ny}, -ps);
         Body& ba = w_.slots[ia];
         Body& bb = w_.slots[ib];
         // separate the two objects: moveShape(a, sx, sy), with (sx, sy) = n * depth
@@ -364,13 +371,18 @@ private:
             ba.separation += Vec2{sx, sy};
             stopAtTheEdge(ba);
         }
+        recordContact(w_, ia, ib, {nx, ny}, -ps, 0.0f, touchPoint(ba.box(), bb.box(), {nx, ny}));
 
         // penetration component
         const float px = nx * ps;
         const float py = ny * ps;
-        // tangent component
+        // tangent component; friction slows what is left of it once a character's walk
+        // over its floor is taken out
         const float tx = vx - px;
         const float ty = vy - py;
+        const Vec2 walk = walkOver(ba, bb, normal, down);
+        const float wx = tx - walk.x;
+        const float wy = ty - walk.y;
         // restitution
         const float r = 1.0f + bounce;
         // friction
@@ -379,11 +391,11 @@ private:
         const ClassicOptions& options = w_.def.classic;
         if (!options.mass && !options.coulomb) {
             // change the velocity of shape a (the text's friction: minus, not plus)
-            ba.velocity.x = ba.velocity.x - px * r - tx * f;
-            ba.velocity.y = ba.velocity.y - py * r - ty * f;
+            ba.velocity.x = ba.velocity.x - px * r - wx * f;
+            ba.velocity.y = ba.velocity.y - py * r - wy * f;
             return Outcome::Kept;
         }
-        const Vec2 change = velocityChange({px, py}, {tx, ty}, ps, r, f, options.coulomb);
+        const Vec2 change = velocityChange({px, py}, {wx, wy}, ps, r, f, options.coulomb);
         if (!options.mass) {
             ba.velocity += change;
             return Outcome::Kept;

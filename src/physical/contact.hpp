@@ -41,6 +41,9 @@ struct Contact {
     float normalImpulse = 0.0f; ///< of the sequential impulses: both bodies felt it
     float shockImpulse = 0.0f;  ///< added by shock propagation: the held body felt none
     float tangentImpulse = 0.0f;
+    /// The relative tangent speed friction keeps (along the tangent, with its sign): 0,
+    /// or a character's walk over its floor.
+    float tangentTarget = 0.0f;
     float bounceSpeed = 0.0f;   ///< to remember: bounce at this speed next step
     float approachSpeed = 0.0f; ///< how fast the pair closed when the step began (>= 0)
 

@@ -2,6 +2,7 @@
 // pre-solve callback, warm starting and the target speed of each contact.
 #include "contacts.hpp"
 
+#include "../characters.hpp"
 #include "seams.hpp"
 #include "step_context.hpp"
 
@@ -135,7 +136,17 @@ Contact contactOf(const StepContext& step, const Body& a, const Body& b, Vec2 no
     c.extent = alongX ? a.half.x + b.half.x : a.half.y + b.half.y;
     c.slop =
         step.options.slop * (alongX ? std::min(a.half.x, b.half.x) : std::min(a.half.y, b.half.y));
-    c.friction = combineFriction(step.options.frictionMix, a.friction, b.friction);
+    if (a.character || b.character) {
+        // Characters rub only on floors, and walk over them (characters.hpp).
+        const Vec2 down = step.world.events.down;
+        c.friction = combineFriction(step.options.frictionMix, frictionAgainst(a, normal, down),
+                                     frictionAgainst(b, -normal, down));
+        Vec2 tangent;
+        tangent[1 - c.axis] = c.tangentSign;
+        c.tangentTarget = dot(walkOver(a, b, normal, down), tangent);
+    } else {
+        c.friction = combineFriction(step.options.frictionMix, a.friction, b.friction);
+    }
     return c;
 }
 

@@ -3,6 +3,7 @@
 #include "step.hpp"
 
 #include "../broadphase.hpp"
+#include "../characters.hpp"
 #include "../integrate.hpp"
 #include "contact_cache.hpp"
 #include "contact_solver.hpp"
@@ -22,7 +23,10 @@ void stepPhysical(WorldState& world, float dt) {
     StepContext step(world, dt);
     world.events.beginStep(world);
     carryRiders(step);
+    applyForces(world, dt);
     integrateAwakeBodies(world, dt);
+    walkCharacters(world);
+    world.events.beginGrounds(world);
     findPairs(world, dt, world.pairs);
     buildContacts(step);
     orderBySupport(step);

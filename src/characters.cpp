@@ -1,0 +1,53 @@
+// Characters: walking along the ground, and rubbing only on floors.
+#include "characters.hpp"
+
+#include "world_state.hpp"
+
+
+namespace jostle {
+
+namespace {
+
+/// "Right" across gravity: walking at a positive speed goes this way (+x in a y-down
+/// world).
+Vec2 rightOf(Vec2 down) {
+    return {down.y, -down.x};
+}
+
+/// Whether a surface pushing `body` along `push` is a floor the character stands on.
+bool isCharacterFloor(const Body& body, Vec2 push, Vec2 down) {
+    return body.character && body.isDynamic() && surfaceOf(push, down) == kFloor;
+}
+
+} // namespace
+
+void walkCharacters(WorldState& world) {
+    const Vec2 right = rightOf(world.events.down);
+    for (BodyId id : world.order) {
+        Body& body = world.slots[id.index];
+        if (!body.character || !body.isDynamic() || body.asleep)
+            continue;
+        const std::vector<GroundRecord>& grounds = world.events.ground;
+        const BodyId ground = id.index < grounds.size() ? grounds[id.index].body : BodyId{};
+        const float under =
+            world.isCurrent(ground) ? dot(world.slots[ground.index].velocity, right) : 0.0f;
+        body.velocity += right * (under + body.walkSpeed - dot(body.velocity, right));
+    }
+}
+
+float frictionAgainst(const Body& body, Vec2 push, Vec2 down) {
+    if (!body.character || !body.isDynamic() || surfaceOf(push, down) == kFloor)
+        return body.friction;
+    return body.wallFriction;
+}
+
+Vec2 walkOver(const Body& a, const Body& b, Vec2 normal, Vec2 down) {
+    const Vec2 right = rightOf(down);
+    if (isCharacterFloor(a, normal, down))
+        return right * a.walkSpeed;
+    if (isCharacterFloor(b, -normal, down))
+        return right * -b.walkSpeed;
+    return {};
+}
+
+} // namespace jostle

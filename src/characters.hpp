@@ -1,0 +1,26 @@
+// Characters (docs/characters.md): bodies whose walking the game commands. Both models
+// call these: walking after the velocities are integrated, and the friction and the
+// tangent speed of each contact a character is part of.
+#pragma once
+
+#include "jostle/math.hpp"
+
+namespace jostle {
+
+struct Body;
+struct WorldState;
+
+/// Each awake character's velocity along its ground (across gravity) becomes its ground's
+/// plus its walk speed; in the air, its walk speed. The ground is the one of the last
+/// step, moving as it moves now.
+void walkCharacters(WorldState& world);
+
+/// The friction `body` brings to a contact whose surface pushes it along `push`: a
+/// character rubs with its wallFriction against what is not its floor.
+float frictionAgainst(const Body& body, Vec2 push, Vec2 down);
+
+/// The velocity of `a` relative to `b` that a contact's friction keeps, instead of none:
+/// a character on its floor walks at its walk speed over it.
+Vec2 walkOver(const Body& a, const Body& b, Vec2 normal, Vec2 down);
+
+} // namespace jostle
