@@ -22,8 +22,9 @@ void refreshRestingGrid(WorldState& world);
 
 /// Every pair of live bodies, at least one of them dynamic and awake (or a sensor and an
 /// awake dynamic or kinematic body), whose boxes, each grown by the distance its velocity
-/// carries it in `dt`, overlap or touch; `a` is the one created first. Sleeping bodies touched by awake ones are woken first, so they take
-/// part. The order is fixed: the same world gives the same list.
+/// carries it in `dt`, overlap or touch; `a` is the one created first. Sleeping bodies touched by
+/// awake ones are woken first, so they take part. The order is fixed: the same world gives the same
+/// list.
 void findPairs(WorldState& world, float dt, std::vector<BodyPair>& pairs);
 
 } // namespace jostle

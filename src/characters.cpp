@@ -3,7 +3,6 @@
 
 #include "world_state.hpp"
 
-
 namespace jostle {
 
 namespace {
@@ -27,10 +26,8 @@ void walkCharacters(WorldState& world) {
         Body& body = world.slots[id.index];
         if (!body.character || !body.isDynamic() || body.asleep)
             continue;
-        const std::vector<GroundRecord>& grounds = world.events.ground;
-        const BodyId ground = id.index < grounds.size() ? grounds[id.index].body : BodyId{};
-        const float under =
-            world.isCurrent(ground) ? dot(world.slots[ground.index].velocity, right) : 0.0f;
+        const BodyId ground = groundOf(world, id.index).body;
+        const float under = ground.isNull() ? 0.0f : dot(world.slots[ground.index].velocity, right);
         body.velocity += right * (under + body.walkSpeed - dot(body.velocity, right));
     }
 }

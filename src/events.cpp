@@ -74,25 +74,41 @@ void compare(const WorldState& world, std::vector<TouchRecord>& now,
 } // namespace
 
 void recordContact(WorldState& world, std::uint32_t body, std::uint32_t other, Vec2 normal,
-                   float approachSpeed, float impulse, Vec2 point) {
+                   float approachSpeed, float impulse) {
     StepEvents& events = world.events;
-    // `push`: the direction the surface pushes the body.
-    auto note = [&](std::uint32_t slot, std::uint32_t by, Vec2 push) {
-        const TouchingBit surface = surfaceOf(push, events.down);
-        events.touching[slot] |= surface;
-        GroundRecord& ground = events.ground[slot];
-        if (surface == kFloor && (ground.body.isNull() || impulse > ground.impulse))
-            ground = {world.idOf(by), push, impulse};
-    };
-    note(body, other, normal);
-    note(other, body, -normal);
+    // The surface pushes each body away from the other.
+    events.touching[body] |= surfaceOf(normal, events.down);
+    events.touching[other] |= surfaceOf(-normal, events.down);
     // Listed with the body created first as `a`, the normal pointing towards it.
     if (world.createdBefore(body, other))
         events.contactsNow.push_back(
-            {world.idOf(body), world.idOf(other), normal, approachSpeed, point, impulse});
+            {world.idOf(body), world.idOf(other), normal, approachSpeed, impulse});
     else
         events.contactsNow.push_back(
-            {world.idOf(other), world.idOf(body), -normal, approachSpeed, point, impulse});
+            {world.idOf(other), world.idOf(body), -normal, approachSpeed, impulse});
+}
+
+Vec2 pointOf(const WorldState& world, const TouchRecord& record) {
+    return touchPoint(world.slots[record.a.index].box(), world.slots[record.b.index].box(),
+                      record.normal);
+}
+
+GroundRecord groundOf(const WorldState& world, std::uint32_t slot) {
+    GroundRecord ground;
+    float hardest = 0.0f;
+    world.events.forEachTouchOf(slot, [&](const TouchRecord& r) {
+        const bool isA = r.a.index == slot && world.isCurrent(r.a);
+        const bool isB = r.b.index == slot && world.isCurrent(r.b);
+        if ((!isA && !isB) || !world.isCurrent(isA ? r.b : r.a))
+            return; // of the slot's previous body, or on a body destroyed since
+        const Vec2 push = isA ? r.normal : -r.normal;
+        if (surfaceOf(push, world.events.down) != kFloor ||
+            (!ground.body.isNull() && !(r.impulse > hardest)))
+            return;
+        ground = {isA ? r.b : r.a, push};
+        hardest = r.impulse;
+    });
+    return ground;
 }
 
 void recordSensor(WorldState& world, std::uint32_t sensor, std::uint32_t visitor) {
@@ -120,15 +136,6 @@ void StepEvents::beginStep(const WorldState& world) {
     }
 }
 
-void StepEvents::beginGrounds(const WorldState& world) {
-    ground.resize(world.slots.size());
-    for (BodyId id : world.order) {
-        const Body& body = world.slots[id.index];
-        if (body.isDynamic() && !body.asleep)
-            ground[id.index] = {};
-    }
-}
-
 void StepEvents::publish(const WorldState& world, bool anyAwake) {
     // Nothing awake and nothing gone: every pair of the last step carries over as it was.
     if (!anyAwake && !destroyedSincePublish && contactsNow.empty() && sensorsNow.empty())
@@ -149,12 +156,13 @@ void StepEvents::publish(const WorldState& world, bool anyAwake) {
     compare(
         world, contactsNow, contactsBefore_, scratch_, contactNotEvaluated,
         [&](const TouchRecord& r) {
-            begins.push_back({r.a, r.b, r.normal, r.approachSpeed, r.point});
+            begins.push_back({r.a, r.b, r.normal, r.approachSpeed, pointOf(world, r)});
         },
         [&](const TouchRecord& r) {
-            ends.push_back({r.a, r.b, r.normal, 0.0f, r.point});
+            ends.push_back({r.a, r.b, r.normal, 0.0f, Vec2{}});
         });
-    indexTouches(world.slots.size());
+    std::lock_guard<std::mutex> lock(indexMutex_);
+    indexed_ = false;
     sortByPair(sensorsNow, scratch_, buckets_, world.slots.size());
     compare(
         world, sensorsNow, sensorsBefore_, scratch_, sensorNotEvaluated,
@@ -166,7 +174,10 @@ void StepEvents::publish(const WorldState& world, bool anyAwake) {
         });
 }
 
-void StepEvents::indexTouches(std::size_t slotCount) {
+void StepEvents::indexTouches() const {
+    std::uint32_t slotCount = 0;
+    for (const TouchRecord& r : contactsBefore_)
+        slotCount = std::max({slotCount, r.a.index + 1, r.b.index + 1});
     touchesBySlot_.reset(slotCount);
     for (const TouchRecord& r : contactsBefore_) {
         touchesBySlot_.count(r.a.index);
@@ -178,10 +189,23 @@ void StepEvents::indexTouches(std::size_t slotCount) {
         touchIndex_[touchesBySlot_.place(contactsBefore_[k].b.index)] = k;
     }
     touchesBySlot_.endPlacing();
+    indexed_ = true;
 }
 
 void StepEvents::clear() {
-    *this = StepEvents{};
+    begins.clear();
+    ends.clear();
+    sensorBegins.clear();
+    sensorEnds.clear();
+    crushes.clear();
+    touching.clear();
+    contactsNow.clear();
+    sensorsNow.clear();
+    contactsBefore_.clear();
+    sensorsBefore_.clear();
+    destroyedSincePublish = false;
+    std::lock_guard<std::mutex> lock(indexMutex_);
+    indexed_ = false;
 }
 
 } // namespace jostle

@@ -7,6 +7,7 @@
 #include "jostle/world.hpp"
 
 #include <cstdint>
+#include <mutex>
 #include <vector>
 
 namespace jostle {
@@ -18,8 +19,7 @@ struct TouchRecord {
     BodyId a, b; ///< contacts: a created first; sensors: a is the sensor
     Vec2 normal;
     float approachSpeed = 0.0f;
-    Vec2 point;
-    float impulse = 0.0f;
+    float impulse = 0.0f; ///< contacts: the normal impulse between them in the step
 
     std::uint64_t key() const { return std::uint64_t(a.index) << 32 | b.index; }
 };
@@ -44,21 +44,12 @@ inline TouchingBit surfaceOf(Vec2 push, Vec2 down) {
     return dot(push, Vec2{down.y, -down.x}) < 0.0f ? kWallRight : kWallLeft;
 }
 
-/// What a body stands on: the body that pushed it up hardest in its last evaluated step.
-struct GroundRecord {
-    BodyId body; ///< null: nothing
-    Vec2 normal;
-    float impulse = 0.0f;
-};
-
 struct StepEvents {
     std::vector<ContactEvent> begins, ends;
     std::vector<SensorEvent> sensorBegins, sensorEnds;
     std::vector<CrushEvent> crushes;
     /// TouchingBit flags by slot, from the last step that evaluated the body.
     std::vector<std::uint8_t> touching;
-    /// What each body stands on, by slot, from the last step that evaluated it.
-    std::vector<GroundRecord> ground;
     /// Unit "down" for the touching flags this step, set by beginStep().
     Vec2 down{0.0f, 1.0f};
 
@@ -67,9 +58,6 @@ struct StepEvents {
 
     /// Empties the outputs and the lists of the step about to run.
     void beginStep(const WorldState& world);
-    /// Forgets the grounds of the bodies the step evaluates, which it records afresh:
-    /// after the characters have walked on the last step's (characters.hpp).
-    void beginGrounds(const WorldState& world);
     /// Turns this step's lists into begin and end events against the last step's, and
     /// keeps them for the next step. Pairs that were not looked at this step (neither
     /// body an awake dynamic one: a sleeping pile on its floor) carry over unchanged.
@@ -84,8 +72,13 @@ struct StepEvents {
 
     /// The pairs that touched at the end of the last step, sorted by pair.
     const std::vector<TouchRecord>& touchingBefore() const { return contactsBefore_; }
-    /// Calls visit(record) for each pair of touchingBefore() that `slot` is part of.
+    /// Calls visit(record) for each pair of touchingBefore() that `slot` is part of, in
+    /// their order. The index behind it is built on first use after a step, under a lock:
+    /// World's const functions may run on several threads at once.
     template <class Visit> void forEachTouchOf(std::uint32_t slot, Visit&& visit) const {
+        std::lock_guard<std::mutex> lock(indexMutex_);
+        if (!indexed_)
+            indexTouches();
         if (slot >= touchesBySlot_.keyCount())
             return;
         for (std::uint32_t k = touchesBySlot_.begin(slot); k < touchesBySlot_.end(slot); ++k)
@@ -97,17 +90,30 @@ private:
     std::vector<TouchRecord> scratch_;
     Buckets buckets_;
     /// contactsBefore_ by slot: each slot's run of indices into it (forEachTouchOf).
-    Buckets touchesBySlot_;
-    std::vector<std::uint32_t> touchIndex_;
-    void indexTouches(std::size_t slotCount);
+    mutable std::mutex indexMutex_;
+    mutable bool indexed_ = false;
+    mutable Buckets touchesBySlot_;
+    mutable std::vector<std::uint32_t> touchIndex_;
+    void indexTouches() const;
 };
 
 /// Records that two bodies touch at the end of this step: `normal` points from `other`
 /// towards `body`, `approachSpeed` is how fast they closed, `impulse` how hard they
-/// pushed each other (0 where the model does not say), `point` where they touch. Sets
-/// both bodies' touching flags and grounds.
+/// pushed each other (0 where the model does not say). Sets both bodies' touching flags.
 void recordContact(WorldState& world, std::uint32_t body, std::uint32_t other, Vec2 normal,
-                   float approachSpeed, float impulse, Vec2 point);
+                   float approachSpeed, float impulse);
+
+/// Where the two bodies of `record` touch, as they are now (ContactEvent::point).
+Vec2 pointOf(const WorldState& world, const TouchRecord& record);
+
+/// What the body in `slot` stands on: of the pairs it touched at the end of the last step
+/// in which a floor pushed it, the one that pushed hardest (the first of equals). Null if
+/// none (World::ground).
+struct GroundRecord {
+    BodyId body;
+    Vec2 normal;
+};
+GroundRecord groundOf(const WorldState& world, std::uint32_t slot);
 
 /// Records that `visitor` overlaps `sensor` at the end of this step.
 void recordSensor(WorldState& world, std::uint32_t sensor, std::uint32_t visitor);

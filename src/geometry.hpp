@@ -63,8 +63,8 @@ inline Vec2 touchPoint(const Box& a, const Box& b, Vec2 normal) {
     const float bFace = aAfter ? b.max[axis] : b.min[axis];
     Vec2 point;
     point[axis] = 0.5f * (aFace + bFace);
-    point[along] = 0.5f * (std::max(a.min[along], b.min[along]) +
-                           std::min(a.max[along], b.max[along]));
+    point[along] =
+        0.5f * (std::max(a.min[along], b.min[along]) + std::min(a.max[along], b.max[along]));
     return point;
 }
 

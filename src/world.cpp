@@ -116,7 +116,8 @@ void World::contacts(BodyId id, std::vector<ContactInfo>& out) const {
         if (r.a != id && r.b != id)
             return; // of the slot's previous body
         const bool isA = r.a == id;
-        out.push_back({isA ? r.b : r.a, isA ? r.normal : -r.normal, r.point, r.impulse});
+        out.push_back(
+            {isA ? r.b : r.a, isA ? r.normal : -r.normal, pointOf(*state_, r), r.impulse});
     });
 }
 

@@ -310,10 +310,9 @@ void World::setWalkSpeed(BodyId id, float speed) {
 
 std::optional<Ground> World::ground(BodyId id) const {
     lookUp(*state_, id, "ground");
-    const std::vector<GroundRecord>& grounds = state_->events.ground;
-    if (id.index >= grounds.size() || !state_->isCurrent(grounds[id.index].body))
+    const GroundRecord g = groundOf(*state_, id.index);
+    if (g.body.isNull())
         return std::nullopt;
-    const GroundRecord& g = grounds[id.index];
     return Ground{g.body, g.normal, state_->slots[g.body.index].velocity};
 }
 

@@ -37,28 +37,25 @@ struct alignas(64) Body {
     Vec2 oneWay;
     /// Counts the slot's reuses; a BodyId matches only the generation it was made with.
     std::uint32_t generation = 1;
-    /// Seconds left during which this body falls through one-way platforms.
-    float dropThroughTime = 0.0f;
     BodyType type = BodyType::Dynamic;
     /// The slot holds a live body. Cleared at once by destroyBody, even mid-step.
     bool alive = false;
     bool sensor = false;
     bool asleep = false;
-
-    // --- Read once a step, or less ---
-    bool bullet = false;
     /// BodyDef::character: walks at walkSpeed, rubs only on floors (docs/characters.md).
     bool character = false;
+
+    // --- Read once a step, or less ---
+    void* userData = nullptr;
     /// Sum of the separation vectors applied to this body during the last step.
     Vec2 separation;
+    /// Kinematic bodies: the velocity they moved with in the last step, to hand what
+    /// changed since to their riders.
+    Vec2 lastStepVelocity;
     float mass = 0.0f; ///< explicit mass, or 0 for density × area
     float density = 1.0f;
     float gravityScale = 1.0f;
     float damping = 0.0f;
-    void* userData = nullptr;
-    /// Kinematic bodies: the velocity they moved with in the last step, to hand what
-    /// changed since to their riders.
-    Vec2 lastStepVelocity;
     /// Seconds this body has been slow enough to sleep.
     float sleepTime = 0.0f;
     /// While asleep: the index of its island in WorldState::islands.
@@ -67,6 +64,9 @@ struct alignas(64) Body {
     float wallFriction = 0.0f;
     /// The speed a character walks at, along its ground and relative to it.
     float walkSpeed = 0.0f;
+    /// Seconds left during which this body falls through one-way platforms.
+    float dropThroughTime = 0.0f;
+    bool bullet = false;
 
     bool isDynamic() const { return type == BodyType::Dynamic; }
     /// The mass it has as a dynamic body: explicit, or density × area.
@@ -86,7 +86,7 @@ struct alignas(64) Body {
     Box box() const { return boxAround(position, half); }
 };
 
-static_assert(offsetof(Body, asleep) < 64, "the hot part of Body fits one cache line");
+static_assert(offsetof(Body, character) < 64, "the hot part of Body fits one cache line");
 static_assert(sizeof(Body) == 128, "a Body is two cache lines");
 
 /// The filter rule: each one's category shares a bit with the other's mask.

@@ -129,9 +129,9 @@ struct ContactEvent {
     Vec2 normal; ///< unit, along x or y, pointing from b towards a
     /// Begin: how fast they closed along the normal when they met (>= 0). End: 0.
     float approachSpeed;
-    /// Where they touch: the middle of the stretch of face they share (the middle of
-    /// their overlap along the face, halfway between the two faces along the normal).
-    /// Begin: where they met; end: where they last touched.
+    /// Begin: where they touch, the middle of the stretch of face they share (the middle
+    /// of their overlap along the face, halfway between the two faces along the normal).
+    /// End: {0, 0}.
     Vec2 point;
 };
 
@@ -139,7 +139,7 @@ struct ContactEvent {
 struct ContactInfo {
     BodyId other;
     Vec2 normal;   ///< unit, along x or y, pointing from `other` towards the body
-    Vec2 point;    ///< where they touch, as in ContactEvent
+    Vec2 point;    ///< where they touch now, as in a ContactEvent's begin
     float impulse; ///< the normal impulse between them in the last step (mass × speed)
 };
 

@@ -55,7 +55,6 @@ public:
         for (std::uint32_t d : dynamics_)
             integrateVelocity(w_.def, w_.slots[d], dt_);
         walkCharacters(w_);
-        w_.events.beginGrounds(w_);
 
         // Kinematic bodies move by their own velocity before the dynamic ones.
         for (std::uint32_t s : statics_) {
@@ -371,7 +370,7 @@ private:
             ba.separation += Vec2{sx, sy};
             stopAtTheEdge(ba);
         }
-        recordContact(w_, ia, ib, {nx, ny}, -ps, 0.0f, touchPoint(ba.box(), bb.box(), {nx, ny}));
+        recordContact(w_, ia, ib, normal, -ps, 0.0f);
 
         // penetration component
         const float px = nx * ps;

@@ -44,9 +44,8 @@ void velocityPass(StepContext& step) {
             const int tangent = 1 - c.axis;
             const float speed = c.tangentSign * relativeSpeed(step, c, tangent);
             const float limit = c.friction * c.normalImpulse;
-            const float impulse =
-                std::clamp(-c.effectiveMass * (speed - c.tangentTarget), -limit - c.tangentImpulse,
-                           limit - c.tangentImpulse);
+            const float impulse = std::clamp(-c.effectiveMass * (speed - c.tangentTarget),
+                                             -limit - c.tangentImpulse, limit - c.tangentImpulse);
             applyImpulse(step, c, tangent, c.tangentSign * impulse);
             c.tangentImpulse = std::clamp(c.tangentImpulse + impulse, -limit, limit);
         }

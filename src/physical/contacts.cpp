@@ -187,8 +187,8 @@ void buildContacts(StepContext& step) {
             continue;
         // The normal points from b towards a; a pair touching within the skin was on the
         // platform's side when the step began.
-        if (!a.blocks(-normal, gap >= -skin, b.dropThroughTime) ||
-            !b.blocks(normal, gap >= -skin, a.dropThroughTime))
+        if ((a.isOneWay() && !a.blocks(-normal, gap >= -skin, b.dropThroughTime)) ||
+            (b.isOneWay() && !b.blocks(normal, gap >= -skin, a.dropThroughTime)))
             continue;
 
         const float approach = dot(a.velocity - b.velocity, normal);

@@ -70,14 +70,8 @@ void reportEvents(StepContext& step) {
         const float gap = -step.overlapOf(c);
         const float skin = std::max(2.0f * c.slop, kMinimumSkin * c.extent);
         const std::uint32_t slotA = step.bodies[c.ia].slot, slotB = step.bodies[c.ib].slot;
-        if (gap <= skin) {
-            const SolverBody& a = step.bodies[c.ia];
-            const SolverBody& b = step.bodies[c.ib];
-            const Vec2 point = touchPoint(boxAround({a.position[0], a.position[1]}, w.slots[slotA].half),
-                                          boxAround({b.position[0], b.position[1]}, w.slots[slotB].half),
-                                          c.normal());
-            recordContact(w, slotA, slotB, c.normal(), c.approachSpeed, c.totalImpulse(), point);
-        }
+        if (gap <= skin)
+            recordContact(w, slotA, slotB, c.normal(), c.approachSpeed, c.totalImpulse());
         // Only a dynamic body against an infinitely heavy one can be crushed.
         if ((c.invMassA == 0.0f) != (c.invMassB == 0.0f))
             findCrush(step, c, slotA, slotB, -gap);

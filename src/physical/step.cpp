@@ -16,7 +16,6 @@
 #include "step_context.hpp"
 #include "support.hpp"
 
-
 namespace jostle {
 
 void stepPhysical(WorldState& world, float dt) {
@@ -26,7 +25,6 @@ void stepPhysical(WorldState& world, float dt) {
     applyForces(world, dt);
     integrateAwakeBodies(world, dt);
     walkCharacters(world);
-    world.events.beginGrounds(world);
     findPairs(world, dt, world.pairs);
     buildContacts(step);
     orderBySupport(step);
