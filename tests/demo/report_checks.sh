@@ -1,7 +1,9 @@
 # shellcheck shell=bash
 # shellcheck disable=SC2034,SC2154 # $demo comes from, and $failed goes back to, the script
 # Shared by the demo's test scripts (sourced, not run): runs jostle-demo with --report
-# and checks the values it prints. Needs $demo set; sets $failed to 1 on a failure.
+# and checks the values it prints, and counts the pixels of a colour in its screenshots.
+# Needs $demo set (and $checker, check_screenshot, for count and pixels); sets $failed to
+# 1 on a failure.
 failed=0
 report=""
 # run ARGS...: runs the demo with --report, keeps its report in $report.
@@ -45,5 +47,19 @@ below() {
     failed=1
   else
     echo "ok: $3 ($1 $got)"
+  fi
+}
+# count FILE COLOUR X0 Y0 X1 Y1: the pixels of that colour in the rectangle.
+count() { "$checker" "$1" --count "$2" "$3" "$4" "$5" "$6" || echo "error"; }
+# pixels WHY FILE COLOUR X0 Y0 X1 Y1 EXPECTED: exactly EXPECTED pixels of that colour.
+pixels() {
+  local why=$1 got
+  shift
+  got=$(count "$1" "$2" "$3" "$4" "$5" "$6")
+  if [ "$got" != "$7" ]; then
+    echo "FAIL: $why: $got pixels of $2 in ($3, $4)-($5, $6), expected $7" >&2
+    failed=1
+  else
+    echo "ok: $why ($got pixels)"
   fi
 }

@@ -89,21 +89,6 @@ rm -f "$on" "$off"
 "$demo" --sample 6 --frames 90 --screenshot "$off" >/dev/null ||
   { echo "FAIL: jostle-demo could not save $off" >&2; failed=1; }
 
-# count FILE COLOUR X0 Y0 X1 Y1: the pixels of that colour in the rectangle.
-count() { "$checker" "$1" --count "$2" "$3" "$4" "$5" "$6" || echo "error"; }
-# pixels WHY FILE COLOUR X0 Y0 X1 Y1 EXPECTED: exactly EXPECTED pixels of that colour.
-pixels() {
-  local why=$1 got
-  shift
-  got=$(count "$1" "$2" "$3" "$4" "$5" "$6")
-  if [ "$got" != "$7" ]; then
-    echo "FAIL: $why: $got pixels of $2 in ($3, $4)-($5, $6), expected $7" >&2
-    failed=1
-  else
-    echo "ok: $why ($got pixels)"
-  fi
-}
-
 # Contacts: each of the five stands on the floor, so its contact point is at the middle
 # of its bottom face, (x, 500): a 3 x 3 dot, and the normal drawn up into the body it
 # pushes, 14 pixels long (each body is taller than 28 pixels). Below the pane's legend
