@@ -6,6 +6,15 @@
 # 1 on a failure.
 failed=0
 report=""
+# offscreen: runs the demo on SDL's offscreen video driver (no X server) from here on;
+# exits the script with 77 (the tests' SKIP_RETURN_CODE) if SDL cannot open a window so.
+offscreen() {
+  export SDL_VIDEODRIVER=offscreen
+  if ! "$demo" --frames 1 >/dev/null 2>&1; then
+    echo "skipped: jostle-demo cannot open a window with SDL_VIDEODRIVER=offscreen"
+    exit 77
+  fi
+}
 # run ARGS...: runs the demo with --report, keeps its report in $report.
 run() {
   if ! report=$("$demo" --report "$@"); then
