@@ -14,6 +14,7 @@
 #include <SDL.h>
 
 #include <array>
+#include <cmath>
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -55,6 +56,9 @@ struct State {
     std::array<bool, SDL_NUM_SCANCODES> held{};
     MouseDrag drag;
     double stepMs = 0.0;
+    /// Steps of the current sample, since it was (re)started, after which a kinematic
+    /// body overlapped a static one: a lift whose shaft a level's walls cross (--report).
+    std::size_t kinematicInStaticSteps = 0;
 };
 
 Sample& sample(State& state) {
@@ -77,6 +81,7 @@ std::vector<View> layout(Sample& current) {
 
 void select(State& state, std::size_t index, SDL_Window* window) {
     state.drag.release();
+    state.kinematicInStaticSteps = 0;
     state.current = index;
     sample(state).reset();
     const std::string title =
@@ -190,6 +195,27 @@ Controls readControls(State& state) {
     return controls;
 }
 
+/// Whether a kinematic body of `world` overlaps a static one by more than touching.
+/// Kinematic bodies pass through static ones, so only a look tells that a lift's path is
+/// blocked.
+bool kinematicInStatic(const World& world) {
+    for (const BodyId mover : world.bodies()) {
+        if (world.type(mover) != BodyType::Kinematic)
+            continue;
+        const Vec2 at = world.position(mover);
+        const Vec2 half = world.halfExtents(mover);
+        for (const BodyId solid : world.bodies()) {
+            if (world.type(solid) != BodyType::Static)
+                continue;
+            const Vec2 apart = world.position(solid) - at;
+            const Vec2 reach = world.halfExtents(solid) + half;
+            if (std::abs(apart.x) < reach.x && std::abs(apart.y) < reach.y)
+                return true;
+        }
+    }
+    return false;
+}
+
 void stepWorlds(State& state, int steps, float dt) {
     for (int i = 0; i < steps; ++i) {
         const Controls controls = readControls(state);
@@ -201,8 +227,12 @@ void stepWorlds(State& state, int steps, float dt) {
         const Uint64 end = SDL_GetPerformanceCounter();
         // Every step, debug drawing on or off: the events of a step are gone after the
         // next, and turning debug on must show what touches now.
-        for (Pane& pane : sample(state).panes())
+        bool overlap = false;
+        for (Pane& pane : sample(state).panes()) {
             pane.contacts.update(*pane.world);
+            overlap = overlap || kinematicInStatic(*pane.world);
+        }
+        state.kinematicInStaticSteps += overlap ? 1 : 0;
         const double ms = 1000.0 * static_cast<double>(end - start) /
                           static_cast<double>(SDL_GetPerformanceFrequency());
         state.stepMs += (ms - state.stepMs) * kStatsSmoothing;
@@ -274,6 +304,7 @@ void printReport(State& state) {
     for (const Pane& pane : current.panes())
         contacts += pane.contacts.count(*pane.world);
     std::printf("contacts %zu\n", contacts);
+    std::printf("kinematic_in_static %zu\n", state.kinematicInStaticSteps);
     const GridPicture grid = pictureGrid(*current.panes().front().world, 1.0f / kStepHz);
     std::printf("grid %s\ngrid_boxes %zu\n", grid.boxes.empty() ? "none" : grid.name.c_str(),
                 grid.boxes.size());

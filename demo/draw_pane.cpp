@@ -16,11 +16,15 @@ namespace jostle::demo {
 namespace {
 
 constexpr int kTextScale = 2;
+/// The band at the top of a pane that holds its title: the world is drawn below it, so
+/// that no body (a wall reaching above the view) is drawn across the title.
+constexpr int kTitleHeight = 26;
+constexpr int kTitleTop = 6;
 /// Velocity lines: seconds of motion they show, so their length reads as speed.
 constexpr float kVelocitySeconds = 0.1f;
 /// The legend and the grid's caption: small, under the pane's title.
 constexpr int kLegendScale = 1;
-constexpr int kLegendTop = 26;
+constexpr int kLegendTop = kTitleHeight + 4;
 constexpr int kLegendLineHeight = kGlyphHeight + 4;
 
 void drawBody(SDL_Renderer* renderer, const World& world, BodyId body, const View& view,
@@ -79,6 +83,14 @@ void drawBody(SDL_Renderer* renderer, const World& world, BodyId body, const Vie
     }
 }
 
+/// The background under a line of legend text at (x, y), `width` pixels long, so that
+/// what is drawn there (a wall, the grid) does not run through the words.
+void drawPlate(SDL_Renderer* renderer, int x, int y, int width) {
+    const SDL_Rect plate{x - 2, y - 2, width + 4, kGlyphHeight * kLegendScale + 4};
+    setColour(renderer, kBackground);
+    SDL_RenderFillRect(renderer, &plate);
+}
+
 /// What the debug marks mean, each word in its mark's colour, and which grid the
 /// broadphase picture shows, with its main level's cell size.
 void drawLegend(SDL_Renderer* renderer, const SDL_Rect& screen, const GridPicture& grid) {
@@ -90,6 +102,10 @@ void drawLegend(SDL_Renderer* renderer, const SDL_Rect& screen, const GridPictur
     };
     int x = screen.x + 8;
     const int y = screen.y + kLegendTop;
+    int width = 0;
+    for (const auto& [colour, word] : words)
+        width += textWidth(kLegendScale, word);
+    drawPlate(renderer, x, y, width);
     for (const auto& [colour, word] : words) {
         setColour(renderer, colour);
         x = drawText(renderer, x, y, kLegendScale, word);
@@ -103,6 +119,7 @@ void drawLegend(SDL_Renderer* renderer, const SDL_Rect& screen, const GridPictur
                   std::to_string(grid.inMainLevel) + " in cells of " + cell + " (level " +
                   std::to_string(grid.mainLevel) + ")";
     }
+    drawPlate(renderer, screen.x + 8, y + kLegendLineHeight, textWidth(kLegendScale, caption));
     setColour(renderer, kTextDim);
     drawText(renderer, screen.x + 8, y + kLegendLineHeight, kLegendScale, caption);
 }
@@ -114,6 +131,9 @@ void drawPane(SDL_Renderer* renderer, const Pane& pane, const View& view, bool d
     SDL_RenderSetClipRect(renderer, &screen);
     setColour(renderer, kBackground);
     SDL_RenderFillRect(renderer, &screen);
+    // The world, below the title's band.
+    const SDL_Rect below{screen.x, screen.y + kTitleHeight, screen.w, screen.h - kTitleHeight};
+    SDL_RenderSetClipRect(renderer, &below);
 
     const World& world = *pane.world;
     GridPicture grid;
@@ -137,8 +157,11 @@ void drawPane(SDL_Renderer* renderer, const Pane& pane, const View& view, bool d
         drawText(renderer, rect.x + rect.w / 2 - width / 2, rect.y - kGlyphHeight - 4, 1,
                  label.text);
     }
+    SDL_RenderSetClipRect(renderer, &screen);
     setColour(renderer, kTextDim);
-    drawText(renderer, screen.x + 8, screen.y + 6, kTextScale, pane.title);
+    drawText(renderer, screen.x + 8, screen.y + kTitleTop, kTextScale, pane.title);
+    setColour(renderer, kPaneBorder);
+    SDL_RenderDrawLine(renderer, screen.x, below.y - 1, screen.x + screen.w - 1, below.y - 1);
     if (debug)
         drawLegend(renderer, screen, grid);
     setColour(renderer, kPaneBorder);

@@ -16,6 +16,11 @@ constexpr float kTile = 32.0f;
 constexpr JumpDef kJump{.height = 4.0f * kTile, .timeToApex = 0.38f};
 constexpr float kRunSpeed = 260.0f;
 
+/// The lift's shaft: from the pit in the floor (x 736 to 832) up past the ledge of row 7,
+/// between the right ends of the steps and of that ledge (both at x 768) and the pit's
+/// right side (832). The lift keeps 4 px clear of both, all the way.
+constexpr float kLiftX = 800.0f;
+constexpr float kLiftHalfWidth = 28.0f;
 constexpr float kLiftBottom = 520.0f;
 constexpr float kLiftTop = 230.0f;
 constexpr float kLiftSpeed = 90.0f;
@@ -61,9 +66,9 @@ public:
                               .oneWay = {0.0f, -1.0f}});
 
         lift_ = world.createBody({.type = BodyType::Kinematic,
-                                  .x = 768,
+                                  .x = kLiftX,
                                   .y = kLiftBottom,
-                                  .hw = 40,
+                                  .hw = kLiftHalfWidth,
                                   .hh = 8,
                                   .vy = -kLiftSpeed});
 

@@ -269,6 +269,8 @@ void World::setOneWay(BodyId id, Vec2 normal) {
 
 void World::dropThrough(BodyId id, float seconds) {
     Body& body = lookUp(*state_, id, "dropThrough");
+    if (body.type != BodyType::Dynamic)
+        fail("dropThrough", "only a dynamic body drops through one-way platforms");
     if (!(seconds >= 0.0f) || !std::isfinite(seconds))
         fail("dropThrough", "seconds must be a finite number >= 0");
     body.dropThroughTime = seconds;

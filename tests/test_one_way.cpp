@@ -112,5 +112,27 @@ TEST(OneWay, OnlyAxisNormalsAreAccepted) {
     EXPECT_THROW(world.dropThrough(body, -1), Error);
 }
 
+// Only a dynamic body falls onto platforms and so drops through them: asking it of a
+// static or kinematic body is a mistake, refused like any bad argument.
+TEST(OneWay, DropThroughRefusesStaticAndKinematicBodies) {
+    World world;
+    const BodyId platform =
+        world.createBody({.type = BodyType::Static, .hw = 50, .hh = 5, .oneWay = {0.0f, -1.0f}});
+    const BodyId lift = world.createBody({.type = BodyType::Kinematic, .hw = 20, .hh = 5});
+    for (const BodyId body : {platform, lift}) {
+        try {
+            world.dropThrough(body, 0.25f);
+            ADD_FAILURE() << "dropThrough on a " << toString(world.type(body))
+                          << " body was accepted";
+        } catch (const Error& e) {
+            EXPECT_STREQ(e.what(),
+                         "dropThrough: only a dynamic body drops through one-way platforms");
+        }
+    }
+    // A body made dynamic may.
+    world.setType(lift, BodyType::Dynamic);
+    EXPECT_NO_THROW(world.dropThrough(lift, 0.25f));
+}
+
 } // namespace
 } // namespace jostle

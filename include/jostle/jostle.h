@@ -379,7 +379,8 @@ jostle_vec2 jostle_body_get_one_way(const jostle_world* world, jostle_body_id bo
 /// {0, 0} or one of {+-1, 0}, {0, +-1} (docs/one-way-platforms.md).
 bool jostle_body_set_one_way(jostle_world* world, jostle_body_id body, jostle_vec2 normal);
 /// Lets the body fall through every one-way platform for the next `seconds` (finite,
-/// >= 0; 0 ends it): "down + jump" in a platformer.
+/// >= 0; 0 ends it): "down + jump" in a platformer. Only a dynamic body drops through:
+/// for a static or kinematic body it returns false and sets the error.
 bool jostle_body_drop_through(jostle_world* world, jostle_body_id body, float seconds);
 
 /// Collision filtering (docs/filtering.md): two bodies collide when each one's category

@@ -265,7 +265,8 @@ public:
     Vec2 oneWay(BodyId id) const;
     void setOneWay(BodyId id, Vec2 normal);
     /// Lets the body fall through every one-way platform for the next `seconds` (>= 0):
-    /// "down + jump" in a platformer. 0 ends it.
+    /// "down + jump" in a platformer. 0 ends it. Only a dynamic body drops through: for a
+    /// static or kinematic body it throws jostle::Error, as for seconds < 0.
     void dropThrough(BodyId id, float seconds);
 
     /// See BodyDef::category and BodyDef::mask.

@@ -314,6 +314,8 @@ static void test_body_properties(void) {
               jostle_body_get_one_way(world, b).y == -1,
           "one way");
     CHECK(jostle_body_drop_through(world, a, 0.5f), "drop through");
+    CHECK(!jostle_body_drop_through(world, b, 0.5f), "a static body does not drop through");
+    CHECK_ERROR("jostle_body_drop_through", "only a dynamic body drops through");
     CHECK(jostle_body_set_category(world, a, 4) && jostle_body_get_category(world, a) == 4,
           "category");
     CHECK(jostle_body_set_mask(world, a, 6) && jostle_body_get_mask(world, a) == 6, "mask");
@@ -321,6 +323,8 @@ static void test_body_properties(void) {
     CHECK(jostle_body_set_type(world, a, JOSTLE_BODY_KINEMATIC) &&
               jostle_body_get_type(world, a) == JOSTLE_BODY_KINEMATIC,
           "type");
+    CHECK(!jostle_body_drop_through(world, a, 0.5f), "a kinematic body does not drop through");
+    CHECK_ERROR("jostle_body_drop_through", "only a dynamic body drops through");
     CHECK(jostle_body_is_awake(world, a), "awake");
     CHECK(jostle_body_wake(world, a), "wake");
 

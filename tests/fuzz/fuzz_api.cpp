@@ -658,7 +658,8 @@ private:
         }
         case 14: {
             const float s = in_.number(0, 2);
-            expect(live && std::isfinite(s) && s >= 0, "dropThrough",
+            const bool dynamic = live && world_.type(id) == BodyType::Dynamic;
+            expect(dynamic && std::isfinite(s) && s >= 0, "dropThrough",
                    [&] { world_.dropThrough(id, s); });
             break;
         }

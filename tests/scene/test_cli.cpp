@@ -187,6 +187,19 @@ TEST_F(Cli, IdsAreQuotedForCsvWhenNeeded) {
     EXPECT_EQ(r.out, "step,id,x,y,vx,vy\n1,\"a,\"\"b\"\"\",0,0,0,0\n");
 }
 
+/// The cells of the summary table's row for `id` (empty if there is none).
+std::vector<std::string> summaryRow(const std::string& out, const std::string& id) {
+    for (const std::string& line : lines(out)) {
+        std::stringstream words(line);
+        std::vector<std::string> cells;
+        for (std::string word; words >> word;)
+            cells.push_back(word);
+        if (!cells.empty() && cells[0] == id)
+            return cells;
+    }
+    return {};
+}
+
 TEST_F(Cli, SummaryWithoutTrace) {
     const std::string scene = write("free.json", kFreeScene);
     const Result r = run("run " + quote(scene) + " --steps 4");
@@ -197,18 +210,53 @@ TEST_F(Cli, SummaryWithoutTrace) {
     EXPECT_THAT(r.out, HasSubstr("1 dynamic"));
     EXPECT_THAT(r.out, HasSubstr("1 s simulated")); // 4 steps of 1/4 s
     // The table row of the ball: after 4 steps x = 4, y = -8, velocity unchanged.
-    bool found = false;
-    for (const std::string& line : lines(r.out)) {
-        std::stringstream words(line);
-        std::vector<std::string> cells;
-        for (std::string word; words >> word;)
-            cells.push_back(word);
-        if (!cells.empty() && cells[0] == "ball") {
-            found = true;
-            EXPECT_EQ(cells, (std::vector<std::string>{"ball", "4", "-8", "4", "-8"}));
-        }
-    }
-    EXPECT_TRUE(found) << r.out;
+    EXPECT_EQ(summaryRow(r.out, "ball"), (std::vector<std::string>{"ball", "4", "-8", "4", "-8"}))
+        << r.out;
+}
+
+// The summary is for people: its numbers have five significant digits at the scene's
+// size (the largest |coordinate| of its boxes), so float noise next to that scale reads
+// as 0, never as -1.4013e-45, 1.17e-19 or "-0". The trace keeps every float exact.
+TEST_F(Cli, SummaryRoundsFloatNoiseToZero) {
+    // The static edge reaches x = ±100: a scene of size 100, printed to 2 decimals. No
+    // gravity, nothing touches: each body moves by its velocity, 4 steps of 1/4 s.
+    const std::string noisy = write("noisy.json", R"({"solver": "classic", "dt": 0.25,
+      "bodies": [
+        {"id": "edge", "type": "static", "x": 0, "y": 95, "hw": 100, "hh": 5},
+        {"id": "rest", "x": 10, "y": 0, "hw": 1, "hh": 1, "vx": -1.4e-45, "vy": 1.17e-19},
+        {"id": "slow", "x": -20, "y": 0, "hw": 1, "hh": 1, "vx": 0.25, "vy": -0.001}]})");
+    const Result r = run("run " + quote(noisy) + " --steps 4");
+    ASSERT_EQ(r.status, 0) << r.err;
+    // rest: x = 10 + 4 × (-1.4e-45 / 4) = 10 in float; y = 1.17e-19; both velocities noise.
+    EXPECT_EQ(summaryRow(r.out, "rest"), (std::vector<std::string>{"rest", "10", "0", "0", "0"}))
+        << r.out;
+    // slow: x = -20 + 0.25 = -19.75; y = -0.001 and vy = -0.001, below 0.005: 0, not -0.
+    EXPECT_EQ(summaryRow(r.out, "slow"),
+              (std::vector<std::string>{"slow", "-19.75", "0", "0.25", "0"}))
+        << r.out;
+
+    // The trace still has the exact floats.
+    const Result trace = run("run " + quote(noisy) + " --steps 4 --every 4 --trace -");
+    ASSERT_EQ(trace.status, 0) << trace.err;
+    const std::vector<Row> rows = rowsOf(trace.out);
+    ASSERT_EQ(rows.size(), 2u);
+    EXPECT_EQ(rows[0].id, "rest");
+    EXPECT_EQ(rows[0].vx, -1.4e-45f);
+    EXPECT_EQ(rows[0].vy, 1.17e-19f);
+    EXPECT_NE(rows[0].y, 0.0f);
+    EXPECT_EQ(rows[1].vy, -0.001f);
+
+    // A scene of size 1 (a body from -1 to 1) is printed to 4 decimals: the same kind of
+    // small speed is now of its scale, and shows.
+    const std::string small = write("small.json", R"({"solver": "classic", "dt": 0.25,
+      "bodies": [{"id": "ball", "x": 0, "y": 0, "hw": 1, "hh": 1, "vx": 0.0012,
+                  "vy": -0.00004}]})");
+    const Result s = run("run " + quote(small) + " --steps 4");
+    ASSERT_EQ(s.status, 0) << s.err;
+    // x = 4 × 0.0012 / 4 = 0.0012; y = -0.00004, below 0.00005: 0.
+    EXPECT_EQ(summaryRow(s.out, "ball"),
+              (std::vector<std::string>{"ball", "0.0012", "0", "0.0012", "0"}))
+        << s.out;
 }
 
 TEST_F(Cli, TheTutorialExampleRuns) {

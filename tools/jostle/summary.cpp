@@ -3,6 +3,8 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
+#include <string>
 #include <vector>
 
 namespace jostle::cli {
@@ -12,11 +14,56 @@ namespace {
 // A summary is read, not parsed: a screenful of bodies says enough, and the trace has
 // them all.
 constexpr std::size_t kMaxRows = 20;
+/// The summary's numbers: this many significant digits at the scene's size, at most this
+/// many decimals. The trace prints every float exactly (trace.cpp).
+constexpr int kSignificantDigits = 5;
+constexpr int kMaxDecimals = 9;
 
-std::string number(float value) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.6g", static_cast<double>(value));
-    return text;
+/// How far the scene reaches from the origin: the largest |coordinate| of its bodies'
+/// boxes and its tile maps, as the file gives them. Float noise in a position is about
+/// 1e-7 of this; a value left over from float arithmetic on velocities is far smaller.
+double sceneSize(const Scene& scene) {
+    double size = 0.0;
+    // The span from `at` to `at + length` along one axis.
+    const auto reach = [&size](float at, float length, std::size_t count = 1) {
+        const double from = static_cast<double>(at);
+        const double to = from + static_cast<double>(length) * static_cast<double>(count);
+        size = std::max({size, std::abs(from), std::abs(to)});
+    };
+    for (const SceneBody& body : scene.bodies) {
+        reach(body.def.x - body.def.hw, 2.0f * body.def.hw);
+        reach(body.def.y - body.def.hh, 2.0f * body.def.hh);
+    }
+    for (const TileMapDef& map : scene.tileMaps) {
+        reach(map.x, map.tile, map.rows.empty() ? 0 : map.rows.front().size());
+        reach(map.y, map.tile, map.rows.size());
+    }
+    return size;
+}
+
+/// Decimals that give five significant digits at the scene's size: 2 for a level 800 px
+/// wide, 4 for one of 5 m. Positions and velocities alike are printed to them, so what is
+/// float noise next to the scene's scale (1e-19, -1.4e-45) reads as 0.
+int decimalsFor(double size) {
+    if (!(size > 0.0) || !std::isfinite(size))
+        return 4;
+    return std::clamp(kSignificantDigits - 1 - static_cast<int>(std::floor(std::log10(size))), 0,
+                      kMaxDecimals);
+}
+
+/// `value` to `decimals` places, without trailing zeros, and never "-0".
+std::string number(float value, int decimals) {
+    char text[64]; // the largest float has 39 digits
+    std::snprintf(text, sizeof text, "%.*f", decimals, static_cast<double>(value));
+    std::string result = text;
+    if (result.find('.') != std::string::npos) {
+        result.erase(result.find_last_not_of('0') + 1);
+        if (result.back() == '.')
+            result.pop_back();
+    }
+    if (result == "-0")
+        result = "0";
+    return result;
 }
 
 std::string onOff(bool on) {
@@ -54,6 +101,8 @@ void printSummary(std::FILE* out, const RunReport& report) {
     std::vector<std::array<std::string, 5>> rows;
     rows.push_back({"id", "x", "y", "vx", "vy"});
     std::size_t moving = 0;
+    const int decimals = decimalsFor(sceneSize(scene));
+    const auto cell = [decimals](float value) { return number(value, decimals); };
     for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
         if (scene.bodies[i].def.type == BodyType::Static)
             continue;
@@ -61,7 +110,7 @@ void printSummary(std::FILE* out, const RunReport& report) {
             continue;
         const Vec2 p = report.world.position(report.bodies[i]);
         const Vec2 v = report.world.velocity(report.bodies[i]);
-        rows.push_back({scene.bodies[i].id, number(p.x), number(p.y), number(v.x), number(v.y)});
+        rows.push_back({scene.bodies[i].id, cell(p.x), cell(p.y), cell(v.x), cell(v.y)});
     }
     if (moving == 0)
         return;

@@ -375,7 +375,8 @@ int bodyGetTouching(lua_State* L) {
     return 1;
 }
 
-/// The body as a definition table that world:newBody accepts: the same fields.
+/// The body as a definition table that world:newBody accepts: the same fields, userData
+/// (the value itself, not a copy) included.
 int bodyGetDef(lua_State* L) {
     const BodyDef def =
         read<BodyDef>(L, "Body:getDef", [](const World& w, BodyId id) { return w.bodyDef(id); });
@@ -390,6 +391,11 @@ int bodyGetDef(lua_State* L) {
         if (std::visit(push, field.member))
             lua_setfield(L, -2, field.property->name);
     }
+    // userData lives in the world's user value table, not in the BodyDef.
+    const int table = lua_gettop(L);
+    bodyGetUserData(L);
+    lua_setfield(L, table, "userData");
+    lua_settop(L, table);
     return 1;
 }
 

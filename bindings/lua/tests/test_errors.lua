@@ -86,6 +86,11 @@ test("values out of range: the core's rules, named by the Lua method", function(
   t.raises({"Body:setDamping", "damping must be >= 0"}, box.setDamping, box, -1)
   t.raises({"Body:setOneWay", "normal must be {0, 0} or one of"}, box.setOneWay, box, 1, 1)
   t.raises({"Body:dropThrough", "seconds must be a finite number >= 0"}, box.dropThrough, box, -1)
+  -- Only a dynamic body falls onto one-way platforms, so only it drops through them.
+  local only = "only a dynamic body drops through one-way platforms"
+  t.raises({"Body:dropThrough", only}, floor.dropThrough, floor, 0.5)
+  local lift = floor:getWorld():newBody({type = "kinematic", x = 0, y = 100, hw = 20, hh = 5})
+  t.raises({"Body:dropThrough", only}, lift.dropThrough, lift, 0.5)
   t.raises({"Body:setVelocity", "a static body cannot move"}, floor.setVelocity, floor, 1, 0)
 end)
 

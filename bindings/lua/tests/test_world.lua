@@ -157,6 +157,27 @@ test("getDef round trip: newBody(body:getDef()) makes the same body", function()
   t.equal(light:getDensity(), 3, "getDensity")
 end)
 
+test("getDef carries userData: newBody(body:getDef()) keeps it", function()
+  local world = jostle.newWorld()
+  local item = {name = "coin", value = 10}
+  local coin = world:newBody({type = "static", x = 5, y = 6, hw = 4, hh = 4, sensor = true,
+    userData = item})
+  local def = coin:getDef()
+  t.truthy(def.userData == item, "getDef gives the user data itself (the same table)")
+  local copy = world:newBody(def)
+  t.truthy(copy:getUserData() == item, "the copy has the same user data")
+  -- Set afterwards, cleared, and given as a value that is not a table.
+  coin:setUserData("picked")
+  t.equal(coin:getDef().userData, "picked", "user data set by setUserData")
+  coin:setUserData(nil)
+  t.equal(coin:getDef().userData, nil, "no user data: no field")
+  t.equal(world:newBody(coin:getDef()):getUserData(), nil, "and none in a copy")
+  -- A new body in a destroyed body's slot does not inherit its user data.
+  copy:destroy()
+  local plain = world:newBody({x = 0, y = 0, hw = 1, hh = 1})
+  t.equal(plain:getDef().userData, nil, "a reused slot has none")
+end)
+
 test("every setter is read back by its getter", function()
   local world = jostle.newWorld({gravity = {0, g}})
   local body = world:newBody({x = 0, y = 0, hw = 1, hh = 1})
