@@ -277,6 +277,26 @@ void World::dropThrough(BodyId id, float seconds) {
     disturb(*state_, id.index);
 }
 
+namespace {
+
+/// Copies `member` of each body, in creation order, into `out`, as many as fit.
+std::size_t readEach(const WorldState& w, std::span<Vec2> out, Vec2 Body::*member) {
+    const std::size_t count = std::min(out.size(), w.order.size());
+    for (std::size_t i = 0; i < count; ++i)
+        out[i] = w.slots[w.order[i].index].*member;
+    return count;
+}
+
+} // namespace
+
+std::size_t World::readPositions(std::span<Vec2> out) const {
+    return readEach(*state_, out, &Body::position);
+}
+
+std::size_t World::readVelocities(std::span<Vec2> out) const {
+    return readEach(*state_, out, &Body::velocity);
+}
+
 // --- Characters ---------------------------------------------------------------------------
 
 bool World::isCharacter(BodyId id) const {

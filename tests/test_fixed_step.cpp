@@ -225,5 +225,35 @@ TEST(FixedStep, BadFrameTimesThrowAndChangeNothing) {
     EXPECT_EQ(clock.advance(-0.0f), 0); // negative zero is zero
 }
 
+TEST(FixedStep, DrawsEachBodyBetweenItsLastTwoSteps) {
+    // Steps of 0.25 s; a box moving at 4 units/s covers 1 unit a step, so its positions
+    // after each step are whole numbers and what lies between them is alpha.
+    World world(WorldDef{.gravity = {0, 0}});
+    const BodyId box = world.createBody({.x = 0, .y = 0, .hw = 1, .hh = 1, .vx = 4});
+    FixedStep clock(0.25f);
+    EXPECT_EQ(clock.drawPosition(world, box), (Vec2{0, 0})); // nothing stepped yet
+    EXPECT_EQ(clock.update(world, 0.375f), 1);               // 1.5 steps: at 1, alpha 0.5
+    EXPECT_FLOAT_EQ(clock.drawPosition(world, box).x, 0.5f);
+    EXPECT_EQ(clock.update(world, 0.5f), 2); // 2 steps: at 3, alpha 0.5
+    EXPECT_FLOAT_EQ(clock.drawPosition(world, box).x, 2.5f);
+    EXPECT_EQ(clock.update(world, 0.125f), 1); // 0.125 + 0.125: at 4, alpha 0
+    EXPECT_FLOAT_EQ(clock.drawPosition(world, box).x, 3.0f);
+    EXPECT_EQ(clock.update(world, 0.125f), 0); // no step: alpha 0.5
+    EXPECT_FLOAT_EQ(clock.drawPosition(world, box).x, 3.5f);
+    // A body made since the last step is drawn where it is.
+    const BodyId late = world.createBody({.x = 7, .y = 0, .hw = 1, .hh = 1, .vx = 4});
+    EXPECT_EQ(clock.drawPosition(world, late), (Vec2{7, 0}));
+    // All at once, in the order of World::bodies().
+    std::vector<Vec2> all(3);
+    EXPECT_EQ(clock.readDrawPositions(world, all), 2u);
+    EXPECT_FLOAT_EQ(all[0].x, 3.5f);
+    EXPECT_EQ(all[1], (Vec2{7, 0}));
+    // A slot reused by another body is not mistaken for the old one.
+    world.destroyBody(box);
+    const BodyId reused = world.createBody({.x = -5, .y = 0, .hw = 1, .hh = 1});
+    EXPECT_EQ(clock.drawPosition(world, reused), (Vec2{-5, 0}));
+    EXPECT_THROW(clock.drawPosition(world, box), Error);
+}
+
 } // namespace
 } // namespace jostle

@@ -391,5 +391,20 @@ TEST(Range, TheLargestNumbersTogetherStayFinite) {
     }
 }
 
+TEST(World, ReadsEveryPositionAndVelocityInOneCall) {
+    World world;
+    const BodyId a = world.createBody({.x = 1, .y = 2, .hw = 1, .hh = 1, .vx = 3, .vy = 4});
+    const BodyId b = world.createBody({.x = 5, .y = 6, .hw = 1, .hh = 1, .vx = 7, .vy = 8});
+    world.createBody({.x = 9, .y = 10, .hw = 1, .hh = 1});
+    world.destroyBody(a); // the order is bodies()'s: b, then the third
+    std::vector<Vec2> positions(5, Vec2{-1, -1}), velocities(1);
+    EXPECT_EQ(world.readPositions(positions), 2u);
+    EXPECT_EQ(positions[0], (Vec2{5, 6}));
+    EXPECT_EQ(positions[1], (Vec2{9, 10}));
+    EXPECT_EQ(positions[2], (Vec2{-1, -1}));         // left alone
+    EXPECT_EQ(world.readVelocities(velocities), 1u); // as many as fit
+    EXPECT_EQ(velocities[0], world.velocity(b));
+}
+
 } // namespace
 } // namespace jostle

@@ -7,12 +7,8 @@
 //
 //     jostle::FixedStep clock(1.0f / 60.0f);
 //     while (running) {
-//         int steps = clock.advance(secondsSinceLastFrame());
-//         for (int i = 0; i < steps; ++i) {
-//             previous = world.position(player);   // for drawing between two steps
-//             world.step(clock.dt());
-//         }
-//         draw(lerp(previous, world.position(player), clock.alpha()));
+//         clock.update(world, secondsSinceLastFrame());
+//         draw(clock.drawPosition(world, player));   // between the last two steps
 //     }
 //
 // Time is counted in whole nanoseconds, so nothing drifts: 60 frames of 1/60 s are 60
@@ -25,6 +21,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <span>
+#include <vector>
 
 namespace jostle {
 
@@ -88,11 +86,53 @@ public:
     /// of steps. For games that draw the world as it is after the last step. If a step
     /// throws (a callback of yours did), the steps left are not taken and their time is
     /// lost.
+    /// It also keeps where every body was before the last step, for drawPosition.
     int update(World& world, float frameSeconds) {
         const int steps = advance(frameSeconds);
-        for (int i = 0; i < steps; ++i)
+        for (int i = 0; i < steps; ++i) {
+            if (i == steps - 1)
+                rememberPositions(world);
             world.step(dt_);
+        }
         return steps;
+    }
+
+    /// Where to draw a body now: between where it was before the last step update()
+    /// took and where it is, by alpha(), so that motion looks smooth when the frame rate
+    /// and the step rate differ. Where it is, for a body that update() has not stepped
+    /// yet (created since). Throws jostle::Error for a stale BodyId, as World does.
+    Vec2 drawPosition(const World& world, BodyId id) const {
+        const Vec2 now = world.position(id);
+        if (id.index >= before_.size() || before_[id.index].body != id)
+            return now;
+        return lerp(before_[id.index].position, now);
+    }
+
+    /// Keeps where every body of `world` is now, for drawPosition: update() calls it
+    /// before the last step it takes; call it yourself before the last step of a frame
+    /// if you step the world by hand.
+    void rememberPositions(const World& world) {
+        const std::span<const BodyId> bodies = world.bodies();
+        scratch_.resize(bodies.size());
+        world.readPositions(scratch_);
+        for (std::size_t i = 0; i < bodies.size(); ++i) {
+            if (bodies[i].index >= before_.size())
+                before_.resize(std::size_t(bodies[i].index) + 1);
+            before_[bodies[i].index] = {bodies[i], scratch_[i]};
+        }
+    }
+
+    /// drawPosition of every body, in the order of World::bodies(), into `out`: as many as
+    /// fit. Returns how many.
+    std::size_t readDrawPositions(const World& world, std::span<Vec2> out) const {
+        const std::size_t count = world.readPositions(out);
+        const std::span<const BodyId> bodies = world.bodies();
+        for (std::size_t i = 0; i < count; ++i) {
+            const BodyId id = bodies[i];
+            if (id.index < before_.size() && before_[id.index].body == id)
+                out[i] = lerp(before_[id.index].position, out[i]);
+        }
+        return count;
     }
 
     /// How far the time left over reaches towards the next step, in [0, 1): draw each
@@ -127,8 +167,20 @@ private:
     /// The tolerance is dt divided by this.
     static constexpr std::int64_t kToleranceDivisor = 1000;
 
+    /// previous + (current - previous) × alpha().
+    Vec2 lerp(Vec2 previous, Vec2 current) const {
+        return previous + (current - previous) * alpha();
+    }
+
+    struct Before {
+        BodyId body;
+        Vec2 position;
+    };
+
     float dt_;
     int maxSteps_;
+    std::vector<Before> before_; ///< by slot: the body there and where it was
+    std::vector<Vec2> scratch_;
     std::int64_t dtTicks_ = 0;
     std::int64_t toleranceTicks_ = 0;
     /// Nanoseconds not yet stepped; down to -toleranceTicks_ after a step taken early.

@@ -211,6 +211,13 @@ public:
     std::span<const BodyId> bodies() const;
     std::size_t bodyCount() const { return bodies().size(); }
 
+    /// Copies the positions of the bodies, in the order of bodies(), into `out`: as many
+    /// as fit (all of them if out.size() >= bodyCount()). Returns how many. One call
+    /// for a whole world: for drawing, and for bindings where a call per body costs.
+    std::size_t readPositions(std::span<Vec2> out) const;
+    /// The same for their velocities.
+    std::size_t readVelocities(std::span<Vec2> out) const;
+
     /// The body as a definition: its current position, velocity and settings.
     BodyDef bodyDef(BodyId id) const;
 

@@ -12,8 +12,6 @@ namespace jostle::lua {
 
 namespace {
 
-// FixedStep holds numbers only: it lives in the userdata itself, with no finalizer.
-static_assert(std::is_trivially_destructible_v<FixedStep>);
 
 FixedStep& checkClock(lua_State* L, const char* where) {
     auto* clock = static_cast<FixedStep*>(luaL_testudata(L, 1, kFixedStepType));
@@ -49,8 +47,11 @@ int clockUpdate(lua_State* L) {
         raise(L, where, "frameSeconds: must be >= 0");
     int steps = 0;
     guard(L, where, [&] { steps = clock.advance(seconds); });
-    for (int i = 0; i < steps; ++i)
+    for (int i = 0; i < steps; ++i) {
+        if (i == steps - 1)
+            clock.rememberPositions(checkWorld(L, 2, where).world);
         stepWorld(L, 2, clock.dt(), where);
+    }
     pushWhole(L, steps);
     return 1;
 }
@@ -78,6 +79,12 @@ int clockGetMaxStepsPerFrame(lua_State* L) {
 
 int clockReset(lua_State* L) {
     checkClock(L, "FixedStep:reset").reset();
+    return 0;
+}
+
+/// FixedStep lives in the userdata itself; its buffers go with it.
+int clockGc(lua_State* L) {
+    static_cast<FixedStep*>(lua_touserdata(L, 1))->~FixedStep();
     return 0;
 }
 
@@ -120,6 +127,8 @@ void openFixedStep(lua_State* L) {
     lua_setfield(L, -2, "__index");
     lua_pushcfunction(L, clockToString);
     lua_setfield(L, -2, "__tostring");
+    lua_pushcfunction(L, clockGc);
+    lua_setfield(L, -2, "__gc");
     lua_pushliteral(L, "jostle.FixedStep");
     lua_setfield(L, -2, "__name");
     lua_pop(L, 1);
