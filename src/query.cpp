@@ -3,6 +3,7 @@
 // applies the filters and the rules of each query (jostle/query.hpp).
 #include "jostle/query.hpp"
 
+#include "first_stop.hpp"
 #include "geometry.hpp"
 #include "query_index.hpp"
 #include "world_access.hpp"
@@ -128,72 +129,6 @@ void checkRay(const WorldState& w, const char* function, Vec2 from, Vec2 to,
     checkFilter(w, filter, function);
 }
 
-// --- Moving boxes ------------------------------------------------------------------------
-
-/// A body a moving box runs into.
-struct Met {
-    std::uint32_t slot;
-    std::uint64_t created; ///< when its body was created: results follow it
-    Hit contact;
-};
-
-/// What stops a moving box first: the time, and every body met then, in creation order.
-struct FirstStop {
-    float time = 2.0f; ///< > 1: nothing in the way
-    std::vector<Met> met;
-    Vec2 centre; ///< where the box stops
-};
-
-/// Sweeps the box along `motion`, by the rules of boxCast; sensors are left out when
-/// `sensorsStop` is false, whatever the filter says.
-void firstStop(const WorldState& w, const Candidates& candidates, Vec2 centre, Vec2 half,
-               Vec2 motion, const QueryFilter& filter, bool sensorsStop, FirstStop& stop) {
-    stop.time = 2.0f;
-    stop.met.clear();
-    const float slop = w.def.physical.slop;
-    auto consider = [&](std::uint32_t slot) {
-        const Body& body = w.slots[slot];
-        if (!passes(w, slot, filter) || (body.sensor && !sensorsStop))
-            return;
-        const Vec2 skin{contactSkin(slop, half.x, body.half.x),
-                        contactSkin(slop, half.y, body.half.y)};
-        const std::optional<Hit> contact =
-            castBox(centre - body.position, half + body.half, motion, skin);
-        if (!contact || contact->time > stop.time)
-            return;
-        // castBox finds only what the box runs into from outside.
-        if (!body.blocks(contact->normal, true, 0.0f))
-            return;
-        if (contact->time < stop.time) {
-            stop.time = contact->time;
-            stop.met.clear();
-        }
-        stop.met.push_back({slot, candidates.created(slot), *contact});
-    };
-    candidates.outsideGrid(consider);
-    candidates.walkPath(centre, motion, half, consider, [&](float end) { return stop.time < end; });
-    if (stop.met.empty())
-        return;
-    // A body near two pieces of the path was met twice.
-    std::sort(stop.met.begin(), stop.met.end(),
-              [](const Met& p, const Met& q) { return p.created < q.created; });
-    stop.met.erase(std::unique(stop.met.begin(), stop.met.end(),
-                               [](const Met& p, const Met& q) { return p.slot == q.slot; }),
-                   stop.met.end());
-    stop.centre = centre + motion * stop.time;
-    // Exactly touching along the axis they came into contact on, whatever the rounding.
-    for (const Met& m : stop.met) {
-        const int axis = m.contact.axis;
-        if (axis < 0)
-            continue;
-        const Body& body = w.slots[m.slot];
-        if (axis == 0)
-            stop.centre.x = body.position.x - std::copysign(half.x + body.half.x, motion.x);
-        else
-            stop.centre.y = body.position.y - std::copysign(half.y + body.half.y, motion.y);
-    }
-}
-
 } // namespace
 
 // --- The API -----------------------------------------------------------------------------
@@ -305,7 +240,9 @@ std::optional<BoxCastHit> boxCast(const World& world, Vec2 centre, Vec2 half, Ve
     checkCast(w, "boxCast", centre, half, translation, filter);
     const Candidates candidates(w);
     FirstStop stop;
-    firstStop(w, candidates, centre, half, translation, filter, true, stop);
+    firstStop(
+        w, candidates, centre, half, translation,
+        [&](std::uint32_t slot) { return passes(w, slot, filter); }, stop);
     if (stop.met.empty())
         return std::nullopt;
     const Met& first = stop.met.front();
@@ -317,13 +254,17 @@ MoveResult moveAndSlide(const World& world, Vec2 centre, Vec2 half, Vec2 transla
     const WorldState& w = WorldAccess::state(world);
     checkCast(w, "moveAndSlide", centre, half, translation, filter);
     const Candidates candidates(w);
+    // Sensors never stop the box, whatever the filter says.
+    auto stopsMovingBox = [&](std::uint32_t slot) {
+        return passes(w, slot, filter) && !w.slots[slot].sensor;
+    };
     MoveResult result{centre, {}};
     Vec2 left = translation;
     FirstStop stop;
     // Every stop drops the part of what is left along the normal of each body met, and a
     // normal is along an axis the box is moving along: after two stops nothing is left.
     while (left.x != 0.0f || left.y != 0.0f) {
-        firstStop(w, candidates, result.centre, half, left, filter, false, stop);
+        firstStop(w, candidates, result.centre, half, left, stopsMovingBox, stop);
         if (stop.met.empty()) {
             result.centre += left;
             break;

@@ -41,6 +41,7 @@
 #include "jostle/world.hpp"
 
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -195,5 +196,54 @@ struct MoveResult {
 /// their blocking face.
 MoveResult moveAndSlide(const World& world, Vec2 centre, Vec2 half, Vec2 translation,
                         const QueryFilter& filter = {});
+
+// --- Moving a body by hand, bump.lua's way -----------------------------------------------
+
+/// How a body moved by move() answers a body in its way (bump.lua's responses).
+enum class Response : std::uint8_t {
+    Slide,  ///< stops going into it and goes on along its face, for the rest of the move
+    Touch,  ///< stops where it touches it: the move ends there
+    Cross,  ///< goes through it, and reports it (a coin, a trigger)
+    Bounce, ///< turns back off its face for the rest of the move, as a ball off a wall
+    Ignore, ///< goes through it, unreported
+};
+
+/// Chooses the response to each body in the way. Called at most once per body and move.
+using MoveFilter = std::function<Response(BodyId other)>;
+
+/// A body move() met.
+struct MoveCollision {
+    BodyId other;
+    Response response;
+    /// Unit, along x or y, pointing from `other` towards the moved body.
+    Vec2 normal;
+    /// The moved body's centre when it touched `other` (placed exactly against its face).
+    Vec2 touch;
+    /// When, as a fraction of the whole move, in [0, 1]: the move takes unit time, and
+    /// keeps going at the same pace after a slide or a bounce.
+    float time = 0.0f;
+    /// The other body's box.
+    Vec2 otherCentre;
+    Vec2 otherHalf;
+};
+
+/// Where move() left the body, and what it met.
+struct MoveOutcome {
+    Vec2 centre;
+    /// In the order met; bodies met at the same moment in creation order.
+    std::vector<MoveCollision> collisions;
+};
+
+/// Moves body `id` by `delta`, the way bump.lua's world:move does, in one call: its box
+/// goes from where the body is towards where it would be, and each body it runs into
+/// (the rules of boxCast: touching is not running into, a body it is already inside does
+/// not stop it, a one-way platform only from its blocking side) answers by `filter`:
+/// Slide (the default for solid bodies), Touch, Cross (the default for sensors), Bounce
+/// or Ignore. Bodies its category and mask leave out, and the body itself, are never
+/// met. The body is put where the move ends (World::setPosition: it wakes what it
+/// leaves and what it reaches); its velocity is left alone. After 32 stops the body stays
+/// where the last one left it. Throws jostle::Error for a stale `id` or a delta that is not
+/// finite, or that carries the body out of the range of math.hpp.
+MoveOutcome move(World& world, BodyId id, Vec2 delta, const MoveFilter& filter = {});
 
 } // namespace jostle

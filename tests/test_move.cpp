@@ -1,0 +1,180 @@
+// move(): a body moved by hand, bump.lua's way. The cases are those bump.lua's spec suite
+// pins down, in jostle's terms (bump gives a rect's top-left corner and size; jostle a
+// centre and half extents), plus the places where jostle's rules differ on purpose.
+#include "jostle/query.hpp"
+#include "jostle/world.hpp"
+
+#include <gtest/gtest.h>
+
+#include <map>
+
+namespace jostle {
+namespace {
+
+/// A box given as bump gives it: top-left corner (x, y), width and height.
+BodyDef rect(float x, float y, float w, float h, BodyType type = BodyType::Static) {
+    return {.type = type, .x = x + w / 2, .y = y + h / 2, .hw = w / 2, .hh = h / 2};
+}
+
+struct MoveTest : ::testing::Test {
+    World world{WorldDef{.gravity = {0, 0}}};
+    /// The item moved: (0, 0, 1, 1), a kinematic body at rest.
+    BodyId item = world.createBody(rect(0, 0, 1, 1, BodyType::Kinematic));
+
+    static MoveFilter always(Response response) {
+        return [response](BodyId) { return response; };
+    }
+};
+
+TEST_F(MoveTest, InAnEmptyWorldTheBodyGoesAllTheWay) {
+    const MoveOutcome out = move(world, item, {1, 1});
+    EXPECT_EQ(out.centre, (Vec2{1.5f, 1.5f}));
+    EXPECT_TRUE(out.collisions.empty());
+    EXPECT_EQ(world.position(item), out.centre);
+}
+
+TEST_F(MoveTest, TouchStopsWhereTheBodiesMeet) {
+    const BodyId b = world.createBody(rect(0, 2, 1, 1));
+    world.createBody(rect(0, 3, 1, 1));
+    const MoveOutcome out = move(world, item, {0, 5}, always(Response::Touch));
+    // Its bottom (1) reaches b's top (2) after 1 of 5.
+    EXPECT_EQ(out.centre, (Vec2{0.5f, 1.5f}));
+    ASSERT_EQ(out.collisions.size(), 1u);
+    EXPECT_EQ(out.collisions[0].other, b);
+    EXPECT_EQ(out.collisions[0].response, Response::Touch);
+    EXPECT_EQ(out.collisions[0].normal, (Vec2{0, -1}));
+    EXPECT_EQ(out.collisions[0].touch, (Vec2{0.5f, 1.5f}));
+    EXPECT_FLOAT_EQ(out.collisions[0].time, 0.2f);
+    EXPECT_EQ(out.collisions[0].otherCentre, (Vec2{0.5f, 2.5f}));
+    EXPECT_EQ(out.collisions[0].otherHalf, (Vec2{0.5f, 0.5f}));
+    EXPECT_EQ(world.position(item), out.centre);
+}
+
+TEST_F(MoveTest, CrossGoesThroughAndReportsEachInTurn) {
+    const BodyId b = world.createBody(rect(0, 2, 1, 1));
+    const BodyId c = world.createBody(rect(0, 3, 1, 1));
+    const MoveOutcome out = move(world, item, {0, 5}, always(Response::Cross));
+    EXPECT_EQ(out.centre, (Vec2{0.5f, 5.5f}));
+    ASSERT_EQ(out.collisions.size(), 2u);
+    EXPECT_EQ(out.collisions[0].other, b);
+    EXPECT_FLOAT_EQ(out.collisions[0].time, 0.2f);
+    EXPECT_EQ(out.collisions[1].other, c);
+    EXPECT_FLOAT_EQ(out.collisions[1].time, 0.4f);
+    EXPECT_EQ(out.collisions[1].touch, (Vec2{0.5f, 2.5f}));
+}
+
+TEST_F(MoveTest, SlideStopsAlongTheNormalAndGoesOnAlongTheFace) {
+    // b: (0, 2, 1, 2), below the item; c: (2, 1, 1, 1). Moving by (5, 5), the item meets
+    // c's left face after 1 of 5 (its right edge from 1 to 2), at (1.5, 1.5), then slides
+    // down the rest: to (1.5, 5.5). It passes b's corner exactly and never enters it.
+    world.createBody(rect(0, 2, 1, 2));
+    const BodyId c = world.createBody(rect(2, 1, 1, 1));
+    const MoveOutcome out = move(world, item, {5, 5});
+    EXPECT_EQ(out.centre, (Vec2{1.5f, 5.5f}));
+    ASSERT_EQ(out.collisions.size(), 1u);
+    EXPECT_EQ(out.collisions[0].other, c);
+    EXPECT_EQ(out.collisions[0].response, Response::Slide);
+    EXPECT_EQ(out.collisions[0].normal, (Vec2{-1, 0}));
+    EXPECT_EQ(out.collisions[0].touch, (Vec2{1.5f, 1.5f}));
+    EXPECT_FLOAT_EQ(out.collisions[0].time, 0.2f);
+}
+
+TEST_F(MoveTest, BounceTurnsTheRestOfTheMoveBack) {
+    // Down 5 onto b's top after 1: the 4 left go back up, from 1.5 to -2.5.
+    world.createBody(rect(0, 2, 1, 2));
+    const MoveOutcome out = move(world, item, {0, 5}, always(Response::Bounce));
+    EXPECT_EQ(out.centre, (Vec2{0.5f, -2.5f}));
+    ASSERT_EQ(out.collisions.size(), 1u);
+    EXPECT_EQ(out.collisions[0].touch, (Vec2{0.5f, 1.5f}));
+}
+
+TEST_F(MoveTest, AFloorAndAWallMetTogetherAreBothReported) {
+    // A 10 × 10 item moving by (20, 20) meets a floor (top 20) and a wall (left 20) after
+    // half of it: both stop it there, reported in creation order.
+    const BodyId big = world.createBody(rect(0, 0, 10, 10, BodyType::Kinematic));
+    const BodyId floor = world.createBody(rect(-20, 20, 100, 10));
+    const BodyId wall = world.createBody(rect(20, -40, 10, 60));
+    const MoveOutcome out = move(world, big, {20, 20});
+    EXPECT_EQ(out.centre, (Vec2{15, 15}));
+    ASSERT_EQ(out.collisions.size(), 2u);
+    EXPECT_EQ(out.collisions[0].other, floor);
+    EXPECT_EQ(out.collisions[1].other, wall);
+    EXPECT_FLOAT_EQ(out.collisions[0].time, 0.5f);
+}
+
+TEST_F(MoveTest, NothingIsTunnelledThrough) {
+    world.createBody(rect(50, -5, 1, 10));
+    EXPECT_EQ(move(world, item, {100, 0}).centre, (Vec2{49.5f, 0.5f}));
+}
+
+TEST_F(MoveTest, SlidingDownAColumnOfBoxesNeverSnagsOnTheirSeams) {
+    // Pressed into a column of 10 × 10 boxes (x from 0) while falling past three seams.
+    const BodyId player = world.createBody(rect(-10, -30, 10, 10, BodyType::Kinematic));
+    const BodyId first = world.createBody(rect(0, -20, 10, 10));
+    world.createBody(rect(0, -10, 10, 10));
+    world.createBody(rect(0, 0, 10, 10));
+    const MoveOutcome out = move(world, player, {2, 35});
+    EXPECT_EQ(out.centre, (Vec2{-5, 10}));
+    ASSERT_EQ(out.collisions.size(), 1u);
+    EXPECT_EQ(out.collisions[0].other, first);
+}
+
+TEST_F(MoveTest, ABodyStartingInsideAnotherIsFreeToLeave) {
+    // bump.lua pushes such an item out by the shortest way first (to (3, -2) here); jostle
+    // lets it go where it was going: queryBox tells that it was inside.
+    const BodyId inside = world.createBody(rect(3, 3, 2, 2, BodyType::Kinematic));
+    world.createBody(rect(0, 0, 8, 8));
+    const MoveOutcome out = move(world, inside, {0, 17});
+    EXPECT_EQ(out.centre, (Vec2{4, 21}));
+    EXPECT_TRUE(out.collisions.empty());
+}
+
+TEST_F(MoveTest, TheFilterIsAskedOnceABodyAndIgnoreMeansThrough) {
+    const BodyId ghost = world.createBody(rect(3, 0, 1, 1));
+    const BodyId wall = world.createBody(rect(6, 0, 1, 1));
+    std::map<std::uint32_t, int> asked;
+    const MoveOutcome out = move(world, item, {10, 0}, [&](BodyId other) {
+        ++asked[other.index];
+        return other == ghost ? Response::Ignore : Response::Slide;
+    });
+    EXPECT_EQ(out.centre, (Vec2{5.5f, 0.5f}));
+    ASSERT_EQ(out.collisions.size(), 1u);
+    EXPECT_EQ(out.collisions[0].other, wall);
+    for (const auto& [slot, times] : asked)
+        EXPECT_EQ(times, 1) << slot;
+}
+
+TEST_F(MoveTest, SensorsAreCrossedAndFiltersAreTheBodys) {
+    // By default a sensor is crossed and reported; a body the item's mask leaves out is
+    // not met at all.
+    const BodyId coin = world.createBody(
+        {.type = BodyType::Static, .x = 3.5f, .y = 0.5f, .hw = 0.5f, .hh = 0.5f, .sensor = true});
+    world.createBody(
+        {.type = BodyType::Static, .x = 6.5f, .y = 0.5f, .hw = 0.5f, .hh = 0.5f, .category = 4});
+    world.setMask(item, ~4u);
+    const MoveOutcome out = move(world, item, {10, 0});
+    EXPECT_EQ(out.centre, (Vec2{10.5f, 0.5f}));
+    ASSERT_EQ(out.collisions.size(), 1u);
+    EXPECT_EQ(out.collisions[0].other, coin);
+    EXPECT_EQ(out.collisions[0].response, Response::Cross);
+}
+
+TEST_F(MoveTest, AOneWayPlatformStopsOnlyFromItsBlockingSide) {
+    world.createBody(
+        {.type = BodyType::Static, .x = 0.5f, .y = -5, .hw = 5, .hh = 0.5f, .oneWay = {0, -1}});
+    // Up through it from below, then down onto its top.
+    EXPECT_EQ(move(world, item, {0, -10}).centre, (Vec2{0.5f, -9.5f}));
+    const MoveOutcome down = move(world, item, {0, 10});
+    EXPECT_EQ(down.centre, (Vec2{0.5f, -6}));
+    ASSERT_EQ(down.collisions.size(), 1u);
+}
+
+TEST_F(MoveTest, BadArgumentsThrow) {
+    EXPECT_THROW(move(world, item, {NAN, 0}), Error);
+    EXPECT_THROW(move(world, item, {2e9f, 0}), Error);
+    world.destroyBody(item);
+    EXPECT_THROW(move(world, item, {1, 0}), Error);
+}
+
+} // namespace
+} // namespace jostle
