@@ -196,6 +196,30 @@ TEST_P(Characters, WallFrictionIsTheGamesToAskFor) {
     EXPECT_LT(walled.world.position(walled.hero).y + 300, 0.25f * 46.7f);
 }
 
+TEST_P(Characters, ClimbingOverTheTopOfAWallItIsPressedIntoDoesNotCatchOnIt) {
+    // Jumping at 500 against a wall whose top is 40 above the floor, walking into it: as
+    // soon as a step begins with the character's bottom above the wall's top (by more
+    // than the contact skin, 0.16), it walks on at 150 in that very step.
+    World world(WorldDef{.gravity = {0, kG}, .solver = GetParam(), .sleeping = false});
+    world.createBody({.type = BodyType::Static, .x = 0, .y = 50, .hw = 500, .hh = 50});
+    world.createBody({.type = BodyType::Static, .x = 120, .y = -20, .hw = 20, .hh = 20});
+    const BodyId hero = world.createBody({.x = 94, .y = -8, .hw = 6, .hh = 8, .character = true});
+    world.setWalkSpeed(hero, 150);
+    for (int i = 0; i < 10; ++i)
+        world.step(kDt);
+    world.setVelocity(hero, {150, -500});
+    bool climbed = false;
+    for (int i = 0; i < 20; ++i) {
+        const float bottom = world.position(hero).y + 8;
+        world.step(kDt);
+        if (bottom < -40 - 0.16f) {
+            EXPECT_EQ(world.velocity(hero).x, 150.0f) << "step " << i;
+            climbed = true;
+        }
+    }
+    EXPECT_TRUE(climbed);
+}
+
 // --- Walking --------------------------------------------------------------------------------
 
 TEST_P(Characters, WalksAtTheCommandedSpeedOnTheGround) {

@@ -132,5 +132,169 @@ TEST(Platformer, WalksJumpsThroughRidesAndSlides) {
         queryBox(game.world, game.at() + Vec2{-20, 8}, {2, 2}, {.ignore = game.hero}).size() >= 1);
 }
 
+// --- A character ----------------------------------------------------------------------------
+//
+// The same kind of level, played by a character (BodyDef::character) with the default
+// friction, the way docs/characters.md makes one: the game sets a walk speed from its input
+// every frame and jumps by setting the vertical speed; nothing else. A guard, a kinematic
+// body, is moved by hand with move().
+
+// 60 tiles wide. The floor's top is at y = 304, with a pit from x = 480 to 640 (tiles 30 to
+// 39) that a ferry crosses and a lift's shaft from x = 768 to 832 (tiles 48 to 51); a wall
+// 48 high at x = 192 to 208 (tile 12); a block at tiles 20 and 21 (x 320 to 352) whose top
+// is 32 above the floor.
+std::vector<std::string> characterLevelRows() {
+    std::vector<std::string> rows(19, "#" + std::string(58, '.') + "#");
+    rows.push_back(std::string(30, '#') + std::string(10, '.') + std::string(8, '#') +
+                   std::string(4, '.') + std::string(8, '#'));
+    for (int row = 16; row < 19; ++row)
+        rows[std::size_t(row)][12] = '#';
+    for (int row = 17; row < 19; ++row)
+        rows[std::size_t(row)][20] = rows[std::size_t(row)][21] = '#';
+    return rows;
+}
+
+/// How high a jump at `speed` rises in steps of kDt (the integrator's, not v² / 2g: each
+/// step moves by the speed after that step's gravity).
+float discreteJumpHeight(float speed) {
+    float height = 0, v = speed;
+    while ((v -= kG * kDt) > 0)
+        height += v * kDt;
+    return height;
+}
+
+struct CharacterGame {
+    World world{WorldDef{.gravity = {0, kG}}};
+    TileMapId level =
+        createTileMap(world, {.x = 0, .y = 0, .tile = kTile, .rows = characterLevelRows()});
+    BodyId hero = world.createBody({.x = 40, .y = 296, .hw = 6, .hh = 8, .character = true});
+    BodyId crate = world.createBody({.x = 120, .y = 296, .hw = 8, .hh = 8, .friction = 0.3f});
+    // On the block's top.
+    BodyId coin = world.createBody(
+        {.type = BodyType::Static, .x = 330, .y = 266, .hw = 4, .hh = 4, .sensor = true});
+    // Spans the pit's first 60 units, its top at the floor's height.
+    BodyId ferry =
+        world.createBody({.type = BodyType::Kinematic, .x = 510, .y = 312, .hw = 30, .hh = 8});
+    // Beyond the pit: a lift in its shaft, its top at the floor's height.
+    BodyId lift =
+        world.createBody({.type = BodyType::Kinematic, .x = 800, .y = 312, .hw = 24, .hh = 8});
+    FixedStep clock{kDt};
+    int coins = 0;
+
+    Vec2 at() const { return world.position(hero); }
+    bool standsOn(BodyId body) const {
+        const std::optional<Ground> ground = world.ground(hero);
+        return ground && ground->body == body;
+    }
+    /// A frame of 1/60 s, walking at `walk`; a jump at `jump` units/s if on the ground.
+    void frame(float walk, float jump = 0.0f) {
+        world.setWalkSpeed(hero, walk);
+        if (jump > 0 && world.ground(hero))
+            world.setVelocity(hero, {world.velocity(hero).x, -jump});
+        clock.update(world, kDt);
+        for (const SensorEvent& e : world.sensorBegins())
+            coins += e.sensor == coin && e.visitor == hero;
+    }
+    void play(int frames, float walk) {
+        for (int i = 0; i < frames; ++i)
+            frame(walk);
+    }
+};
+
+TEST(Platformer, ACharacterPlaysTheLevelWithNoWorkaround) {
+    CharacterGame game;
+    game.play(30, 0);
+    ASSERT_TRUE(game.world.ground(game.hero));
+
+    // Walks at exactly the commanded speed on the floor (friction takes nothing), then
+    // pushes the crate (x 112 to 128) ahead of it.
+    game.play(10, 150);
+    EXPECT_EQ(game.world.velocity(game.hero).x, 150.0f);
+    game.play(60, 150);
+    EXPECT_GT(game.world.position(game.crate).x, 150.0f);
+    EXPECT_LT(game.at().x, game.world.position(game.crate).x);
+    EXPECT_TRUE(game.world.isTouching(game.hero, game.crate));
+
+    // Against the wall (x = 192), a jump while pressing into it rises as in open air,
+    // clears the wall's top (48 up) and lands beyond it.
+    game.world.setPosition(game.crate, {90, 296}); // out of the way
+    game.world.setPosition(game.hero, {170, 296});
+    game.play(20, 150);
+    ASSERT_TRUE(game.world.touching(game.hero).wallRight);
+    const float floorY = game.at().y, jump = std::sqrt(2 * kG * 99);
+    float highest = floorY;
+    for (int i = 0; i < 40; ++i) {
+        game.frame(150, i == 0 ? jump : 0.0f);
+        highest = std::min(highest, game.at().y);
+    }
+    EXPECT_NEAR(floorY - highest, discreteJumpHeight(jump), 0.01f * discreteJumpHeight(jump));
+    game.play(30, 150);
+    EXPECT_GT(game.at().x, 208.0f);
+    EXPECT_NEAR(game.at().y, floorY, 0.05f);
+
+    // Up onto the block from x = 260, jumping 40 high: its path clears the corner at
+    // (320, 272), so it walks at 150 all the way, lands on the top and takes the coin.
+    game.world.setPosition(game.hero, {260, 296});
+    game.play(5, 0);
+    game.frame(150, std::sqrt(2 * kG * 40));
+    for (int i = 0; i < 40 && !game.world.ground(game.hero); ++i) {
+        game.frame(150);
+        EXPECT_EQ(game.world.velocity(game.hero).x, 150.0f) << "frame " << i;
+    }
+    game.play(3, 0);
+    EXPECT_NEAR(game.at().y, 272.0f - 8.0f, 0.05f);
+    EXPECT_EQ(game.coins, 1);
+
+    // Down to the pit's edge and onto the ferry, which crosses the pit (100 to the right in
+    // 2 s) and stops while the hero stands on it: it rides exactly, then walks off.
+    game.world.setPosition(game.hero, {510, 296});
+    game.play(10, 0);
+    ASSERT_TRUE(game.standsOn(game.ferry));
+    const float onFerry = game.at().x - game.world.position(game.ferry).x;
+    game.world.setVelocity(game.ferry, {50, 0});
+    game.play(120, 0);
+    EXPECT_TRUE(game.standsOn(game.ferry));
+    EXPECT_EQ(game.world.ground(game.hero)->velocity, (Vec2{50, 0}));
+    game.world.setVelocity(game.ferry, {0, 0});
+    game.play(10, 0);
+    EXPECT_NEAR(game.at().x - game.world.position(game.ferry).x, onFerry, 1e-3f);
+    game.play(40, 150);
+    EXPECT_GT(game.at().x, 640.0f);
+    EXPECT_FALSE(game.standsOn(game.ferry));
+
+    // The lift: up 96 in 2 s, then down again, the hero standing on it, walking at 0.
+    game.world.setPosition(game.hero, {800, 296});
+    game.play(10, 0);
+    ASSERT_TRUE(game.standsOn(game.lift));
+    for (float vy : {-48.0f, 48.0f}) {
+        game.world.setVelocity(game.lift, {0, vy});
+        game.play(120, 0);
+        EXPECT_NEAR(game.at().y, game.world.position(game.lift).y - 16, 0.2f);
+        EXPECT_NEAR(game.at().x, 800.0f, 1e-3f);
+        EXPECT_TRUE(game.standsOn(game.lift));
+    }
+
+    // Drawn between the last two steps: frames of exactly a step leave alpha at 0, which
+    // draws the hero where it was before the last one.
+    const Vec2 before = game.at();
+    game.play(1, 0);
+    EXPECT_EQ(game.clock.alpha(), 0.0f);
+    EXPECT_EQ(game.clock.drawPosition(game.world, game.hero), before);
+}
+
+TEST(Platformer, AGuardMovedByHandSlidesAlongTheLevel) {
+    // A kinematic guard moved with move(): walking right along the floor it stops at the
+    // wall's face (x = 192), sliding down onto the floor while falling.
+    CharacterGame game;
+    const BodyId guard =
+        game.world.createBody({.type = BodyType::Kinematic, .x = 150, .y = 290, .hw = 6, .hh = 8});
+    const MoveOutcome out = move(game.world, guard, {100, 40});
+    EXPECT_EQ(out.centre, (Vec2{186, 296}));
+    ASSERT_EQ(out.collisions.size(), 2u); // the floor, then the wall
+    EXPECT_EQ(out.collisions[0].normal, (Vec2{0, -1}));
+    EXPECT_EQ(out.collisions[1].normal, (Vec2{-1, 0}));
+    EXPECT_EQ(game.world.position(guard), out.centre);
+}
+
 } // namespace
 } // namespace jostle

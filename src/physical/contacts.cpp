@@ -54,6 +54,16 @@ struct Facing {
     float skin;
 };
 
+/// Apart along `normal` by `gap`, and neither body moving fast enough towards the other
+/// to close it within the step. Each body's own speed counts, not only the pair's: two
+/// boxes falling together do not approach, but when the lower one lands the upper one
+/// must be stopped in the same step.
+bool staysApart(const Body& a, const Body& b, Vec2 normal, float gap, float dt) {
+    const float towardB = std::max(0.0f, -dot(a.velocity, normal));
+    const float towardA = std::max(0.0f, dot(b.velocity, normal));
+    return gap > 0.0f && gap > (towardA + towardB) * dt;
+}
+
 /// Where a contact's normal is chosen, or nothing if the pair cannot meet in this step.
 /// The axis is geometry.hpp's contactAxis, with two exceptions at corners:
 /// - A dynamic body apart on both axes from a static or kinematic one meets it where its
@@ -67,6 +77,13 @@ std::optional<Facing> chooseNormal(const StepContext& step, const Body& a, const
     const float gapY = std::abs(d.y) - (a.half.y + b.half.y);
     const float skinX = step.skinOf(a.half.x, b.half.x);
     const float skinY = step.skinOf(a.half.y, b.half.y);
+    // Apart along an axis by more than the skin, and not closing that gap in the step:
+    // they never overlap along it, so they cannot touch (a box rising past a ledge it is
+    // flush with does not meet the ledge's side).
+    const Vec2 normalX{d.x < 0.0f ? -1.0f : 1.0f, 0.0f}, normalY{0.0f, d.y < 0.0f ? -1.0f : 1.0f};
+    if ((gapX > skinX && staysApart(a, b, normalX, gapX, step.dt)) ||
+        (gapY > skinY && staysApart(a, b, normalY, gapY, step.dt)))
+        return std::nullopt;
     bool alongX = contactAxis(gapX, gapY, skinX, skinY) == Axis::X;
     if (gapX > skinX && gapY > skinY && (a.invMass == 0.0f || b.invMass == 0.0f)) {
         const std::optional<Hit> path =
@@ -81,19 +98,7 @@ std::optional<Facing> chooseNormal(const StepContext& step, const Body& a, const
         if (isSeam(step.world, aStatic ? a : b, aStatic ? b : a, alongX ? 0 : 1))
             alongX = !alongX;
     }
-    if (alongX)
-        return Facing{Vec2{d.x < 0.0f ? -1.0f : 1.0f, 0.0f}, gapX, skinX};
-    return Facing{Vec2{0.0f, d.y < 0.0f ? -1.0f : 1.0f}, gapY, skinY};
-}
-
-/// Apart along `normal` by `gap`, and neither body moving fast enough towards the other
-/// to close it within the step. Each body's own speed counts, not only the pair's: two
-/// boxes falling together do not approach, but when the lower one lands the upper one
-/// must be stopped in the same step.
-bool staysApart(const Body& a, const Body& b, Vec2 normal, float gap, float dt) {
-    const float towardB = std::max(0.0f, -dot(a.velocity, normal));
-    const float towardA = std::max(0.0f, dot(b.velocity, normal));
-    return gap > 0.0f && gap > (towardA + towardB) * dt;
+    return alongX ? Facing{normalX, gapX, skinX} : Facing{normalY, gapY, skinY};
 }
 
 /// Starts `c` from last step's impulses if the cache holds the same contact: the same
