@@ -1,6 +1,7 @@
 // Characters: walking along the ground, and rubbing only on floors.
 #include "characters.hpp"
 
+#include "integrate.hpp"
 #include "world_state.hpp"
 
 namespace jostle {
@@ -28,7 +29,8 @@ void walkCharacters(WorldState& world) {
             continue;
         const BodyId ground = groundOf(world, id.index).body;
         const float under = ground.isNull() ? 0.0f : dot(world.slots[ground.index].velocity, right);
-        body.velocity += right * (under + body.walkSpeed - dot(body.velocity, right));
+        body.velocity = withinRange(body.velocity +
+                                    right * (under + body.walkSpeed - dot(body.velocity, right)));
     }
 }
 

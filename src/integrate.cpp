@@ -18,8 +18,7 @@ void integrateVelocity(const WorldDef& def, Body& body, float dt) {
     }
     // The hard limit of math.hpp first, per axis: gravity x scale x dt can reach 1e27,
     // whose square (in the length below) would overflow.
-    body.velocity.x = std::clamp(body.velocity.x, -kMaxMagnitude, kMaxMagnitude);
-    body.velocity.y = std::clamp(body.velocity.y, -kMaxMagnitude, kMaxMagnitude);
+    body.velocity = withinRange(body.velocity);
     // clampVec(xv, yv, maxVelocity): scale the vector down to the largest speed.
     if (std::isfinite(def.maxVelocity)) {
         const float d = length(body.velocity);
@@ -50,6 +49,11 @@ void integrateAwakeBodies(WorldState& world, float dt) {
     }
 }
 
+Vec2 withinRange(Vec2 velocity) {
+    return {std::clamp(velocity.x, -kMaxMagnitude, kMaxMagnitude),
+            std::clamp(velocity.y, -kMaxMagnitude, kMaxMagnitude)};
+}
+
 bool stopAtTheEdge(Body& body) {
     bool stopped = false;
     auto stop = [&](float& position, float& velocity) {
@@ -71,8 +75,7 @@ void keepInsideTheWorld(WorldState& world) {
         // past the edge (slow enough to rest, with a long enough dt).
         if (b.type == BodyType::Static)
             continue;
-        b.velocity.x = std::clamp(b.velocity.x, -kMaxMagnitude, kMaxMagnitude);
-        b.velocity.y = std::clamp(b.velocity.y, -kMaxMagnitude, kMaxMagnitude);
+        b.velocity = withinRange(b.velocity);
         if (stopAtTheEdge(b) && b.asleep)
             world.restingDirty = true; // it moved within the grid of resting bodies
     }

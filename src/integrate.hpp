@@ -2,6 +2,8 @@
 // the edge of the world (math.hpp's range) that no body passes.
 #pragma once
 
+#include "jostle/math.hpp"
+
 namespace jostle {
 
 struct Body;
@@ -19,6 +21,10 @@ void applyForces(WorldState& world, float dt);
 /// The physical model's first stage: integrateVelocity for every awake dynamic body, and
 /// the time each one has left to drop through one-way platforms counts down.
 void integrateAwakeBodies(WorldState& world, float dt);
+
+/// Holds each component of a velocity to ±kMaxMagnitude (math.hpp): no speed beyond it,
+/// so that no later sum overflows.
+Vec2 withinRange(Vec2 velocity);
 
 /// The edge of the world (math.hpp): a body beyond ±kMaxMagnitude on an axis is put back
 /// on it, and loses its speed along that axis. True if it was beyond. The classic model

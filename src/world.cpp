@@ -113,9 +113,9 @@ void World::contacts(BodyId id, std::vector<ContactInfo>& out) const {
     lookUp(*state_, id, "contacts");
     out.clear();
     state_->events.forEachTouchOf(id.index, [&](const TouchRecord& r) {
-        if (r.a != id && r.b != id)
-            return; // of the slot's previous body
         const bool isA = r.a == id;
+        if ((!isA && r.b != id) || !state_->isCurrent(isA ? r.b : r.a))
+            return; // of the slot's previous body, or with a body destroyed since
         out.push_back(
             {isA ? r.b : r.a, isA ? r.normal : -r.normal, pointOf(*state_, r), r.impulse});
     });

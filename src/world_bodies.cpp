@@ -1,6 +1,7 @@
 // World's bodies: creating and destroying them, their handles, and every getter and
 // setter, each setter checking its argument (body_properties.hpp has the rules).
 #include "body_properties.hpp"
+#include "integrate.hpp"
 #include "physical/sleep.hpp"
 #include "world_access.hpp"
 
@@ -324,10 +325,11 @@ float World::walkSpeed(BodyId id) const {
 void World::setWalkSpeed(BodyId id, float speed) {
     Body& b = lookUp(*state_, id, "setWalkSpeed");
     requireFinite("setWalkSpeed", "speed", speed);
-    if (b.walkSpeed == speed)
-        return; // a standing character, told to stand every frame, may sleep
+    // A standing character, told to stand every frame, may sleep.
+    const bool changed = b.walkSpeed != speed;
     b.walkSpeed = speed;
-    disturb(*state_, id.index);
+    if (changed)
+        disturb(*state_, id.index);
 }
 
 std::optional<Ground> World::ground(BodyId id) const {
@@ -354,7 +356,7 @@ void World::applyImpulse(BodyId id, Vec2 impulse) {
     requireFinite("applyImpulse", "impulse", impulse);
     if (!b.isDynamic())
         return;
-    b.velocity += impulse * b.invMass;
+    b.velocity = withinRange(b.velocity + impulse * b.invMass);
     disturb(*state_, id.index);
 }
 

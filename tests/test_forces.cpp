@@ -123,6 +123,37 @@ TEST_P(Forces, AContactBeginSaysWhereTheBodiesMet) {
     EXPECT_TRUE(met);
 }
 
+TEST_P(Forces, NoSpeedLeavesTheRangeOfNumbersJostleWorksIn) {
+    // A body of mass 1e-6 kicked by 1e4: 1e10 units/s, held to 1e9 on each axis
+    // (math.hpp), as every speed is (found by fuzz_api: impulse-beyond-the-range).
+    const BodyId light = world.createBody({.hw = 1, .hh = 1, .mass = 1e-6f});
+    world.applyImpulse(light, {1e4f, -1e4f});
+    EXPECT_EQ(world.velocity(light), (Vec2{kMaxMagnitude, -kMaxMagnitude}));
+    // A character walking at 1e9 on a ground moving at 1e9 the same way.
+    world.setGravity({0, 10});
+    const BodyId belt = world.createBody(
+        {.type = BodyType::Kinematic, .x = 0, .y = 10, .hw = 1000, .hh = 5, .vx = 1e9f});
+    const BodyId runner = world.createBody({.x = 0, .y = 3, .hw = 1, .hh = 2, .character = true});
+    world.setWalkSpeed(runner, 1e9f);
+    for (int i = 0; i < 3; ++i)
+        world.step(kDt);
+    (void)belt;
+    EXPECT_LE(world.velocity(runner).x, kMaxMagnitude);
+}
+
+TEST_P(Forces, ContactsLeaveOutABodyDestroyedSinceTheStep) {
+    world.setGravity({0, 600});
+    const BodyId floor =
+        world.createBody({.type = BodyType::Static, .x = 0, .y = 10, .hw = 100, .hh = 10});
+    const BodyId crate = world.createBody({.x = 0, .y = -5, .hw = 5, .hh = 5});
+    for (int i = 0; i < 10; ++i)
+        world.step(kDt);
+    ASSERT_EQ(world.contacts(floor).size(), 1u);
+    world.destroyBody(crate);
+    EXPECT_TRUE(world.contacts(floor).empty());
+    EXPECT_FALSE(world.ground(floor));
+}
+
 INSTANTIATE_TEST_SUITE_P(Models, Forces, ::testing::Values(Solver::Classic, Solver::Physical),
                          [](const ::testing::TestParamInfo<Solver>& model) {
                              return model.param == Solver::Classic ? "Classic" : "Physical";

@@ -208,7 +208,8 @@ enum class Response : std::uint8_t {
     Ignore, ///< goes through it, unreported
 };
 
-/// Chooses the response to each body in the way. Called at most once per body and move.
+/// Chooses the response to each body in the way. Called at most once per body and move,
+/// while move() walks the world: it may read the world, and must not change it.
 using MoveFilter = std::function<Response(BodyId other)>;
 
 /// A body move() met.

@@ -321,8 +321,9 @@ public:
 
     // --- Contacts now --------------------------------------------------------------------
 
-    /// The bodies this one touched at the end of the last step (sensors excluded), in
-    /// the order of the bodies they pair with, created first first. `out` is cleared first.
+    /// The bodies this one touched at the end of the last step (sensors excluded, and
+    /// bodies destroyed since), in the order of the bodies they pair with, created first
+    /// first. `out` is cleared first.
     void contacts(BodyId id, std::vector<ContactInfo>& out) const;
     std::vector<ContactInfo> contacts(BodyId id) const;
     /// True if the two touched at the end of the last step.

@@ -237,12 +237,16 @@ struct CallbackThrow {};
 
 class Program {
 public:
-    explicit Program(Input& in) : in_(in) {}
+    /// `characters`: the operations of characters, forces and move() are in the mix too
+    /// (they came after the corpus was gathered: without them, an input means what it
+    /// always meant).
+    Program(Input& in, bool characters) : in_(in), characters_(characters) {}
 
     void run() {
         makeWorld();
         for (int op = 0; op < kMaxOps && !in_.done(); ++op) {
-            const int kind = in_.byte() % 12;
+            const std::uint8_t pick = in_.byte();
+            const int kind = characters_ ? pick % 13 : pick % 12;
             if (verbosity() >= 1)
                 std::fprintf(stderr, "op %d: %s\n", op, kOpNames[kind]);
             switch (kind) {
@@ -276,6 +280,9 @@ public:
             case 11:
                 readBody();
                 break;
+            case 12:
+                characterOp();
+                break;
             }
             // No call, good or bad, leaves a number that is not finite behind.
             if (auto problem = check::finiteState(world_))
@@ -289,14 +296,15 @@ public:
 
 private:
     static constexpr int kMaxOps = 400;
-    static constexpr const char* kOpNames[12] = {
-        "createBody", "createBody", "destroyBody", "set",           "set",      "step",
-        "step",       "query",      "tile map",    "world setting", "callback", "read"};
+    static constexpr const char* kOpNames[13] = {
+        "createBody", "createBody", "destroyBody",   "set",      "set",  "step",     "step",
+        "query",      "tile map",   "world setting", "callback", "read", "character"};
     static constexpr std::size_t kMaxBodies = 96;
     static constexpr std::size_t kMaxMaps = 3;
     static constexpr std::size_t kMaxDead = 32;
 
     Input& in_;
+    bool characters_;
     World world_;
     std::vector<BodyId> live_; ///< the fuzzer's own list, in creation order
     std::vector<BodyId> dead_; ///< the last kMaxDead destroyed handles
@@ -711,6 +719,79 @@ private:
             (void)world_.mass(id);
             (void)tileMapOf(world_, id);
         });
+    }
+
+    /// Characters, forces, contacts now and move(), with their rules from world.hpp and
+    /// query.hpp.
+    void characterOp() {
+        const BodyId id = pickBody();
+        const bool live = isLive(id);
+        tamper(id);
+        switch (in_.byte() % 8) {
+        case 0: {
+            const bool c = in_.flag();
+            if (expect(live, "setCharacter", [&] { world_.setCharacter(id, c); }) &&
+                world_.isCharacter(id) != c)
+                finding("setCharacter did not take");
+            break;
+        }
+        case 1: {
+            const float s = in_.number(-400, 400);
+            if (expect(live && inRange(s), "setWalkSpeed", [&] { world_.setWalkSpeed(id, s); }) &&
+                !same(world_.walkSpeed(id), s))
+                finding("setWalkSpeed did not take");
+            break;
+        }
+        case 2: {
+            const float f = in_.number(0, 1);
+            if (expect(live && f >= 0 && f <= 1, "setWallFriction",
+                       [&] { world_.setWallFriction(id, f); }) &&
+                !same(world_.wallFriction(id), f))
+                finding("setWallFriction did not take");
+            break;
+        }
+        case 3: {
+            const Vec2 f = in_.vec(-1e5f, 1e5f);
+            expect(live && inRange(f), "applyForce", [&] { world_.applyForce(id, f); });
+            break;
+        }
+        case 4: {
+            const Vec2 j = in_.vec(-1e4f, 1e4f);
+            expect(live && inRange(j), "applyImpulse", [&] { world_.applyImpulse(id, j); });
+            break;
+        }
+        case 5:
+            expect(live, "contacts now", [&] {
+                for (const ContactInfo& c : world_.contacts(id)) {
+                    if (!world_.isValid(c.other) || !world_.isTouching(id, c.other))
+                        finding("contacts listed a body isTouching denies");
+                }
+                if (const std::optional<Ground> g = world_.ground(id);
+                    g && !world_.isValid(g->body))
+                    finding("ground named a destroyed body");
+            });
+            break;
+        case 6: {
+            const Vec2 d = in_.vec(-300, 300);
+            const bool ok = live && inRange(d) && inRange(world_.position(id) + d);
+            const std::uint8_t responses = in_.byte();
+            expect(ok, "move", [&] {
+                const MoveOutcome out = move(world_, id, d, [&](BodyId other) {
+                    return static_cast<Response>((responses + other.index) % 5);
+                });
+                if (!same(world_.position(id), out.centre))
+                    finding("move left the body elsewhere than it said");
+            });
+            break;
+        }
+        default: {
+            std::vector<Vec2> positions(live_.size() + 1);
+            if (world_.readPositions(positions) != world_.bodyCount())
+                finding("readPositions did not read every body");
+            break;
+        }
+        }
+        checkList("a character operation");
     }
 
     // --- Stepping --------------------------------------------------------------------------
@@ -1604,6 +1685,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (size == 0)
         return 0;
     const bool settled = data[0] % 8 == 0;
+    // 0xFF: a chaos program with the operations of characters (Program).
+    const bool characters = data[0] == 0xFF;
     // JOSTLE_FUZZ_MODE=chaos or settled confines a campaign to one mode (scripts/fuzz.sh
     // gives each its share of the time: settled runs are slow and rich in coverage, and
     // left to itself libFuzzer spends most of its time on them). Inputs of the other mode
@@ -1616,6 +1699,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (settled)
         Settled(in).run();
     else
-        Program(in).run();
+        Program(in, characters).run();
     return 0;
 }
