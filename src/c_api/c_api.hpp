@@ -14,6 +14,7 @@
 #include <climits>
 #include <cstddef>
 #include <new>
+#include <optional>
 #include <span>
 #include <string>
 #include <type_traits>
@@ -84,6 +85,19 @@ inline const jostle_world& worldOf(const jostle_world* world) {
     return required(world, "world");
 }
 
+/// Sets a flag of the C world (stepping) while it lives, and clears it
+/// however the scope ends.
+class FlagScope {
+public:
+    explicit FlagScope(bool& flag) : flag_(flag) { flag_ = true; }
+    ~FlagScope() { flag_ = false; }
+    FlagScope(const FlagScope&) = delete;
+    FlagScope& operator=(const FlagScope&) = delete;
+
+private:
+    bool& flag_;
+};
+
 /// For the functions that change the world as a whole, which a callback may not call.
 inline jostle_world& outsideStep(jostle_world* world) {
     jostle_world& w = worldOf(world);
@@ -113,15 +127,6 @@ inline void checkBuffer(const void* out, int capacity) {
 /// A size as a C count (counts beyond INT_MAX cannot happen in practice: say INT_MAX).
 inline int countOf(std::size_t size) {
     return size > static_cast<std::size_t>(INT_MAX) ? INT_MAX : static_cast<int>(size);
-}
-
-/// Copies as many of `items` as fit, converted, and returns how many there are.
-template <class From, class To, class Convert>
-int copyOut(std::span<const From> items, To* out, int capacity, Convert&& convert) {
-    const std::size_t fit = std::min(items.size(), static_cast<std::size_t>(capacity));
-    for (std::size_t i = 0; i < fit; ++i)
-        out[i] = convert(items[i]);
-    return countOf(items.size());
 }
 
 // --- Conversions --------------------------------------------------------------------------
@@ -326,6 +331,32 @@ inline jostle_box_cast_hit toC(const BoxCastHit& h) {
 }
 inline jostle_move_hit toC(const MoveHit& h) {
     return {toC(h.body), toC(h.normal)};
+}
+
+// --- Results ------------------------------------------------------------------------------
+
+/// Copies as many of `items` as fit, converted, and returns how many there are.
+template <class From, class To> int copyOut(std::span<const From> items, To* out, int capacity) {
+    const std::size_t fit = std::min(items.size(), static_cast<std::size_t>(capacity));
+    for (std::size_t i = 0; i < fit; ++i)
+        out[i] = toC(items[i]);
+    return countOf(items.size());
+}
+
+/// `items` in C layout, in `to` (whose memory is kept from one call to the next).
+template <class From, class To> void convert(std::span<const From> items, std::vector<To>& to) {
+    to.clear();
+    to.reserve(items.size());
+    for (const From& item : items)
+        to.push_back(toC(item));
+}
+
+/// An answer that may be none: true and `out` set if there is one, false and `out`
+/// untouched if not.
+template <class From, class To> bool answer(const std::optional<From>& found, To& out) {
+    if (found)
+        out = toC(*found);
+    return found.has_value();
 }
 
 // --- Worlds (world.cpp) and events (events.cpp) ------------------------------------------

@@ -73,6 +73,11 @@ static jostle_body_id add_box(jostle_world* world, jostle_body_type type, float 
     return id;
 }
 
+static void run(jostle_world* world, int steps) {
+    for (int i = 0; i < steps; ++i)
+        CHECK(jostle_world_step(world, kDt), "step");
+}
+
 // --- Defaults ----------------------------------------------------------------------------
 
 static void test_defaults(void) {
@@ -638,11 +643,6 @@ static jostle_world* landing_scene(callback_state* s, jostle_body_id* box) {
     *s = callback_defaults(world);
     CHECK(jostle_world_set_pre_solve(world, pre_solve, s), "set pre-solve");
     return world;
-}
-
-static void run(jostle_world* world, int steps) {
-    for (int i = 0; i < steps; ++i)
-        CHECK(jostle_world_step(world, kDt), "step");
 }
 
 static float lowest_vy_after(jostle_world* world, jostle_body_id box, int steps) {
