@@ -408,6 +408,77 @@ typedef struct jostle_touching {
 /// Physical model (docs/events.md).
 jostle_touching jostle_body_get_touching(const jostle_world* world, jostle_body_id body);
 
+// --- Characters (docs/characters.md) -----------------------------------------------------
+
+/// See jostle_body_def.character.
+bool jostle_body_is_character(const jostle_world* world, jostle_body_id body);
+bool jostle_body_set_character(jostle_world* world, jostle_body_id body, bool character);
+
+/// See jostle_body_def.wall_friction.
+float jostle_body_get_wall_friction(const jostle_world* world, jostle_body_id body);
+/// In [0, 1].
+bool jostle_body_set_wall_friction(jostle_world* world, jostle_body_id body, float friction);
+
+/// The speed a character walks at, default 0: along what it stands on and relative to it,
+/// so that it keeps pace with a lift; positive to the right of gravity's "down" (+x in a
+/// y-down world); in the air, relative to the world. It holds until changed: set it from
+/// the input every frame (0 stands still). The character's velocity across gravity is
+/// this at every step; along gravity it is the physics' (set the velocity to jump).
+/// Bodies that are not characters keep it and ignore it.
+float jostle_body_get_walk_speed(const jostle_world* world, jostle_body_id body);
+/// Finite.
+bool jostle_body_set_walk_speed(jostle_world* world, jostle_body_id body, float speed);
+
+/// What a body stands on (jostle::Ground).
+typedef struct jostle_ground {
+    jostle_body_id body;  ///< the body under it
+    jostle_vec2 normal;   ///< the push of the ground: against gravity
+    jostle_vec2 velocity; ///< the ground's velocity now: what a rider moves with
+} jostle_ground;
+
+/// What the body stood on at the end of the last step: of the bodies that pushed it
+/// against gravity (floors, in jostle_touching's sense), the one that pushed hardest.
+/// True and *ground filled if there is one; false, *ground untouched, in the air or if
+/// that body has been destroyed since (not misuse), and on misuse (ground NULL...). A
+/// sleeping body keeps the ground it fell asleep on. Any body may ask, not only
+/// characters.
+bool jostle_body_get_ground(const jostle_world* world, jostle_body_id body, jostle_ground* ground);
+
+// --- Forces ------------------------------------------------------------------------------
+
+/// Adds a force (mass * units / s^2) at the body's centre for the next step: its velocity
+/// changes by force / mass * dt then. Forces add up until that step, which clears them:
+/// apply a lasting force before every step. Finite numbers. Wakes the body. Static and
+/// kinematic bodies are infinitely heavy: nothing happens to them (not misuse).
+bool jostle_body_apply_force(jostle_world* world, jostle_body_id body, jostle_vec2 force);
+/// Changes the body's velocity by impulse / mass (mass * units / s) at once: a kick, a
+/// blast, a jump of a given strength. Finite numbers. Wakes the body. Nothing happens to
+/// static and kinematic bodies.
+bool jostle_body_apply_impulse(jostle_world* world, jostle_body_id body, jostle_vec2 impulse);
+
+// --- Contacts now ------------------------------------------------------------------------
+
+/// A contact of one body with another, as jostle_body_contacts lists it
+/// (jostle::ContactInfo).
+typedef struct jostle_contact_info {
+    jostle_body_id other;
+    jostle_vec2 normal; ///< unit, along x or y, pointing from `other` towards the body
+    /// Where they touch: the middle of the stretch of face they share, as in a contact
+    /// begin event.
+    jostle_vec2 point;
+    float impulse; ///< the normal impulse between them in the last step (mass * speed)
+} jostle_contact_info;
+
+/// Copies the bodies this one touched at the end of the last step (sensors excluded), in
+/// the order of the bodies they pair with, created first first, into out[0 .. capacity)
+/// and returns how many there are (the buffer rule of queries).
+int jostle_body_contacts(const jostle_world* world, jostle_body_id body, jostle_contact_info* out,
+                         int capacity);
+
+/// True if the two bodies touched at the end of the last step; false, an ordinary answer,
+/// if they did not. A stale handle is misuse, as everywhere.
+bool jostle_body_is_touching(const jostle_world* world, jostle_body_id a, jostle_body_id b);
+
 // === What the last step did (docs/events.md) ===============================================
 //
 // Each function returns an array filled by the last jostle_world_step and sets *count to
@@ -425,6 +496,9 @@ typedef struct jostle_contact_event {
     jostle_body_id b;     ///< the other one
     jostle_vec2 normal;   ///< unit, along x or y, pointing from b towards a
     float approach_speed; ///< begin: how fast they met along the normal (>= 0); end: 0
+    /// Begin: where they touch, the middle of the stretch of face they share (halfway
+    /// between the two faces along the normal). End: {0, 0}.
+    jostle_vec2 point;
 } jostle_contact_event;
 
 /// A body that started or stopped overlapping a sensor.

@@ -309,7 +309,13 @@ inline TileMapDef toCpp(const jostle_tile_map_def& d) {
 }
 
 inline jostle_contact_event toC(const ContactEvent& e) {
-    return {toC(e.a), toC(e.b), toC(e.normal), e.approachSpeed};
+    return {toC(e.a), toC(e.b), toC(e.normal), e.approachSpeed, toC(e.point)};
+}
+inline jostle_contact_info toC(const ContactInfo& c) {
+    return {toC(c.other), toC(c.normal), toC(c.point), c.impulse};
+}
+inline jostle_ground toC(const Ground& g) {
+    return {toC(g.body), toC(g.normal), toC(g.velocity)};
 }
 inline jostle_sensor_event toC(const SensorEvent& e) {
     return {toC(e.sensor), toC(e.visitor)};

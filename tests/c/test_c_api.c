@@ -73,6 +73,25 @@ static jostle_body_id add_box(jostle_world* world, jostle_body_type type, float 
     return id;
 }
 
+static bool at(jostle_vec2 v, float x, float y) {
+    return v.x == x && v.y == y;
+}
+
+/// A character 12 x 16 at (x, y), in a world of gravity kG where nothing sleeps.
+static jostle_body_id add_character(jostle_world* world, float x, float y, float wall_friction) {
+    CHECK(jostle_world_set_sleeping(world, false), "no sleeping");
+    jostle_body_def def = jostle_default_body_def();
+    def.x = x;
+    def.y = y;
+    def.hw = 6;
+    def.hh = 8;
+    def.character = true;
+    def.wall_friction = wall_friction;
+    jostle_body_id id = jostle_body_create(world, &def);
+    CHECK(!jostle_body_id_is_null(id), "a character");
+    return id;
+}
+
 static void run(jostle_world* world, int steps) {
     for (int i = 0; i < steps; ++i)
         CHECK(jostle_world_step(world, kDt), "step");
@@ -97,6 +116,7 @@ static void test_defaults(void) {
     CHECK(b.friction == 0.5f && b.density == 1.0f && b.gravity_scale == 1.0f, "body numbers");
     CHECK(b.category == 1u && b.mask == 0xFFFFFFFFu && !b.sensor && b.user_data == NULL,
           "body filter");
+    CHECK(!b.character && b.wall_friction == 0, "not a character, no wall friction");
 
     jostle_query_filter f = jostle_default_query_filter();
     CHECK(f.mask == 0xFFFFFFFFu && f.category == 0xFFFFFFFFu && !f.include_sensors &&
@@ -148,6 +168,9 @@ static void test_landing_and_contact_events(void) {
             CHECK(same(events[k].b, box), "b is the box");
             CHECK(events[k].normal.x == 0 && events[k].normal.y == 1, "from b towards a");
             CHECK_NEAR(events[k].approach_speed, sqrt(2.0 * kG * 280.0), kG * kDt);
+            // The middle of the face they share (x -10..10), on the floor's top.
+            CHECK_NEAR(events[k].point.x, 0.0, 1e-4);
+            CHECK_NEAR(events[k].point.y, 290.0, 0.1 + 1e-3);
             ++begins;
         }
         // The array stays put until the next step.
@@ -173,6 +196,7 @@ static void test_landing_and_contact_events(void) {
         for (int k = 0; k < count; ++k) {
             CHECK(same(events[k].a, floor) && same(events[k].b, box), "the pair that parted");
             CHECK(events[k].approach_speed == 0, "an end has no approach speed");
+            CHECK(events[k].point.x == 0 && events[k].point.y == 0, "nor a point");
             ++ends;
         }
     }
@@ -354,6 +378,250 @@ static void test_body_properties(void) {
     CHECK(!jostle_body_is_valid(world, a), "stale after destroy");
     CHECK(jostle_body_is_valid(world, b), "the other is alive");
     CHECK(jostle_world_body_count(world) == 2, "two bodies");
+    CHECK(jostle_world_destroy(world), "destroy");
+    CHECK_NO_ERROR();
+}
+
+// --- Characters, forces and contacts now -------------------------------------------------
+
+/// The character fields of a def reach the body, come back in its def, and have setters.
+static void test_character_def(void) {
+    jostle_world* world = make_world(kG);
+    jostle_body_def def = jostle_default_body_def();
+    def.hw = 6;
+    def.hh = 8;
+    def.character = true;
+    def.wall_friction = 0.25f;
+    jostle_body_id hero = jostle_body_create(world, &def);
+    CHECK(jostle_body_is_character(world, hero), "a character");
+    CHECK(jostle_body_get_wall_friction(world, hero) == 0.25f, "its wall friction");
+    jostle_body_def back = jostle_body_get_def(world, hero);
+    CHECK(back.character && back.wall_friction == 0.25f, "in its def");
+    jostle_body_id copy = jostle_body_create(world, &back);
+    CHECK(jostle_body_is_character(world, copy) &&
+              jostle_body_get_wall_friction(world, copy) == 0.25f,
+          "and in a copy made from it");
+
+    CHECK(jostle_body_set_character(world, hero, false) && !jostle_body_is_character(world, hero),
+          "set character");
+    CHECK(jostle_body_set_wall_friction(world, hero, 0.75f) &&
+              jostle_body_get_wall_friction(world, hero) == 0.75f,
+          "set wall friction");
+    back = jostle_body_get_def(world, hero);
+    CHECK(!back.character && back.wall_friction == 0.75f, "the def follows");
+    CHECK(jostle_body_get_walk_speed(world, hero) == 0, "standing by default");
+    CHECK(jostle_body_set_walk_speed(world, hero, -40) &&
+              jostle_body_get_walk_speed(world, hero) == -40,
+          "walk speed, kept by a body that is not a character");
+
+    CHECK(!jostle_body_set_wall_friction(world, hero, 2), "wall friction 2");
+    CHECK_ERROR("jostle_body_set_wall_friction", "[0, 1]");
+    CHECK(!jostle_body_set_walk_speed(world, hero, NAN), "NaN walk speed");
+    CHECK_ERROR("jostle_body_set_walk_speed", "finite");
+    CHECK(jostle_body_get_walk_speed(world, hero) == -40, "unchanged");
+    def.wall_friction = -1;
+    CHECK(jostle_body_id_is_null(jostle_body_create(world, &def)), "wall friction < 0");
+    CHECK_ERROR("jostle_body_create", "BodyDef.wallFriction");
+    CHECK(jostle_world_destroy(world), "destroy");
+    CHECK_NO_ERROR();
+}
+
+/// A character 12 x 16 walks at the commanded 150 on a floor (top at y = 0), exactly; an
+/// ordinary body set to 150 before each step loses friction * g * dt to the floor in it
+/// (friction 0.5: 150 - 0.5 * 800 / 60 = 143.33). The character knows it stands on the
+/// floor, which is at rest.
+static void test_walking(void) {
+    jostle_world* world = make_world(kG);
+    jostle_body_id floor = add_box(world, JOSTLE_BODY_STATIC, 0, 50, 5000, 50);
+    jostle_body_id hero = add_character(world, 0, -8, 0);
+    jostle_body_id crate = add_box(world, JOSTLE_BODY_DYNAMIC, 1000, -8, 6, 8);
+    run(world, 10); // settle
+    CHECK(jostle_body_set_walk_speed(world, hero, 150), "walk");
+    for (int i = 0; i < 30; ++i) {
+        CHECK(jostle_body_set_velocity(world, crate, (jostle_vec2){150, 0}), "push the crate");
+        CHECK(jostle_world_step(world, kDt), "step");
+        CHECK(jostle_body_get_velocity(world, hero).x == 150, "the character walks at 150");
+        CHECK_NEAR(jostle_body_get_velocity(world, crate).x, 150.0 - 0.5 * kG * kDt, 1e-3);
+    }
+    jostle_ground ground;
+    CHECK(jostle_body_get_ground(world, hero, &ground), "on the ground");
+    CHECK(same(ground.body, floor), "the floor");
+    CHECK(at(ground.normal, 0, -1) && at(ground.velocity, 0, 0), "pushing up, at rest");
+    CHECK(jostle_body_get_ground(world, crate, &ground) && same(ground.body, floor),
+          "any body may ask");
+    CHECK(jostle_world_destroy(world), "destroy");
+    CHECK_NO_ERROR();
+}
+
+/// A character standing on a lift 80 x 12 (top at y = 0) stands on it, and has the
+/// lift's velocity for its ground's; after a jump it stands on nothing.
+static void test_ground_of_a_lift(void) {
+    jostle_world* world = make_world(kG);
+    jostle_body_id lift = add_box(world, JOSTLE_BODY_KINEMATIC, 0, 6, 40, 6);
+    jostle_body_id hero = add_character(world, 0, -8, 0);
+    run(world, 10);
+    CHECK(jostle_body_set_velocity(world, lift, (jostle_vec2){30, -20}), "the lift moves");
+    run(world, 1);
+    jostle_ground ground;
+    CHECK(jostle_body_get_ground(world, hero, &ground), "on the lift");
+    CHECK(same(ground.body, lift), "the lift");
+    CHECK(at(ground.normal, 0, -1) && at(ground.velocity, 30, -20), "the lift's velocity");
+
+    // In the air: an ordinary false, *ground untouched.
+    CHECK(jostle_body_set_velocity(world, hero, (jostle_vec2){0, -400}), "jump");
+    run(world, 2);
+    ground.velocity.x = 77;
+    CHECK(!jostle_body_get_ground(world, hero, &ground), "in the air");
+    CHECK(ground.velocity.x == 77, "untouched");
+    CHECK(!jostle_body_get_ground(world, lift, &ground), "nothing under the lift");
+    CHECK_NO_ERROR();
+    CHECK(!jostle_body_get_ground(world, hero, NULL), "no output");
+    CHECK_ERROR("jostle_body_get_ground", "ground is NULL");
+    CHECK(jostle_world_destroy(world), "destroy");
+    CHECK_NO_ERROR();
+}
+
+/// A character 12 x 16 pressed into a wall (its left face at x = 100, walking into it at
+/// 150) and let go from rest high up falls as in open air: after n steps,
+/// g dt^2 n (n + 1) / 2 (46.67 for 20). With a wall friction of 0.5 the wall holds it:
+/// it falls less than a quarter of that.
+static void test_wall_friction(void) {
+    for (int asked = 0; asked < 2; ++asked) {
+        jostle_world* world = make_world(kG);
+        add_box(world, JOSTLE_BODY_STATIC, 0, 50, 500, 50);
+        add_box(world, JOSTLE_BODY_STATIC, 150, -200, 50, 200);
+        jostle_body_id hero = add_character(world, 94, -8, asked ? 0.5f : 0);
+        CHECK(jostle_body_set_walk_speed(world, hero, 150), "into the wall");
+        run(world, 5);
+        CHECK(jostle_body_set_position(world, hero, (jostle_vec2){94, -300}), "high up");
+        CHECK(jostle_body_set_velocity(world, hero, (jostle_vec2){0, 0}), "at rest");
+        run(world, 20);
+        const double fall = jostle_body_get_position(world, hero).y + 300;
+        const double open_air = kG * (double)kDt * kDt * 20 * 21 / 2;
+        if (asked)
+            CHECK(fall < 0.25 * open_air, "held by the wall");
+        else
+            CHECK_NEAR(fall, open_air, 1e-3);
+        CHECK(jostle_body_get_touching(world, hero).wall_right, "against the wall");
+        CHECK(jostle_world_destroy(world), "destroy");
+    }
+    CHECK_NO_ERROR();
+}
+
+/// A 20 x 10 box of density 2 (mass 400) without gravity: a force of (800, -400) for one
+/// step changes its velocity by (800, -400) / 400 / 60 = (1/30, -1/60), and the next step
+/// nothing more. An impulse of (8, -2) on a box of mass 4 changes its velocity by
+/// (2, -0.5) at once. Static bodies are not moved.
+static void test_forces(void) {
+    jostle_world* world = make_world(0);
+    jostle_body_def def = jostle_default_body_def();
+    def.hw = 10;
+    def.hh = 5;
+    def.density = 2;
+    jostle_body_id box = jostle_body_create(world, &def);
+    CHECK(jostle_body_apply_force(world, box, (jostle_vec2){800, -400}), "a force");
+    CHECK(jostle_body_get_velocity(world, box).x == 0, "for the next step");
+    run(world, 1);
+    CHECK_NEAR(jostle_body_get_velocity(world, box).x, 1.0 / 30.0, 1e-6);
+    CHECK_NEAR(jostle_body_get_velocity(world, box).y, -1.0 / 60.0, 1e-6);
+    run(world, 1);
+    CHECK_NEAR(jostle_body_get_velocity(world, box).x, 1.0 / 30.0, 1e-6);
+
+    def.mass = 4;
+    def.x = 100;
+    jostle_body_id light = jostle_body_create(world, &def);
+    CHECK(jostle_body_apply_impulse(world, light, (jostle_vec2){8, -2}), "an impulse");
+    const jostle_vec2 v = jostle_body_get_velocity(world, light);
+    CHECK(v.x == 2 && v.y == -0.5f, "at once");
+
+    jostle_body_id wall = add_box(world, JOSTLE_BODY_STATIC, -100, 0, 5, 5);
+    CHECK(jostle_body_apply_force(world, wall, (jostle_vec2){1e6f, 0}) &&
+              jostle_body_apply_impulse(world, wall, (jostle_vec2){1e6f, 0}),
+          "accepted, and nothing happens");
+    run(world, 1);
+    CHECK(jostle_body_get_velocity(world, wall).x == 0, "a static body stays");
+    CHECK_NO_ERROR();
+
+    CHECK(!jostle_body_apply_force(world, box, (jostle_vec2){NAN, 0}), "NaN");
+    CHECK_ERROR("jostle_body_apply_force", "force must be finite");
+    CHECK(!jostle_body_apply_impulse(world, box, (jostle_vec2){0, INFINITY}), "infinite");
+    CHECK_ERROR("jostle_body_apply_impulse", "impulse must be finite");
+    CHECK_NEAR(jostle_body_get_velocity(world, box).x, 1.0 / 30.0, 1e-6); // unchanged
+    CHECK(jostle_world_destroy(world), "destroy");
+    CHECK_NO_ERROR();
+}
+
+/// A 10 x 10 crate (mass 100) at rest on a floor whose top is y = 0 (x from -100 to 100),
+/// under gravity 600, its left edge at x = 20; another box at x = -50, and a sensor
+/// around the crate.
+static void test_contacts_now(void) {
+    jostle_world* world = make_world(600);
+    jostle_body_id floor = add_box(world, JOSTLE_BODY_STATIC, 0, 10, 100, 10);
+    jostle_body_id crate = add_box(world, JOSTLE_BODY_DYNAMIC, 25, -5, 5, 5);
+    jostle_body_id other = add_box(world, JOSTLE_BODY_DYNAMIC, -50, -5, 5, 5);
+    jostle_body_def zone = jostle_default_body_def();
+    zone.type = JOSTLE_BODY_STATIC;
+    zone.x = 25;
+    zone.hw = 20;
+    zone.hh = 20;
+    zone.sensor = true;
+    jostle_body_id sensor = jostle_body_create(world, &zone);
+    run(world, 30);
+
+    jostle_contact_info contacts[2];
+    CHECK(jostle_body_contacts(world, crate, contacts, 2) == 1, "the floor alone, no sensor");
+    CHECK(same(contacts[0].other, floor), "the floor");
+    CHECK(contacts[0].normal.x == 0 && contacts[0].normal.y == -1, "from the floor to the crate");
+    // The middle of the stretch they share, x 20 to 30, on the floor's top.
+    CHECK_NEAR(contacts[0].point.x, 25.0, 1e-4);
+    CHECK_NEAR(contacts[0].point.y, 0.0, 0.05);
+    // Holding the crate up for a step: m g dt = 100 * 600 / 60 = 1000.
+    CHECK_NEAR(contacts[0].impulse, 1000.0, 1.0);
+
+    // The floor's, with the buffer rule: in the order of the bodies they pair with.
+    const jostle_body_id sentinel = {77, 77};
+    contacts[1].other = sentinel;
+    CHECK(jostle_body_contacts(world, floor, NULL, 0) == 2, "the count alone");
+    CHECK(jostle_body_contacts(world, floor, contacts, 1) == 2, "the full count, one copied");
+    CHECK(same(contacts[0].other, crate) && contacts[0].normal.y == 1, "the crate first");
+    CHECK(same(contacts[1].other, sentinel), "nothing beyond the capacity");
+    CHECK(jostle_body_contacts(world, floor, contacts, 2) == 2 && same(contacts[1].other, other),
+          "then the other box");
+
+    CHECK(jostle_body_is_touching(world, crate, floor) &&
+              jostle_body_is_touching(world, floor, crate),
+          "touching, both ways");
+    CHECK(!jostle_body_is_touching(world, crate, other), "apart");
+    CHECK(!jostle_body_is_touching(world, crate, sensor), "a sensor is not a contact");
+    CHECK_NO_ERROR();
+
+    CHECK(jostle_body_contacts(world, crate, contacts, -1) == 0, "capacity < 0");
+    CHECK_ERROR("jostle_body_contacts", "capacity must be >= 0");
+    CHECK(jostle_body_destroy(world, other), "destroy");
+    CHECK(jostle_body_contacts(world, other, NULL, 0) == 0, "stale");
+    CHECK_ERROR("jostle_body_contacts", "stale");
+    CHECK(!jostle_body_is_touching(world, floor, other), "stale");
+    CHECK_ERROR("jostle_body_is_touching", "stale");
+    CHECK(jostle_world_destroy(world), "destroy");
+    CHECK_NO_ERROR();
+}
+
+/// A contact begin says where the bodies met: a box 20 wide overhanging the left end of a
+/// floor (x from -100) lands on x -100 to -85, so at -92.5, on the floor's top.
+static void test_contact_point(void) {
+    jostle_world* world = make_world(600);
+    add_box(world, JOSTLE_BODY_STATIC, 0, 10, 100, 10);
+    add_box(world, JOSTLE_BODY_DYNAMIC, -95, -50, 10, 5);
+    int met = 0;
+    for (int i = 0; i < 60 && !met; ++i) {
+        CHECK(jostle_world_step(world, kDt), "step");
+        const jostle_contact_event* begins = jostle_world_contact_begins(world, &met);
+        for (int k = 0; k < met; ++k) {
+            CHECK_NEAR(begins[k].point.x, -92.5, 1e-3);
+            CHECK_NEAR(begins[k].point.y, 0.0, 0.05);
+        }
+    }
+    CHECK(met == 1, "it landed");
     CHECK(jostle_world_destroy(world), "destroy");
     CHECK_NO_ERROR();
 }
@@ -1009,6 +1277,13 @@ int main(void) {
     test_crush_event();
     test_world_settings();
     test_body_properties();
+    test_character_def();
+    test_walking();
+    test_ground_of_a_lift();
+    test_wall_friction();
+    test_forces();
+    test_contacts_now();
+    test_contact_point();
     test_queries();
     test_tile_map();
     test_pre_solve();
