@@ -259,6 +259,14 @@ int jostle_world_body_count(const jostle_world* world);
 /// out may be NULL when capacity is 0 (to ask for the count). capacity < 0 is misuse.
 int jostle_world_bodies(const jostle_world* world, jostle_body_id* out, int capacity);
 
+/// Copies the position of every live body, in the order of jostle_world_bodies, into
+/// out[0 .. capacity) and returns how many bodies there are (the buffer rule of
+/// jostle_world_bodies). One call for a whole world: for drawing, and for foreign-function
+/// interfaces where a call per body costs.
+int jostle_world_read_positions(const jostle_world* world, jostle_vec2* out, int capacity);
+/// The same for their velocities.
+int jostle_world_read_velocities(const jostle_world* world, jostle_vec2* out, int capacity);
+
 // === Bodies ================================================================================
 
 /// How a body moves.
@@ -741,14 +749,28 @@ void jostle_fixed_step_destroy(jostle_fixed_step* clock);
 int jostle_fixed_step_advance(jostle_fixed_step* clock, float frame_seconds);
 
 /// jostle_fixed_step_advance, then jostle_world_step(world, dt) that many times; returns
-/// the number of steps taken. If a step fails (from inside a callback, say), the steps
-/// left are not taken, their time is lost, the error is recorded and it returns the
+/// the number of steps taken. Before the last of them it keeps where every body is, for
+/// jostle_fixed_step_draw_position. If a step fails (from inside a callback, say), the
+/// steps left are not taken, their time is lost, the error is recorded and it returns the
 /// steps taken so far.
 int jostle_fixed_step_update(jostle_fixed_step* clock, jostle_world* world, float frame_seconds);
 
 /// How far the time left over reaches towards the next step, in [0, 1): draw bodies at
 /// previous + (current - previous) * alpha. 0 on misuse.
 float jostle_fixed_step_alpha(const jostle_fixed_step* clock);
+
+/// Where to draw a body now: between where it was before the last step
+/// jostle_fixed_step_update took and where it is, by alpha, so that motion looks smooth
+/// when the frame rate and the step rate differ. Where it is for a body the clock has not
+/// stepped yet (created since). {0, 0} on misuse (a stale body...).
+jostle_vec2 jostle_fixed_step_draw_position(const jostle_fixed_step* clock,
+                                            const jostle_world* world, jostle_body_id body);
+
+/// jostle_fixed_step_draw_position of every live body, in the order of
+/// jostle_world_bodies, into out[0 .. capacity); returns how many bodies there are (the
+/// buffer rule of jostle_world_bodies).
+int jostle_fixed_step_read_draw_positions(const jostle_fixed_step* clock, const jostle_world* world,
+                                          jostle_vec2* out, int capacity);
 
 /// The seconds the last advance dropped because of the cap.
 double jostle_fixed_step_dropped_seconds(const jostle_fixed_step* clock);

@@ -365,6 +365,26 @@ template <class From, class To> bool answer(const std::optional<From>& found, To
     return found.has_value();
 }
 
+/// The memory of readEach, kept from one read to the next; one per thread, as reads may
+/// run on several at once.
+inline std::vector<Vec2>& readScratch() {
+    thread_local std::vector<Vec2> scratch;
+    return scratch;
+}
+
+/// The reads of a vector per body (World::readPositions and the like): `read` fills a span
+/// of as many as fit from the first body on; they are copied into out, converted, and the
+/// number of bodies is returned (the buffer rule).
+template <class Read>
+int readEach(const World& world, jostle_vec2* out, int capacity, Read&& read) {
+    checkBuffer(out, capacity);
+    std::vector<Vec2>& scratch = readScratch();
+    scratch.resize(std::min(world.bodyCount(), static_cast<std::size_t>(capacity)));
+    read(std::span<Vec2>(scratch));
+    copyOut(std::span<const Vec2>(scratch), out, capacity);
+    return countOf(world.bodyCount());
+}
+
 // --- Worlds (world.cpp) and events (events.cpp) ------------------------------------------
 
 /// Steps the world (the checks and bookkeeping of jostle_world_step); throws on misuse.

@@ -626,6 +626,44 @@ static void test_contact_point(void) {
     CHECK_NO_ERROR();
 }
 
+// --- Bulk reads --------------------------------------------------------------------------
+
+static void test_read_positions(void) {
+    jostle_world* world = make_world(0);
+    jostle_body_def def = jostle_default_body_def();
+    def.hw = 1;
+    def.hh = 1;
+    def.x = 1, def.y = 2, def.vx = 3, def.vy = 4;
+    jostle_body_id a = jostle_body_create(world, &def);
+    def.x = 5, def.y = 6, def.vx = 7, def.vy = 8;
+    jostle_body_create(world, &def);
+    def.x = 9, def.y = 10, def.vx = 0, def.vy = 0;
+    jostle_body_create(world, &def);
+    CHECK(jostle_body_destroy(world, a), "destroyed: the order is the list's, b then c");
+
+    jostle_vec2 positions[5];
+    for (int i = 0; i < 5; ++i)
+        positions[i] = (jostle_vec2){-1, -1};
+    CHECK(jostle_world_read_positions(world, positions, 5) == 2, "two bodies");
+    CHECK(positions[0].x == 5 && positions[0].y == 6, "b");
+    CHECK(positions[1].x == 9 && positions[1].y == 10, "c");
+    CHECK(positions[2].x == -1 && positions[2].y == -1, "left alone");
+    jostle_vec2 velocities[1] = {{-1, -1}};
+    CHECK(jostle_world_read_velocities(world, velocities, 1) == 2, "the full count");
+    CHECK(velocities[0].x == 7 && velocities[0].y == 8, "b's, as many as fit");
+    CHECK(jostle_world_read_positions(world, NULL, 0) == 2, "the count alone");
+    CHECK_NO_ERROR();
+
+    CHECK(jostle_world_read_positions(world, NULL, 2) == 0, "NULL with room");
+    CHECK_ERROR("jostle_world_read_positions", "out is NULL but capacity is 2");
+    CHECK(jostle_world_read_velocities(world, velocities, -1) == 0, "capacity < 0");
+    CHECK_ERROR("jostle_world_read_velocities", "capacity must be >= 0");
+    CHECK(jostle_world_read_positions(NULL, positions, 5) == 0, "no world");
+    CHECK_ERROR("jostle_world_read_positions", "world is NULL");
+    CHECK(jostle_world_destroy(world), "destroy");
+    CHECK_NO_ERROR();
+}
+
 // --- Queries -----------------------------------------------------------------------------
 
 /// A static scene, so every answer follows from the numbers:
@@ -1050,6 +1088,62 @@ static void test_fixed_step(void) {
     CHECK_NO_ERROR();
 }
 
+/// Steps of 0.25 s; a box moving at 4 units/s covers 1 unit a step, so its positions after
+/// each step are whole numbers and where it is drawn between them is alpha.
+static void test_draw_positions(void) {
+    jostle_world* world = make_world(0);
+    jostle_body_def def = jostle_default_body_def();
+    def.hw = 1;
+    def.hh = 1;
+    def.vx = 4;
+    jostle_body_id box = jostle_body_create(world, &def);
+    jostle_fixed_step* clock = jostle_fixed_step_create(0.25f, 8);
+    jostle_vec2 p = jostle_fixed_step_draw_position(clock, world, box);
+    CHECK(p.x == 0 && p.y == 0, "nothing stepped yet: where it is");
+    CHECK(jostle_fixed_step_update(clock, world, 0.375f) == 1, "1.5 steps: at 1, alpha 0.5");
+    CHECK_NEAR(jostle_fixed_step_draw_position(clock, world, box).x, 0.5, 1e-6);
+    CHECK(jostle_fixed_step_update(clock, world, 0.5f) == 2, "2 steps: at 3, alpha 0.5");
+    CHECK_NEAR(jostle_fixed_step_draw_position(clock, world, box).x, 2.5, 1e-6);
+    CHECK(jostle_fixed_step_update(clock, world, 0.125f) == 1, "0.125 + 0.125: at 4, alpha 0");
+    CHECK_NEAR(jostle_fixed_step_draw_position(clock, world, box).x, 3.0, 1e-6);
+    CHECK(jostle_fixed_step_update(clock, world, 0.125f) == 0, "no step: alpha 0.5");
+    CHECK_NEAR(jostle_fixed_step_draw_position(clock, world, box).x, 3.5, 1e-6);
+
+    // A body made since the last step is drawn where it is; all at once, in list order.
+    def.x = 7;
+    jostle_body_id late = jostle_body_create(world, &def);
+    p = jostle_fixed_step_draw_position(clock, world, late);
+    CHECK(p.x == 7 && p.y == 0, "where it is");
+    jostle_vec2 all[3] = {{-1, -1}, {-1, -1}, {-1, -1}};
+    CHECK(jostle_fixed_step_read_draw_positions(clock, world, all, 3) == 2, "two bodies");
+    CHECK_NEAR(all[0].x, 3.5, 1e-6);
+    CHECK(all[1].x == 7 && all[1].y == 0 && all[2].x == -1, "the new one, nothing beyond");
+    CHECK(jostle_fixed_step_read_draw_positions(clock, world, all, 1) == 2, "the full count");
+    CHECK(jostle_fixed_step_read_draw_positions(clock, world, NULL, 0) == 2, "the count alone");
+
+    // A slot reused by another body is not mistaken for the old one.
+    CHECK(jostle_body_destroy(world, box), "destroyed");
+    def.x = -5;
+    def.vx = 0;
+    jostle_body_id reused = jostle_body_create(world, &def);
+    p = jostle_fixed_step_draw_position(clock, world, reused);
+    CHECK(p.x == -5 && p.y == 0, "the new body where it is");
+    CHECK_NO_ERROR();
+
+    p = jostle_fixed_step_draw_position(clock, world, box);
+    CHECK(p.x == 0 && p.y == 0, "zero");
+    CHECK_ERROR("jostle_fixed_step_draw_position", "stale");
+    CHECK(jostle_fixed_step_draw_position(NULL, world, reused).x == 0, "no clock");
+    CHECK_ERROR("jostle_fixed_step_draw_position", "clock is NULL");
+    CHECK(jostle_fixed_step_read_draw_positions(clock, NULL, all, 3) == 0, "no world");
+    CHECK_ERROR("jostle_fixed_step_read_draw_positions", "world is NULL");
+    CHECK(jostle_fixed_step_read_draw_positions(clock, world, NULL, 3) == 0, "no buffer");
+    CHECK_ERROR("jostle_fixed_step_read_draw_positions", "out is NULL but capacity is 3");
+    jostle_fixed_step_destroy(clock);
+    CHECK(jostle_world_destroy(world), "destroy");
+    CHECK_NO_ERROR();
+}
+
 // --- Misuse ------------------------------------------------------------------------------
 
 typedef struct handler_log {
@@ -1284,10 +1378,12 @@ int main(void) {
     test_forces();
     test_contacts_now();
     test_contact_point();
+    test_read_positions();
     test_queries();
     test_tile_map();
     test_pre_solve();
     test_fixed_step();
+    test_draw_positions();
     test_misuse();
     printf("test_c_api: all checks passed\n");
     return 0;
