@@ -659,6 +659,80 @@ int jostle_move_and_slide(const jostle_world* world, jostle_vec2 centre, jostle_
                           jostle_vec2 translation, const jostle_query_filter* filter,
                           jostle_vec2* new_centre, jostle_move_hit* hits, int capacity);
 
+// === Moving a body by hand, bump.lua's way (move in query.hpp) ============================
+//
+// jostle_body_move is bump.lua's world:move in one call: the body's own box, swept from
+// where it is by a delta, each body in the way answered as a filter says, the body put
+// where the move ends, and every body met reported. Unlike the queries above, it changes
+// the world (the body's position).
+
+/// How a moved body answers a body in its way (jostle::Response, bump.lua's responses).
+typedef enum jostle_response JOSTLE_ENUM_BASE_ {
+    /// Stops going into it and goes on along its face for the rest of the move (the
+    /// default for solid bodies).
+    JOSTLE_RESPONSE_SLIDE = 0,
+    JOSTLE_RESPONSE_TOUCH = 1,  ///< stops where it touches it: the move ends there
+    JOSTLE_RESPONSE_CROSS = 2,  ///< goes through it, reported (the default for sensors)
+    JOSTLE_RESPONSE_BOUNCE = 3, ///< turns back off its face for the rest of the move
+    JOSTLE_RESPONSE_IGNORE = 4, ///< goes through it, unreported
+} jostle_response;
+
+/// Chooses the response to `other`, a body in the way of the move (jostle::MoveFilter);
+/// `context` is the one given to jostle_body_move. Called at most once per body and move.
+/// Returning a value that is not a jostle_response is misuse of jostle_body_move.
+///
+/// From inside the filter you may read the world: every getter, every query, the event
+/// arrays. Every function that changes the world is refused as misuse (it would change
+/// what the move is sweeping through): jostle_body_move itself, jostle_body_create and
+/// jostle_body_destroy, the body setters, the tile map functions that change a map, and
+/// the jostle_world_* functions that change the world. The filter must return normally:
+/// no longjmp out of it.
+typedef jostle_response (*jostle_move_filter_fn)(jostle_body_id other, void* context);
+
+/// A body jostle_body_move met (jostle::MoveCollision).
+typedef struct jostle_move_collision {
+    jostle_body_id other;
+    jostle_response response; ///< what the filter chose for it
+    jostle_vec2 normal;       ///< unit, along x or y, pointing from `other` towards the body
+    /// The moved body's centre when it touched `other`, placed exactly against its face.
+    jostle_vec2 touch;
+    /// When, as a fraction of the whole move, in [0, 1]: the move takes unit time, and keeps
+    /// going at the same pace after a slide or a bounce.
+    float time;
+    jostle_vec2 other_centre; ///< the other body's box: its centre
+    jostle_vec2 other_half;   ///< and its half extents
+} jostle_move_collision;
+
+/// What jostle_body_move did.
+typedef struct jostle_move_result {
+    jostle_vec2 centre; ///< where the body is now
+    /// The bodies met, in the order met (bodies met at the same moment in creation
+    /// order); NULL when count is 0. The array belongs to the world: it stays valid and
+    /// unchanged until the next jostle_body_move on that world or jostle_world_destroy;
+    /// do not free it.
+    const jostle_move_collision* collisions;
+    int count;
+} jostle_move_result;
+
+/// Moves `body` by `delta` the way bump.lua's world:move does: its box goes from where
+/// the body is towards where it would be, and each body it runs into answers by `filter`
+/// (NULL: JOSTLE_RESPONSE_SLIDE for solid bodies, JOSTLE_RESPONSE_CROSS for sensors).
+/// The rules are jostle_box_cast's: touching is not running into, a body it is already
+/// inside does not stop it, a one-way platform stops it only from its blocking side, and
+/// nothing is tunnelled through. Bodies the moved body's category and mask leave out are
+/// never met. The body is put where the move ends (as by jostle_body_set_position: it
+/// wakes what it leaves and what it reaches); its velocity is left alone. After 32 stops
+/// the body stays where the last one left it.
+///
+/// Any body may be moved; a kinematic body is the usual choice for a character moved by
+/// hand (docs/characters.md). Writes what happened to *result, which may be NULL (the
+/// move alone). On misuse (a stale body, a delta not finite or that carries the body out
+/// of range, a filter answer that is not a jostle_response) nothing moves, it returns
+/// false, and *result, if result is not NULL, says so: centre where the body is (zero if
+/// there is no such body), no collisions.
+bool jostle_body_move(jostle_world* world, jostle_body_id body, jostle_vec2 delta,
+                      jostle_move_filter_fn filter, void* context, jostle_move_result* result);
+
 // === Tile maps (docs/tilemaps.md) ==========================================================
 
 /// Everything that describes a tile map (jostle::TileMapDef). Start from

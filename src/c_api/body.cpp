@@ -1,5 +1,5 @@
-// The C API's bodies: creation, destruction, every getter and setter World offers, forces
-// and contacts now.
+// The C API's bodies: creation, destruction, every getter and setter World offers, forces,
+// contacts now, and move().
 #include "c_api.hpp"
 
 using namespace jostle;
@@ -19,6 +19,13 @@ template <class Set> bool set(const char* function, jostle_world* world, Set&& w
         write(worldOf(world).world);
         return true;
     });
+}
+
+/// The C filter as move()'s, its answers checked (C may return any int); none for NULL.
+MoveFilter moveFilter(jostle_move_filter_fn filter, void* context) {
+    if (filter == nullptr)
+        return {};
+    return [filter, context](BodyId other) { return toCpp(filter(toC(other), context)); };
 }
 
 // The contacts of a body, kept from one call to the next; one set per thread, as getters
@@ -255,6 +262,33 @@ int jostle_body_contacts(const jostle_world* world, jostle_body_id body, jostle_
 bool jostle_body_is_touching(const jostle_world* world, jostle_body_id a, jostle_body_id b) {
     return get<bool>(__func__, world,
                      [&](const World& w) { return w.isTouching(toCpp(a), toCpp(b)); });
+}
+
+bool jostle_body_move(jostle_world* world, jostle_body_id body, jostle_vec2 delta,
+                      jostle_move_filter_fn filter, void* context, jostle_move_result* result) {
+    // On misuse nothing moved and nothing was met.
+    if (result != nullptr)
+        *result = {};
+    return guard(__func__, false, [&] {
+        jostle_world& w = worldOf(world);
+        const BodyId id = toCpp(body);
+        if (result != nullptr && w.world.isValid(id))
+            result->centre = toC(w.world.position(id));
+        MoveOutcome moved;
+        {
+            const FlagScope scope(w.moving);
+            moved = move(w.world, id, toCpp(delta), moveFilter(filter, context));
+        }
+        // Where it went stands even if what it met cannot be kept (out of memory).
+        if (result != nullptr)
+            result->centre = toC(moved.centre);
+        convert(std::span<const MoveCollision>(moved.collisions), w.moveCollisions);
+        if (result != nullptr && !w.moveCollisions.empty()) {
+            result->collisions = w.moveCollisions.data();
+            result->count = countOf(w.moveCollisions.size());
+        }
+        return true;
+    });
 }
 
 } // extern "C"

@@ -37,6 +37,10 @@ struct jostle_world {
     std::vector<jostle_sensor_event> sensorBegins;
     std::vector<jostle_sensor_event> sensorEnds;
     std::vector<jostle_crush_event> crushes;
+    /// True while jostle_body_move runs: its filter may read the world, not change it.
+    bool moving = false;
+    /// The collisions of the last jostle_body_move, which its result points into.
+    std::vector<jostle_move_collision> moveCollisions;
 };
 
 struct jostle_fixed_step {
@@ -78,14 +82,20 @@ template <class T> T& required(T* pointer, const char* name) {
     return *pointer;
 }
 
+/// The world of a function that may change it: never from a move's filter, whose sweep
+/// would go on through a world changed under it.
 inline jostle_world& worldOf(jostle_world* world) {
-    return required(world, "world");
+    jostle_world& w = required(world, "world");
+    if (w.moving)
+        misuse("called from a filter during jostle_body_move (the world may not change during "
+               "a move)");
+    return w;
 }
 inline const jostle_world& worldOf(const jostle_world* world) {
     return required(world, "world");
 }
 
-/// Sets a flag of the C world (stepping) while it lives, and clears it
+/// Sets a flag of the C world (stepping, moving) while it lives, and clears it
 /// however the scope ends.
 class FlagScope {
 public:
@@ -337,6 +347,43 @@ inline jostle_box_cast_hit toC(const BoxCastHit& h) {
 }
 inline jostle_move_hit toC(const MoveHit& h) {
     return {toC(h.body), toC(h.normal)};
+}
+
+inline Response toCpp(jostle_response response) {
+    switch (response) {
+    case JOSTLE_RESPONSE_SLIDE:
+        return Response::Slide;
+    case JOSTLE_RESPONSE_TOUCH:
+        return Response::Touch;
+    case JOSTLE_RESPONSE_CROSS:
+        return Response::Cross;
+    case JOSTLE_RESPONSE_BOUNCE:
+        return Response::Bounce;
+    case JOSTLE_RESPONSE_IGNORE:
+        return Response::Ignore;
+    }
+    misuse("the filter's response must be JOSTLE_RESPONSE_SLIDE, _TOUCH, _CROSS, _BOUNCE or "
+           "_IGNORE, got " +
+           std::to_string(static_cast<int>(response)));
+}
+inline jostle_response toC(Response response) {
+    switch (response) {
+    case Response::Slide:
+        return JOSTLE_RESPONSE_SLIDE;
+    case Response::Touch:
+        return JOSTLE_RESPONSE_TOUCH;
+    case Response::Cross:
+        return JOSTLE_RESPONSE_CROSS;
+    case Response::Bounce:
+        return JOSTLE_RESPONSE_BOUNCE;
+    case Response::Ignore:
+        return JOSTLE_RESPONSE_IGNORE;
+    }
+    return JOSTLE_RESPONSE_SLIDE; // not reached: move() reports only these
+}
+inline jostle_move_collision toC(const MoveCollision& c) {
+    return {toC(c.other), toC(c.response),    toC(c.normal),   toC(c.touch),
+            c.time,       toC(c.otherCentre), toC(c.otherHalf)};
 }
 
 // --- Results ------------------------------------------------------------------------------

@@ -779,6 +779,258 @@ static void test_queries(void) {
     CHECK_NO_ERROR();
 }
 
+// --- Moving a body by hand, bump.lua's way -----------------------------------------------
+//
+// The cases of bump.lua's spec suite (tests/test_move.cpp), without gravity. bump gives a
+// rect by its top-left corner and size: rect() makes such a box. The item moved is
+// (0, 0, 1, 1), a kinematic body: centre (0.5, 0.5).
+
+static jostle_body_id rect(jostle_world* world, float x, float y, float w, float h,
+                           jostle_body_type type) {
+    return add_box(world, type, x + w / 2, y + h / 2, w / 2, h / 2);
+}
+
+static jostle_world* move_scene(jostle_body_id* item) {
+    jostle_world* world = make_world(0);
+    *item = rect(world, 0, 0, 1, 1, JOSTLE_BODY_KINEMATIC);
+    return world;
+}
+
+/// Answers every body with the response `context` points to.
+static jostle_response always(jostle_body_id other, void* context) {
+    (void)other;
+    return *(const jostle_response*)context;
+}
+
+static void test_move_responses(void) {
+    jostle_body_id item;
+    jostle_move_result r;
+
+    // In an empty world it goes all the way.
+    jostle_world* world = move_scene(&item);
+    CHECK(jostle_body_move(world, item, (jostle_vec2){1, 1}, NULL, NULL, &r), "moved");
+    CHECK(at(r.centre, 1.5f, 1.5f) && r.count == 0 && r.collisions == NULL, "all the way");
+    CHECK(at(jostle_body_get_position(world, item), 1.5f, 1.5f), "the body is there");
+    CHECK(jostle_world_destroy(world), "destroy");
+
+    // Touch: its bottom (1) reaches b's top (2) after 1 of 5, and stops there.
+    world = move_scene(&item);
+    jostle_body_id b = rect(world, 0, 2, 1, 1, JOSTLE_BODY_STATIC);
+    jostle_body_id c = rect(world, 0, 3, 1, 1, JOSTLE_BODY_STATIC);
+    jostle_response response = JOSTLE_RESPONSE_TOUCH;
+    CHECK(jostle_body_move(world, item, (jostle_vec2){0, 5}, always, &response, &r), "touch");
+    CHECK(at(r.centre, 0.5f, 1.5f) && r.count == 1, "stopped on b");
+    const jostle_move_collision* hit = &r.collisions[0];
+    CHECK(same(hit->other, b) && hit->response == JOSTLE_RESPONSE_TOUCH, "b, touched");
+    CHECK(at(hit->normal, 0, -1) && at(hit->touch, 0.5f, 1.5f), "from above, on its top");
+    CHECK_NEAR(hit->time, 0.2, 1e-6);
+    CHECK(at(hit->other_centre, 0.5f, 2.5f) && at(hit->other_half, 0.5f, 0.5f), "b's box");
+    CHECK(at(jostle_body_get_position(world, item), 0.5f, 1.5f), "the body is there");
+    // The array stays as it was until the next move, whatever else happens.
+    CHECK(jostle_world_step(world, kDt), "step");
+    CHECK(same(r.collisions[0].other, b), "still there after a step");
+
+    // Cross: through both, each reported in turn (the item is back at the start).
+    CHECK(jostle_body_set_position(world, item, (jostle_vec2){0.5f, 0.5f}), "back");
+    response = JOSTLE_RESPONSE_CROSS;
+    CHECK(jostle_body_move(world, item, (jostle_vec2){0, 5}, always, &response, &r), "cross");
+    CHECK(at(r.centre, 0.5f, 5.5f) && r.count == 2, "all the way, two met");
+    CHECK(same(r.collisions[0].other, b) && same(r.collisions[1].other, c), "in turn");
+    CHECK_NEAR(r.collisions[0].time, 0.2, 1e-6);
+    CHECK_NEAR(r.collisions[1].time, 0.4, 1e-6);
+    CHECK(at(r.collisions[1].touch, 0.5f, 2.5f), "c touched at 2.5");
+
+    // Bounce: down 5 onto b's top after 1: the 4 left go back up, from 1.5 to -2.5.
+    CHECK(jostle_body_set_position(world, item, (jostle_vec2){0.5f, 0.5f}), "back");
+    response = JOSTLE_RESPONSE_BOUNCE;
+    CHECK(jostle_body_move(world, item, (jostle_vec2){0, 5}, always, &response, &r), "bounce");
+    CHECK(at(r.centre, 0.5f, -2.5f) && r.count == 1, "turned back");
+    CHECK(at(r.collisions[0].touch, 0.5f, 1.5f) &&
+              r.collisions[0].response == JOSTLE_RESPONSE_BOUNCE,
+          "off b's top");
+    CHECK(jostle_world_destroy(world), "destroy");
+
+    // Slide, the default: b (0, 2, 1, 2) below the item, c (2, 1, 1, 1). Moving by (5, 5),
+    // the item meets c's left face after 1 of 5, at (1.5, 1.5), then slides down the rest,
+    // to (1.5, 5.5), past b's corner without entering it.
+    world = move_scene(&item);
+    rect(world, 0, 2, 1, 2, JOSTLE_BODY_STATIC);
+    c = rect(world, 2, 1, 1, 1, JOSTLE_BODY_STATIC);
+    CHECK(jostle_body_move(world, item, (jostle_vec2){5, 5}, NULL, NULL, &r), "slide");
+    CHECK(at(r.centre, 1.5f, 5.5f) && r.count == 1, "down c's face");
+    CHECK(same(r.collisions[0].other, c) && r.collisions[0].response == JOSTLE_RESPONSE_SLIDE,
+          "c, slid along");
+    CHECK(at(r.collisions[0].normal, -1, 0) && at(r.collisions[0].touch, 1.5f, 1.5f),
+          "its left face");
+    CHECK_NEAR(r.collisions[0].time, 0.2, 1e-6);
+    // Without a result: the move alone. Along y 0..1 it passes over c's top (touching is
+    // not running into), and it does not tunnel through a thin wall at x = 50.
+    CHECK(jostle_body_set_position(world, item, (jostle_vec2){0.5f, 0.5f}), "back");
+    rect(world, 50, -5, 1, 10, JOSTLE_BODY_STATIC);
+    CHECK(jostle_body_move(world, item, (jostle_vec2){100, 0}, NULL, NULL, NULL), "no result");
+    CHECK(at(jostle_body_get_position(world, item), 49.5f, 0.5f), "stopped by the wall");
+    CHECK(jostle_world_destroy(world), "destroy");
+    CHECK_NO_ERROR();
+}
+
+/// A filter that ignores one body and slides on the others, counting its calls per body.
+typedef struct ghost_filter {
+    jostle_body_id ghost;
+    int calls[8]; // by slot
+} ghost_filter;
+
+static jostle_response through_ghost(jostle_body_id other, void* context) {
+    ghost_filter* f = (ghost_filter*)context;
+    if (other.index < 8)
+        ++f->calls[other.index];
+    return same(other, f->ghost) ? JOSTLE_RESPONSE_IGNORE : JOSTLE_RESPONSE_SLIDE;
+}
+
+static void test_move_filters(void) {
+    jostle_body_id item;
+    jostle_move_result r;
+
+    // Ignore means through, unreported; the filter is asked once per body.
+    jostle_world* world = move_scene(&item);
+    ghost_filter f;
+    memset(&f, 0, sizeof f);
+    f.ghost = rect(world, 3, 0, 1, 1, JOSTLE_BODY_STATIC);
+    jostle_body_id wall = rect(world, 6, 0, 1, 1, JOSTLE_BODY_STATIC);
+    CHECK(jostle_body_move(world, item, (jostle_vec2){10, 0}, through_ghost, &f, &r), "moved");
+    CHECK(at(r.centre, 5.5f, 0.5f) && r.count == 1 && same(r.collisions[0].other, wall),
+          "through the ghost, stopped by the wall");
+    for (int slot = 0; slot < 8; ++slot)
+        CHECK(f.calls[slot] <= 1, "asked at most once per body");
+    CHECK(f.calls[f.ghost.index] == 1 && f.calls[wall.index] == 1, "asked of both");
+    CHECK(jostle_world_destroy(world), "destroy");
+
+    // By default a sensor is crossed and reported; a body the item's mask leaves out is not
+    // met at all.
+    world = move_scene(&item);
+    jostle_body_def coin_def = jostle_default_body_def();
+    coin_def.type = JOSTLE_BODY_STATIC;
+    coin_def.x = 3.5f;
+    coin_def.y = 0.5f;
+    coin_def.hw = 0.5f;
+    coin_def.hh = 0.5f;
+    coin_def.sensor = true;
+    jostle_body_id coin = jostle_body_create(world, &coin_def);
+    jostle_body_def left_out = coin_def;
+    left_out.x = 6.5f;
+    left_out.sensor = false;
+    left_out.category = 4;
+    jostle_body_create(world, &left_out);
+    CHECK(jostle_body_set_mask(world, item, ~4u), "mask");
+    CHECK(jostle_body_move(world, item, (jostle_vec2){10, 0}, NULL, NULL, &r), "moved");
+    CHECK(at(r.centre, 10.5f, 0.5f) && r.count == 1, "all the way, one met");
+    CHECK(same(r.collisions[0].other, coin) && r.collisions[0].response == JOSTLE_RESPONSE_CROSS,
+          "the coin, crossed");
+
+    // A one-way platform ({0, -1}: its top) stops it only from above.
+    jostle_body_def platform = jostle_default_body_def();
+    platform.type = JOSTLE_BODY_STATIC;
+    platform.x = 10.5f;
+    platform.y = -5;
+    platform.hw = 5;
+    platform.hh = 0.5f;
+    platform.one_way = (jostle_vec2){0, -1};
+    jostle_body_create(world, &platform);
+    CHECK(jostle_body_move(world, item, (jostle_vec2){0, -10}, NULL, NULL, &r) &&
+              at(r.centre, 10.5f, -9.5f) && r.count == 0,
+          "up through it");
+    CHECK(jostle_body_move(world, item, (jostle_vec2){0, 10}, NULL, NULL, &r) &&
+              at(r.centre, 10.5f, -6) && r.count == 1,
+          "down onto its top");
+    CHECK(jostle_world_destroy(world), "destroy");
+    CHECK_NO_ERROR();
+}
+
+/// What a filter tries: reading is allowed, changing the world is refused.
+typedef struct meddling_filter {
+    jostle_world* world;
+    jostle_body_id item;
+    int found;   // bodies a query inside the filter found
+    int refused; // changes refused with the move's message
+} meddling_filter;
+
+static void count_refusal(meddling_filter* f, bool ok, const char* function) {
+    const char* m = jostle_last_error();
+    if (!ok && strncmp(m, function, strlen(function)) == 0 &&
+        strstr(m, "called from a filter during jostle_body_move"))
+        ++f->refused;
+    jostle_clear_error();
+}
+
+static jostle_response meddle(jostle_body_id other, void* context) {
+    meddling_filter* f = (meddling_filter*)context;
+    jostle_body_id found[4];
+    f->found =
+        jostle_query_point(f->world, jostle_body_get_position(f->world, other), NULL, found, 4);
+    count_refusal(f, jostle_body_set_position(f->world, other, (jostle_vec2){100, 100}),
+                  "jostle_body_set_position");
+    count_refusal(f, jostle_body_destroy(f->world, other), "jostle_body_destroy");
+    jostle_body_def def = jostle_default_body_def();
+    def.hw = 1;
+    def.hh = 1;
+    count_refusal(f, !jostle_body_id_is_null(jostle_body_create(f->world, &def)),
+                  "jostle_body_create");
+    count_refusal(f, jostle_body_move(f->world, f->item, (jostle_vec2){1, 0}, NULL, NULL, NULL),
+                  "jostle_body_move");
+    count_refusal(f, jostle_world_step(f->world, kDt), "jostle_world_step");
+    count_refusal(f, jostle_world_destroy(f->world), "jostle_world_destroy");
+    return JOSTLE_RESPONSE_SLIDE;
+}
+
+/// Answers with a value that is not a jostle_response.
+static jostle_response nonsense(jostle_body_id other, void* context) {
+    (void)other;
+    (void)context;
+    return (jostle_response)9;
+}
+
+static void test_move_misuse(void) {
+    jostle_body_id item;
+    jostle_move_result r;
+    jostle_world* world = move_scene(&item);
+    jostle_body_id wall = rect(world, 3, 0, 1, 1, JOSTLE_BODY_STATIC);
+
+    // The filter may read the world, not change it.
+    meddling_filter f = {world, item, 0, 0};
+    CHECK(jostle_body_move(world, item, (jostle_vec2){10, 0}, meddle, &f, &r), "moved");
+    CHECK(f.found == 1, "a query from the filter finds the wall");
+    CHECK(f.refused == 6, "set_position, destroy, create, move, step and destroy refused");
+    CHECK(at(r.centre, 2.5f, 0.5f) && r.count == 1 && same(r.collisions[0].other, wall),
+          "the move as if the filter had done nothing");
+    CHECK(at(jostle_body_get_position(world, wall), 3.5f, 0.5f), "the wall stays");
+    CHECK(jostle_world_body_count(world) == 2, "nothing created or destroyed");
+    CHECK(jostle_body_set_position(world, item, (jostle_vec2){0.5f, 0.5f}), "allowed again");
+    CHECK_NO_ERROR();
+
+    // A filter's answer out of the enum: nothing moves.
+    r.count = 5;
+    CHECK(!jostle_body_move(world, item, (jostle_vec2){10, 0}, nonsense, NULL, &r), "refused");
+    CHECK_ERROR("jostle_body_move", "got 9");
+    CHECK(at(r.centre, 0.5f, 0.5f) && r.count == 0 && r.collisions == NULL, "it did not move");
+    CHECK(at(jostle_body_get_position(world, item), 0.5f, 0.5f), "it is where it was");
+
+    // Deltas: not finite, out of range.
+    CHECK(!jostle_body_move(world, item, (jostle_vec2){NAN, 0}, NULL, NULL, &r), "NaN");
+    CHECK_ERROR("jostle_body_move", "delta must be finite");
+    CHECK(at(r.centre, 0.5f, 0.5f) && r.count == 0, "where it was");
+    CHECK(!jostle_body_move(world, item, (jostle_vec2){2e9f, 0}, NULL, NULL, NULL), "too far");
+    CHECK_ERROR("jostle_body_move", "1e9");
+
+    // Stale and null handles, no world.
+    CHECK(jostle_body_destroy(world, wall), "destroy");
+    CHECK(!jostle_body_move(world, wall, (jostle_vec2){1, 0}, NULL, NULL, &r), "stale");
+    CHECK_ERROR("jostle_body_move", "stale");
+    CHECK(at(r.centre, 0, 0) && r.count == 0, "zero: there is no such body");
+    CHECK(!jostle_body_move(NULL, item, (jostle_vec2){1, 0}, NULL, NULL, &r), "no world");
+    CHECK_ERROR("jostle_body_move", "world is NULL");
+    CHECK(jostle_world_destroy(world), "destroy");
+    CHECK_NO_ERROR();
+}
+
 // --- Tile maps ---------------------------------------------------------------------------
 
 /// Tiles of 16 at the origin:      row 0  ........
@@ -1380,6 +1632,9 @@ int main(void) {
     test_contact_point();
     test_read_positions();
     test_queries();
+    test_move_responses();
+    test_move_filters();
+    test_move_misuse();
     test_tile_map();
     test_pre_solve();
     test_fixed_step();
