@@ -259,6 +259,14 @@ int jostle_world_body_count(const jostle_world* world);
 /// out may be NULL when capacity is 0 (to ask for the count). capacity < 0 is misuse.
 int jostle_world_bodies(const jostle_world* world, jostle_body_id* out, int capacity);
 
+/// Copies the position of every live body, in the order of jostle_world_bodies, into
+/// out[0 .. capacity) and returns how many bodies there are (the buffer rule of
+/// jostle_world_bodies). One call for a whole world: for drawing, and for foreign-function
+/// interfaces where a call per body costs.
+int jostle_world_read_positions(const jostle_world* world, jostle_vec2* out, int capacity);
+/// The same for their velocities.
+int jostle_world_read_velocities(const jostle_world* world, jostle_vec2* out, int capacity);
+
 // === Bodies ================================================================================
 
 /// How a body moves.
@@ -408,6 +416,77 @@ typedef struct jostle_touching {
 /// Physical model (docs/events.md).
 jostle_touching jostle_body_get_touching(const jostle_world* world, jostle_body_id body);
 
+// --- Characters (docs/characters.md) -----------------------------------------------------
+
+/// See jostle_body_def.character.
+bool jostle_body_is_character(const jostle_world* world, jostle_body_id body);
+bool jostle_body_set_character(jostle_world* world, jostle_body_id body, bool character);
+
+/// See jostle_body_def.wall_friction.
+float jostle_body_get_wall_friction(const jostle_world* world, jostle_body_id body);
+/// In [0, 1].
+bool jostle_body_set_wall_friction(jostle_world* world, jostle_body_id body, float friction);
+
+/// The speed a character walks at, default 0: along what it stands on and relative to it,
+/// so that it keeps pace with a lift; positive to the right of gravity's "down" (+x in a
+/// y-down world); in the air, relative to the world. It holds until changed: set it from
+/// the input every frame (0 stands still). The character's velocity across gravity is
+/// this at every step; along gravity it is the physics' (set the velocity to jump).
+/// Bodies that are not characters keep it and ignore it.
+float jostle_body_get_walk_speed(const jostle_world* world, jostle_body_id body);
+/// Finite.
+bool jostle_body_set_walk_speed(jostle_world* world, jostle_body_id body, float speed);
+
+/// What a body stands on (jostle::Ground).
+typedef struct jostle_ground {
+    jostle_body_id body;  ///< the body under it
+    jostle_vec2 normal;   ///< the push of the ground: against gravity
+    jostle_vec2 velocity; ///< the ground's velocity now: what a rider moves with
+} jostle_ground;
+
+/// What the body stood on at the end of the last step: of the bodies that pushed it
+/// against gravity (floors, in jostle_touching's sense), the one that pushed hardest.
+/// True and *ground filled if there is one; false, *ground untouched, in the air or if
+/// that body has been destroyed since (not misuse), and on misuse (ground NULL...). A
+/// sleeping body keeps the ground it fell asleep on. Any body may ask, not only
+/// characters.
+bool jostle_body_get_ground(const jostle_world* world, jostle_body_id body, jostle_ground* ground);
+
+// --- Forces ------------------------------------------------------------------------------
+
+/// Adds a force (mass * units / s^2) at the body's centre for the next step: its velocity
+/// changes by force / mass * dt then. Forces add up until that step, which clears them:
+/// apply a lasting force before every step. Finite numbers. Wakes the body. Static and
+/// kinematic bodies are infinitely heavy: nothing happens to them (not misuse).
+bool jostle_body_apply_force(jostle_world* world, jostle_body_id body, jostle_vec2 force);
+/// Changes the body's velocity by impulse / mass (mass * units / s) at once: a kick, a
+/// blast, a jump of a given strength. Finite numbers. Wakes the body. Nothing happens to
+/// static and kinematic bodies.
+bool jostle_body_apply_impulse(jostle_world* world, jostle_body_id body, jostle_vec2 impulse);
+
+// --- Contacts now ------------------------------------------------------------------------
+
+/// A contact of one body with another, as jostle_body_contacts lists it
+/// (jostle::ContactInfo).
+typedef struct jostle_contact_info {
+    jostle_body_id other;
+    jostle_vec2 normal; ///< unit, along x or y, pointing from `other` towards the body
+    /// Where they touch: the middle of the stretch of face they share, as in a contact
+    /// begin event.
+    jostle_vec2 point;
+    float impulse; ///< the normal impulse between them in the last step (mass * speed)
+} jostle_contact_info;
+
+/// Copies the bodies this one touched at the end of the last step (sensors excluded), in
+/// the order of the bodies they pair with, created first first, into out[0 .. capacity)
+/// and returns how many there are (the buffer rule of queries).
+int jostle_body_contacts(const jostle_world* world, jostle_body_id body, jostle_contact_info* out,
+                         int capacity);
+
+/// True if the two bodies touched at the end of the last step; false, an ordinary answer,
+/// if they did not. A stale handle is misuse, as everywhere.
+bool jostle_body_is_touching(const jostle_world* world, jostle_body_id a, jostle_body_id b);
+
 // === What the last step did (docs/events.md) ===============================================
 //
 // Each function returns an array filled by the last jostle_world_step and sets *count to
@@ -425,6 +504,9 @@ typedef struct jostle_contact_event {
     jostle_body_id b;     ///< the other one
     jostle_vec2 normal;   ///< unit, along x or y, pointing from b towards a
     float approach_speed; ///< begin: how fast they met along the normal (>= 0); end: 0
+    /// Begin: where they touch, the middle of the stretch of face they share (halfway
+    /// between the two faces along the normal). End: {0, 0}.
+    jostle_vec2 point;
 } jostle_contact_event;
 
 /// A body that started or stopped overlapping a sensor.
@@ -577,6 +659,80 @@ int jostle_move_and_slide(const jostle_world* world, jostle_vec2 centre, jostle_
                           jostle_vec2 translation, const jostle_query_filter* filter,
                           jostle_vec2* new_centre, jostle_move_hit* hits, int capacity);
 
+// === Moving a body by hand, bump.lua's way (move in query.hpp) ============================
+//
+// jostle_body_move is bump.lua's world:move in one call: the body's own box, swept from
+// where it is by a delta, each body in the way answered as a filter says, the body put
+// where the move ends, and every body met reported. Unlike the queries above, it changes
+// the world (the body's position).
+
+/// How a moved body answers a body in its way (jostle::Response, bump.lua's responses).
+typedef enum jostle_response JOSTLE_ENUM_BASE_ {
+    /// Stops going into it and goes on along its face for the rest of the move (the
+    /// default for solid bodies).
+    JOSTLE_RESPONSE_SLIDE = 0,
+    JOSTLE_RESPONSE_TOUCH = 1,  ///< stops where it touches it: the move ends there
+    JOSTLE_RESPONSE_CROSS = 2,  ///< goes through it, reported (the default for sensors)
+    JOSTLE_RESPONSE_BOUNCE = 3, ///< turns back off its face for the rest of the move
+    JOSTLE_RESPONSE_IGNORE = 4, ///< goes through it, unreported
+} jostle_response;
+
+/// Chooses the response to `other`, a body in the way of the move (jostle::MoveFilter);
+/// `context` is the one given to jostle_body_move. Called at most once per body and move.
+/// Returning a value that is not a jostle_response is misuse of jostle_body_move.
+///
+/// From inside the filter you may read the world: every getter, every query, the event
+/// arrays. Every function that changes the world is refused as misuse (it would change
+/// what the move is sweeping through): jostle_body_move itself, jostle_body_create and
+/// jostle_body_destroy, the body setters, the tile map functions that change a map, and
+/// the jostle_world_* functions that change the world. The filter must return normally:
+/// no longjmp out of it.
+typedef jostle_response (*jostle_move_filter_fn)(jostle_body_id other, void* context);
+
+/// A body jostle_body_move met (jostle::MoveCollision).
+typedef struct jostle_move_collision {
+    jostle_body_id other;
+    jostle_response response; ///< what the filter chose for it
+    jostle_vec2 normal;       ///< unit, along x or y, pointing from `other` towards the body
+    /// The moved body's centre when it touched `other`, placed exactly against its face.
+    jostle_vec2 touch;
+    /// When, as a fraction of the whole move, in [0, 1]: the move takes unit time, and keeps
+    /// going at the same pace after a slide or a bounce.
+    float time;
+    jostle_vec2 other_centre; ///< the other body's box: its centre
+    jostle_vec2 other_half;   ///< and its half extents
+} jostle_move_collision;
+
+/// What jostle_body_move did.
+typedef struct jostle_move_result {
+    jostle_vec2 centre; ///< where the body is now
+    /// The bodies met, in the order met (bodies met at the same moment in creation
+    /// order); NULL when count is 0. The array belongs to the world: it stays valid and
+    /// unchanged until the next jostle_body_move on that world or jostle_world_destroy;
+    /// do not free it.
+    const jostle_move_collision* collisions;
+    int count;
+} jostle_move_result;
+
+/// Moves `body` by `delta` the way bump.lua's world:move does: its box goes from where
+/// the body is towards where it would be, and each body it runs into answers by `filter`
+/// (NULL: JOSTLE_RESPONSE_SLIDE for solid bodies, JOSTLE_RESPONSE_CROSS for sensors).
+/// The rules are jostle_box_cast's: touching is not running into, a body it is already
+/// inside does not stop it, a one-way platform stops it only from its blocking side, and
+/// nothing is tunnelled through. Bodies the moved body's category and mask leave out are
+/// never met. The body is put where the move ends (as by jostle_body_set_position: it
+/// wakes what it leaves and what it reaches); its velocity is left alone. After 32 stops
+/// the body stays where the last one left it.
+///
+/// Any body may be moved; a kinematic body is the usual choice for a character moved by
+/// hand (docs/characters.md). Writes what happened to *result, which may be NULL (the
+/// move alone). On misuse (a stale body, a delta not finite or that carries the body out
+/// of range, a filter answer that is not a jostle_response) nothing moves, it returns
+/// false, and *result, if result is not NULL, says so: centre where the body is (zero if
+/// there is no such body), no collisions.
+bool jostle_body_move(jostle_world* world, jostle_body_id body, jostle_vec2 delta,
+                      jostle_move_filter_fn filter, void* context, jostle_move_result* result);
+
 // === Tile maps (docs/tilemaps.md) ==========================================================
 
 /// Everything that describes a tile map (jostle::TileMapDef). Start from
@@ -667,14 +823,28 @@ void jostle_fixed_step_destroy(jostle_fixed_step* clock);
 int jostle_fixed_step_advance(jostle_fixed_step* clock, float frame_seconds);
 
 /// jostle_fixed_step_advance, then jostle_world_step(world, dt) that many times; returns
-/// the number of steps taken. If a step fails (from inside a callback, say), the steps
-/// left are not taken, their time is lost, the error is recorded and it returns the
+/// the number of steps taken. Before the last of them it keeps where every body is, for
+/// jostle_fixed_step_draw_position. If a step fails (from inside a callback, say), the
+/// steps left are not taken, their time is lost, the error is recorded and it returns the
 /// steps taken so far.
 int jostle_fixed_step_update(jostle_fixed_step* clock, jostle_world* world, float frame_seconds);
 
 /// How far the time left over reaches towards the next step, in [0, 1): draw bodies at
 /// previous + (current - previous) * alpha. 0 on misuse.
 float jostle_fixed_step_alpha(const jostle_fixed_step* clock);
+
+/// Where to draw a body now: between where it was before the last step
+/// jostle_fixed_step_update took and where it is, by alpha, so that motion looks smooth
+/// when the frame rate and the step rate differ. Where it is for a body the clock has not
+/// stepped yet (created since). {0, 0} on misuse (a stale body...).
+jostle_vec2 jostle_fixed_step_draw_position(const jostle_fixed_step* clock,
+                                            const jostle_world* world, jostle_body_id body);
+
+/// jostle_fixed_step_draw_position of every live body, in the order of
+/// jostle_world_bodies, into out[0 .. capacity); returns how many bodies there are (the
+/// buffer rule of jostle_world_bodies).
+int jostle_fixed_step_read_draw_positions(const jostle_fixed_step* clock, const jostle_world* world,
+                                          jostle_vec2* out, int capacity);
 
 /// The seconds the last advance dropped because of the cap.
 double jostle_fixed_step_dropped_seconds(const jostle_fixed_step* clock);

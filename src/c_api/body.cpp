@@ -1,4 +1,5 @@
-// The C API's bodies: creation, destruction, and every getter and setter World offers.
+// The C API's bodies: creation, destruction, every getter and setter World offers, forces,
+// contacts now, and move().
 #include "c_api.hpp"
 
 using namespace jostle;
@@ -19,6 +20,17 @@ template <class Set> bool set(const char* function, jostle_world* world, Set&& w
         return true;
     });
 }
+
+/// The C filter as move()'s, its answers checked (C may return any int); none for NULL.
+MoveFilter moveFilter(jostle_move_filter_fn filter, void* context) {
+    if (filter == nullptr)
+        return {};
+    return [filter, context](BodyId other) { return toCpp(filter(toC(other), context)); };
+}
+
+// The contacts of a body, kept from one call to the next; one set per thread, as getters
+// may run on several threads at once.
+thread_local std::vector<ContactInfo> foundContacts;
 
 } // namespace
 
@@ -197,6 +209,86 @@ jostle_vec2 jostle_body_get_separation(const jostle_world* world, jostle_body_id
 jostle_touching jostle_body_get_touching(const jostle_world* world, jostle_body_id body) {
     return get<jostle_touching>(__func__, world,
                                 [&](const World& w) { return toC(w.touching(toCpp(body))); });
+}
+
+bool jostle_body_is_character(const jostle_world* world, jostle_body_id body) {
+    return get<bool>(__func__, world, [&](const World& w) { return w.isCharacter(toCpp(body)); });
+}
+
+bool jostle_body_set_character(jostle_world* world, jostle_body_id body, bool character) {
+    return set(__func__, world, [&](World& w) { w.setCharacter(toCpp(body), character); });
+}
+
+float jostle_body_get_wall_friction(const jostle_world* world, jostle_body_id body) {
+    return get<float>(__func__, world, [&](const World& w) { return w.wallFriction(toCpp(body)); });
+}
+
+bool jostle_body_set_wall_friction(jostle_world* world, jostle_body_id body, float friction) {
+    return set(__func__, world, [&](World& w) { w.setWallFriction(toCpp(body), friction); });
+}
+
+float jostle_body_get_walk_speed(const jostle_world* world, jostle_body_id body) {
+    return get<float>(__func__, world, [&](const World& w) { return w.walkSpeed(toCpp(body)); });
+}
+
+bool jostle_body_set_walk_speed(jostle_world* world, jostle_body_id body, float speed) {
+    return set(__func__, world, [&](World& w) { w.setWalkSpeed(toCpp(body), speed); });
+}
+
+bool jostle_body_get_ground(const jostle_world* world, jostle_body_id body, jostle_ground* ground) {
+    return get<bool>(__func__, world, [&](const World& w) {
+        jostle_ground& result = required(ground, "ground");
+        return answer(w.ground(toCpp(body)), result);
+    });
+}
+
+bool jostle_body_apply_force(jostle_world* world, jostle_body_id body, jostle_vec2 force) {
+    return set(__func__, world, [&](World& w) { w.applyForce(toCpp(body), toCpp(force)); });
+}
+
+bool jostle_body_apply_impulse(jostle_world* world, jostle_body_id body, jostle_vec2 impulse) {
+    return set(__func__, world, [&](World& w) { w.applyImpulse(toCpp(body), toCpp(impulse)); });
+}
+
+int jostle_body_contacts(const jostle_world* world, jostle_body_id body, jostle_contact_info* out,
+                         int capacity) {
+    return get<int>(__func__, world, [&](const World& w) {
+        checkBuffer(out, capacity);
+        w.contacts(toCpp(body), foundContacts);
+        return copyOut(std::span<const ContactInfo>(foundContacts), out, capacity);
+    });
+}
+
+bool jostle_body_is_touching(const jostle_world* world, jostle_body_id a, jostle_body_id b) {
+    return get<bool>(__func__, world,
+                     [&](const World& w) { return w.isTouching(toCpp(a), toCpp(b)); });
+}
+
+bool jostle_body_move(jostle_world* world, jostle_body_id body, jostle_vec2 delta,
+                      jostle_move_filter_fn filter, void* context, jostle_move_result* result) {
+    // On misuse nothing moved and nothing was met.
+    if (result != nullptr)
+        *result = {};
+    return guard(__func__, false, [&] {
+        jostle_world& w = worldOf(world);
+        const BodyId id = toCpp(body);
+        if (result != nullptr && w.world.isValid(id))
+            result->centre = toC(w.world.position(id));
+        MoveOutcome moved;
+        {
+            const FlagScope scope(w.moving);
+            moved = move(w.world, id, toCpp(delta), moveFilter(filter, context));
+        }
+        // Where it went stands even if what it met cannot be kept (out of memory).
+        if (result != nullptr)
+            result->centre = toC(moved.centre);
+        convert(std::span<const MoveCollision>(moved.collisions), w.moveCollisions);
+        if (result != nullptr && !w.moveCollisions.empty()) {
+            result->collisions = w.moveCollisions.data();
+            result->count = countOf(w.moveCollisions.size());
+        }
+        return true;
+    });
 }
 
 } // extern "C"

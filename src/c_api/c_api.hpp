@@ -14,6 +14,7 @@
 #include <climits>
 #include <cstddef>
 #include <new>
+#include <optional>
 #include <span>
 #include <string>
 #include <type_traits>
@@ -36,6 +37,10 @@ struct jostle_world {
     std::vector<jostle_sensor_event> sensorBegins;
     std::vector<jostle_sensor_event> sensorEnds;
     std::vector<jostle_crush_event> crushes;
+    /// True while jostle_body_move runs: its filter may read the world, not change it.
+    bool moving = false;
+    /// The collisions of the last jostle_body_move, which its result points into.
+    std::vector<jostle_move_collision> moveCollisions;
 };
 
 struct jostle_fixed_step {
@@ -77,12 +82,31 @@ template <class T> T& required(T* pointer, const char* name) {
     return *pointer;
 }
 
+/// The world of a function that may change it: never from a move's filter, whose sweep
+/// would go on through a world changed under it.
 inline jostle_world& worldOf(jostle_world* world) {
-    return required(world, "world");
+    jostle_world& w = required(world, "world");
+    if (w.moving)
+        misuse("called from a filter during jostle_body_move (the world may not change during "
+               "a move)");
+    return w;
 }
 inline const jostle_world& worldOf(const jostle_world* world) {
     return required(world, "world");
 }
+
+/// Sets a flag of the C world (stepping, moving) while it lives, and clears it
+/// however the scope ends.
+class FlagScope {
+public:
+    explicit FlagScope(bool& flag) : flag_(flag) { flag_ = true; }
+    ~FlagScope() { flag_ = false; }
+    FlagScope(const FlagScope&) = delete;
+    FlagScope& operator=(const FlagScope&) = delete;
+
+private:
+    bool& flag_;
+};
 
 /// For the functions that change the world as a whole, which a callback may not call.
 inline jostle_world& outsideStep(jostle_world* world) {
@@ -113,15 +137,6 @@ inline void checkBuffer(const void* out, int capacity) {
 /// A size as a C count (counts beyond INT_MAX cannot happen in practice: say INT_MAX).
 inline int countOf(std::size_t size) {
     return size > static_cast<std::size_t>(INT_MAX) ? INT_MAX : static_cast<int>(size);
-}
-
-/// Copies as many of `items` as fit, converted, and returns how many there are.
-template <class From, class To, class Convert>
-int copyOut(std::span<const From> items, To* out, int capacity, Convert&& convert) {
-    const std::size_t fit = std::min(items.size(), static_cast<std::size_t>(capacity));
-    for (std::size_t i = 0; i < fit; ++i)
-        out[i] = convert(items[i]);
-    return countOf(items.size());
 }
 
 // --- Conversions --------------------------------------------------------------------------
@@ -304,7 +319,13 @@ inline TileMapDef toCpp(const jostle_tile_map_def& d) {
 }
 
 inline jostle_contact_event toC(const ContactEvent& e) {
-    return {toC(e.a), toC(e.b), toC(e.normal), e.approachSpeed};
+    return {toC(e.a), toC(e.b), toC(e.normal), e.approachSpeed, toC(e.point)};
+}
+inline jostle_contact_info toC(const ContactInfo& c) {
+    return {toC(c.other), toC(c.normal), toC(c.point), c.impulse};
+}
+inline jostle_ground toC(const Ground& g) {
+    return {toC(g.body), toC(g.normal), toC(g.velocity)};
 }
 inline jostle_sensor_event toC(const SensorEvent& e) {
     return {toC(e.sensor), toC(e.visitor)};
@@ -326,6 +347,89 @@ inline jostle_box_cast_hit toC(const BoxCastHit& h) {
 }
 inline jostle_move_hit toC(const MoveHit& h) {
     return {toC(h.body), toC(h.normal)};
+}
+
+inline Response toCpp(jostle_response response) {
+    switch (response) {
+    case JOSTLE_RESPONSE_SLIDE:
+        return Response::Slide;
+    case JOSTLE_RESPONSE_TOUCH:
+        return Response::Touch;
+    case JOSTLE_RESPONSE_CROSS:
+        return Response::Cross;
+    case JOSTLE_RESPONSE_BOUNCE:
+        return Response::Bounce;
+    case JOSTLE_RESPONSE_IGNORE:
+        return Response::Ignore;
+    }
+    misuse("the filter's response must be JOSTLE_RESPONSE_SLIDE, _TOUCH, _CROSS, _BOUNCE or "
+           "_IGNORE, got " +
+           std::to_string(static_cast<int>(response)));
+}
+inline jostle_response toC(Response response) {
+    switch (response) {
+    case Response::Slide:
+        return JOSTLE_RESPONSE_SLIDE;
+    case Response::Touch:
+        return JOSTLE_RESPONSE_TOUCH;
+    case Response::Cross:
+        return JOSTLE_RESPONSE_CROSS;
+    case Response::Bounce:
+        return JOSTLE_RESPONSE_BOUNCE;
+    case Response::Ignore:
+        return JOSTLE_RESPONSE_IGNORE;
+    }
+    return JOSTLE_RESPONSE_SLIDE; // not reached: move() reports only these
+}
+inline jostle_move_collision toC(const MoveCollision& c) {
+    return {toC(c.other), toC(c.response),    toC(c.normal),   toC(c.touch),
+            c.time,       toC(c.otherCentre), toC(c.otherHalf)};
+}
+
+// --- Results ------------------------------------------------------------------------------
+
+/// Copies as many of `items` as fit, converted, and returns how many there are.
+template <class From, class To> int copyOut(std::span<const From> items, To* out, int capacity) {
+    const std::size_t fit = std::min(items.size(), static_cast<std::size_t>(capacity));
+    for (std::size_t i = 0; i < fit; ++i)
+        out[i] = toC(items[i]);
+    return countOf(items.size());
+}
+
+/// `items` in C layout, in `to` (whose memory is kept from one call to the next).
+template <class From, class To> void convert(std::span<const From> items, std::vector<To>& to) {
+    to.clear();
+    to.reserve(items.size());
+    for (const From& item : items)
+        to.push_back(toC(item));
+}
+
+/// An answer that may be none: true and `out` set if there is one, false and `out`
+/// untouched if not.
+template <class From, class To> bool answer(const std::optional<From>& found, To& out) {
+    if (found)
+        out = toC(*found);
+    return found.has_value();
+}
+
+/// The memory of readEach, kept from one read to the next; one per thread, as reads may
+/// run on several at once.
+inline std::vector<Vec2>& readScratch() {
+    thread_local std::vector<Vec2> scratch;
+    return scratch;
+}
+
+/// The reads of a vector per body (World::readPositions and the like): `read` fills a span
+/// of as many as fit from the first body on; they are copied into out, converted, and the
+/// number of bodies is returned (the buffer rule).
+template <class Read>
+int readEach(const World& world, jostle_vec2* out, int capacity, Read&& read) {
+    checkBuffer(out, capacity);
+    std::vector<Vec2>& scratch = readScratch();
+    scratch.resize(std::min(world.bodyCount(), static_cast<std::size_t>(capacity)));
+    read(std::span<Vec2>(scratch));
+    copyOut(std::span<const Vec2>(scratch), out, capacity);
+    return countOf(world.bodyCount());
 }
 
 // --- Worlds (world.cpp) and events (events.cpp) ------------------------------------------

@@ -6,13 +6,6 @@ using namespace jostle::c_api;
 
 namespace {
 
-template <class From, class To> void convert(std::span<const From> from, std::vector<To>& to) {
-    to.clear();
-    to.reserve(from.size());
-    for (const From& event : from)
-        to.push_back(toC(event));
-}
-
 /// The array and its length, or NULL and 0 on misuse.
 template <class Event>
 const Event* handOut(const char* function, const jostle_world* world, int* count,

@@ -40,8 +40,11 @@ int jostle_fixed_step_update(jostle_fixed_step* clock, jostle_world* world, floa
         // A failing step (out of memory) is reported, and the steps taken stand.
         int taken = 0;
         guard(function, 0, [&] {
-            for (; taken < steps; ++taken)
+            for (; taken < steps; ++taken) {
+                if (taken == steps - 1)
+                    c.rememberPositions(w.world); // as FixedStep::update does
                 stepWorld(w, c.dt());
+            }
             return 0;
         });
         return taken;
@@ -50,6 +53,24 @@ int jostle_fixed_step_update(jostle_fixed_step* clock, jostle_world* world, floa
 
 float jostle_fixed_step_alpha(const jostle_fixed_step* clock) {
     return guard(__func__, 0.0f, [&] { return clockOf(clock).clock.alpha(); });
+}
+
+jostle_vec2 jostle_fixed_step_draw_position(const jostle_fixed_step* clock,
+                                            const jostle_world* world, jostle_body_id body) {
+    return guard(__func__, jostle_vec2{}, [&] {
+        const FixedStep& c = clockOf(clock).clock;
+        return toC(c.drawPosition(worldOf(world).world, toCpp(body)));
+    });
+}
+
+int jostle_fixed_step_read_draw_positions(const jostle_fixed_step* clock, const jostle_world* world,
+                                          jostle_vec2* out, int capacity) {
+    return guard(__func__, 0, [&] {
+        const FixedStep& c = clockOf(clock).clock;
+        const World& w = worldOf(world).world;
+        return readEach(w, out, capacity,
+                        [&](std::span<Vec2> read) { c.readDrawPositions(w, read); });
+    });
 }
 
 double jostle_fixed_step_dropped_seconds(const jostle_fixed_step* clock) {

@@ -19,8 +19,7 @@ int findBodies(const char* function, const jostle_world* world, jostle_body_id* 
         const World& w = worldOf(world).world;
         checkBuffer(out, capacity);
         query(w);
-        return copyOut(std::span<const BodyId>(foundBodies), out, capacity,
-                       [](BodyId id) { return toC(id); });
+        return copyOut(std::span<const BodyId>(foundBodies), out, capacity);
     });
 }
 
@@ -65,10 +64,7 @@ bool jostle_ray_cast(const jostle_world* world, jostle_vec2 from, jostle_vec2 to
     return guard(__func__, false, [&] {
         const World& w = worldOf(world).world;
         jostle_ray_hit& result = required(hit, "hit");
-        const std::optional<RayHit> found = rayCast(w, toCpp(from), toCpp(to), toCpp(filter));
-        if (found)
-            result = toC(*found);
-        return found.has_value();
+        return answer(rayCast(w, toCpp(from), toCpp(to), toCpp(filter)), result);
     });
 }
 
@@ -78,8 +74,7 @@ int jostle_ray_cast_all(const jostle_world* world, jostle_vec2 from, jostle_vec2
         const World& w = worldOf(world).world;
         checkBuffer(out, capacity);
         rayCastAll(w, toCpp(from), toCpp(to), toCpp(filter), foundHits);
-        return copyOut(std::span<const RayHit>(foundHits), out, capacity,
-                       [](const RayHit& h) { return toC(h); });
+        return copyOut(std::span<const RayHit>(foundHits), out, capacity);
     });
 }
 
@@ -89,11 +84,8 @@ bool jostle_box_cast(const jostle_world* world, jostle_vec2 centre, jostle_vec2 
     return guard(__func__, false, [&] {
         const World& w = worldOf(world).world;
         jostle_box_cast_hit& result = required(hit, "hit");
-        const std::optional<BoxCastHit> found =
-            boxCast(w, toCpp(centre), toCpp(half), toCpp(translation), toCpp(filter));
-        if (found)
-            result = toC(*found);
-        return found.has_value();
+        return answer(boxCast(w, toCpp(centre), toCpp(half), toCpp(translation), toCpp(filter)),
+                      result);
     });
 }
 
@@ -110,8 +102,7 @@ int jostle_move_and_slide(const jostle_world* world, jostle_vec2 centre, jostle_
         const MoveResult moved =
             moveAndSlide(w, toCpp(centre), toCpp(half), toCpp(translation), toCpp(filter));
         end = toC(moved.centre);
-        return copyOut(std::span<const MoveHit>(moved.hits), hits, capacity,
-                       [](const MoveHit& h) { return toC(h); });
+        return copyOut(std::span<const MoveHit>(moved.hits), hits, capacity);
     });
 }
 

@@ -74,8 +74,7 @@ int jostle_tile_map_bodies(const jostle_world* world, jostle_tile_map_id map, jo
     return guard(__func__, 0, [&] {
         const World& w = worldOf(world).world;
         checkBuffer(out, capacity);
-        return copyOut(tileMapBodies(w, toCpp(map)), out, capacity,
-                       [](BodyId id) { return toC(id); });
+        return copyOut(tileMapBodies(w, toCpp(map)), out, capacity);
     });
 }
 

@@ -7,15 +7,6 @@ using namespace jostle::c_api;
 
 namespace {
 
-/// Clears the C world's stepping flag however the step ends.
-struct SteppingScope {
-    jostle_world& world;
-    explicit SteppingScope(jostle_world& w) : world(w) { world.stepping = true; }
-    ~SteppingScope() { world.stepping = false; }
-    SteppingScope(const SteppingScope&) = delete;
-    SteppingScope& operator=(const SteppingScope&) = delete;
-};
-
 /// Calls the C callback with a C copy of the pair, and takes back what it may change.
 bool callPreSolve(jostle_world& w, Collision& collision) {
     jostle_collision c = toC(collision);
@@ -33,7 +24,7 @@ void stepWorld(jostle_world& w, float dt) {
     if (w.stepping)
         misuse("called from a callback during jostle_world_step");
     {
-        const SteppingScope scope(w);
+        const FlagScope scope(w.stepping);
         w.world.step(dt);
     }
     publishEvents(w);
@@ -147,7 +138,21 @@ int jostle_world_bodies(const jostle_world* world, jostle_body_id* out, int capa
     return guard(__func__, 0, [&] {
         const World& w = worldOf(world).world;
         checkBuffer(out, capacity);
-        return copyOut(w.bodies(), out, capacity, [](BodyId id) { return toC(id); });
+        return copyOut(w.bodies(), out, capacity);
+    });
+}
+
+int jostle_world_read_positions(const jostle_world* world, jostle_vec2* out, int capacity) {
+    return guard(__func__, 0, [&] {
+        const World& w = worldOf(world).world;
+        return readEach(w, out, capacity, [&](std::span<Vec2> read) { w.readPositions(read); });
+    });
+}
+
+int jostle_world_read_velocities(const jostle_world* world, jostle_vec2* out, int capacity) {
+    return guard(__func__, 0, [&] {
+        const World& w = worldOf(world).world;
+        return readEach(w, out, capacity, [&](std::span<Vec2> read) { w.readVelocities(read); });
     });
 }
 

@@ -73,6 +73,30 @@ static jostle_body_id add_box(jostle_world* world, jostle_body_type type, float 
     return id;
 }
 
+static bool at(jostle_vec2 v, float x, float y) {
+    return v.x == x && v.y == y;
+}
+
+/// A character 12 x 16 at (x, y), in a world of gravity kG where nothing sleeps.
+static jostle_body_id add_character(jostle_world* world, float x, float y, float wall_friction) {
+    CHECK(jostle_world_set_sleeping(world, false), "no sleeping");
+    jostle_body_def def = jostle_default_body_def();
+    def.x = x;
+    def.y = y;
+    def.hw = 6;
+    def.hh = 8;
+    def.character = true;
+    def.wall_friction = wall_friction;
+    jostle_body_id id = jostle_body_create(world, &def);
+    CHECK(!jostle_body_id_is_null(id), "a character");
+    return id;
+}
+
+static void run(jostle_world* world, int steps) {
+    for (int i = 0; i < steps; ++i)
+        CHECK(jostle_world_step(world, kDt), "step");
+}
+
 // --- Defaults ----------------------------------------------------------------------------
 
 static void test_defaults(void) {
@@ -92,6 +116,7 @@ static void test_defaults(void) {
     CHECK(b.friction == 0.5f && b.density == 1.0f && b.gravity_scale == 1.0f, "body numbers");
     CHECK(b.category == 1u && b.mask == 0xFFFFFFFFu && !b.sensor && b.user_data == NULL,
           "body filter");
+    CHECK(!b.character && b.wall_friction == 0, "not a character, no wall friction");
 
     jostle_query_filter f = jostle_default_query_filter();
     CHECK(f.mask == 0xFFFFFFFFu && f.category == 0xFFFFFFFFu && !f.include_sensors &&
@@ -143,6 +168,9 @@ static void test_landing_and_contact_events(void) {
             CHECK(same(events[k].b, box), "b is the box");
             CHECK(events[k].normal.x == 0 && events[k].normal.y == 1, "from b towards a");
             CHECK_NEAR(events[k].approach_speed, sqrt(2.0 * kG * 280.0), kG * kDt);
+            // The middle of the face they share (x -10..10), on the floor's top.
+            CHECK_NEAR(events[k].point.x, 0.0, 1e-4);
+            CHECK_NEAR(events[k].point.y, 290.0, 0.1 + 1e-3);
             ++begins;
         }
         // The array stays put until the next step.
@@ -168,6 +196,7 @@ static void test_landing_and_contact_events(void) {
         for (int k = 0; k < count; ++k) {
             CHECK(same(events[k].a, floor) && same(events[k].b, box), "the pair that parted");
             CHECK(events[k].approach_speed == 0, "an end has no approach speed");
+            CHECK(events[k].point.x == 0 && events[k].point.y == 0, "nor a point");
             ++ends;
         }
     }
@@ -353,6 +382,288 @@ static void test_body_properties(void) {
     CHECK_NO_ERROR();
 }
 
+// --- Characters, forces and contacts now -------------------------------------------------
+
+/// The character fields of a def reach the body, come back in its def, and have setters.
+static void test_character_def(void) {
+    jostle_world* world = make_world(kG);
+    jostle_body_def def = jostle_default_body_def();
+    def.hw = 6;
+    def.hh = 8;
+    def.character = true;
+    def.wall_friction = 0.25f;
+    jostle_body_id hero = jostle_body_create(world, &def);
+    CHECK(jostle_body_is_character(world, hero), "a character");
+    CHECK(jostle_body_get_wall_friction(world, hero) == 0.25f, "its wall friction");
+    jostle_body_def back = jostle_body_get_def(world, hero);
+    CHECK(back.character && back.wall_friction == 0.25f, "in its def");
+    jostle_body_id copy = jostle_body_create(world, &back);
+    CHECK(jostle_body_is_character(world, copy) &&
+              jostle_body_get_wall_friction(world, copy) == 0.25f,
+          "and in a copy made from it");
+
+    CHECK(jostle_body_set_character(world, hero, false) && !jostle_body_is_character(world, hero),
+          "set character");
+    CHECK(jostle_body_set_wall_friction(world, hero, 0.75f) &&
+              jostle_body_get_wall_friction(world, hero) == 0.75f,
+          "set wall friction");
+    back = jostle_body_get_def(world, hero);
+    CHECK(!back.character && back.wall_friction == 0.75f, "the def follows");
+    CHECK(jostle_body_get_walk_speed(world, hero) == 0, "standing by default");
+    CHECK(jostle_body_set_walk_speed(world, hero, -40) &&
+              jostle_body_get_walk_speed(world, hero) == -40,
+          "walk speed, kept by a body that is not a character");
+
+    CHECK(!jostle_body_set_wall_friction(world, hero, 2), "wall friction 2");
+    CHECK_ERROR("jostle_body_set_wall_friction", "[0, 1]");
+    CHECK(!jostle_body_set_walk_speed(world, hero, NAN), "NaN walk speed");
+    CHECK_ERROR("jostle_body_set_walk_speed", "finite");
+    CHECK(jostle_body_get_walk_speed(world, hero) == -40, "unchanged");
+    def.wall_friction = -1;
+    CHECK(jostle_body_id_is_null(jostle_body_create(world, &def)), "wall friction < 0");
+    CHECK_ERROR("jostle_body_create", "BodyDef.wallFriction");
+    CHECK(jostle_world_destroy(world), "destroy");
+    CHECK_NO_ERROR();
+}
+
+/// A character 12 x 16 walks at the commanded 150 on a floor (top at y = 0), exactly; an
+/// ordinary body set to 150 before each step loses friction * g * dt to the floor in it
+/// (friction 0.5: 150 - 0.5 * 800 / 60 = 143.33). The character knows it stands on the
+/// floor, which is at rest.
+static void test_walking(void) {
+    jostle_world* world = make_world(kG);
+    jostle_body_id floor = add_box(world, JOSTLE_BODY_STATIC, 0, 50, 5000, 50);
+    jostle_body_id hero = add_character(world, 0, -8, 0);
+    jostle_body_id crate = add_box(world, JOSTLE_BODY_DYNAMIC, 1000, -8, 6, 8);
+    run(world, 10); // settle
+    CHECK(jostle_body_set_walk_speed(world, hero, 150), "walk");
+    for (int i = 0; i < 30; ++i) {
+        CHECK(jostle_body_set_velocity(world, crate, (jostle_vec2){150, 0}), "push the crate");
+        CHECK(jostle_world_step(world, kDt), "step");
+        CHECK(jostle_body_get_velocity(world, hero).x == 150, "the character walks at 150");
+        CHECK_NEAR(jostle_body_get_velocity(world, crate).x, 150.0 - 0.5 * kG * kDt, 1e-3);
+    }
+    jostle_ground ground;
+    CHECK(jostle_body_get_ground(world, hero, &ground), "on the ground");
+    CHECK(same(ground.body, floor), "the floor");
+    CHECK(at(ground.normal, 0, -1) && at(ground.velocity, 0, 0), "pushing up, at rest");
+    CHECK(jostle_body_get_ground(world, crate, &ground) && same(ground.body, floor),
+          "any body may ask");
+    CHECK(jostle_world_destroy(world), "destroy");
+    CHECK_NO_ERROR();
+}
+
+/// A character standing on a lift 80 x 12 (top at y = 0) stands on it, and has the
+/// lift's velocity for its ground's; after a jump it stands on nothing.
+static void test_ground_of_a_lift(void) {
+    jostle_world* world = make_world(kG);
+    jostle_body_id lift = add_box(world, JOSTLE_BODY_KINEMATIC, 0, 6, 40, 6);
+    jostle_body_id hero = add_character(world, 0, -8, 0);
+    run(world, 10);
+    CHECK(jostle_body_set_velocity(world, lift, (jostle_vec2){30, -20}), "the lift moves");
+    run(world, 1);
+    jostle_ground ground;
+    CHECK(jostle_body_get_ground(world, hero, &ground), "on the lift");
+    CHECK(same(ground.body, lift), "the lift");
+    CHECK(at(ground.normal, 0, -1) && at(ground.velocity, 30, -20), "the lift's velocity");
+
+    // In the air: an ordinary false, *ground untouched.
+    CHECK(jostle_body_set_velocity(world, hero, (jostle_vec2){0, -400}), "jump");
+    run(world, 2);
+    ground.velocity.x = 77;
+    CHECK(!jostle_body_get_ground(world, hero, &ground), "in the air");
+    CHECK(ground.velocity.x == 77, "untouched");
+    CHECK(!jostle_body_get_ground(world, lift, &ground), "nothing under the lift");
+    CHECK_NO_ERROR();
+    CHECK(!jostle_body_get_ground(world, hero, NULL), "no output");
+    CHECK_ERROR("jostle_body_get_ground", "ground is NULL");
+    CHECK(jostle_world_destroy(world), "destroy");
+    CHECK_NO_ERROR();
+}
+
+/// A character 12 x 16 pressed into a wall (its left face at x = 100, walking into it at
+/// 150) and let go from rest high up falls as in open air: after n steps,
+/// g dt^2 n (n + 1) / 2 (46.67 for 20). With a wall friction of 0.5 the wall holds it:
+/// it falls less than a quarter of that.
+static void test_wall_friction(void) {
+    for (int asked = 0; asked < 2; ++asked) {
+        jostle_world* world = make_world(kG);
+        add_box(world, JOSTLE_BODY_STATIC, 0, 50, 500, 50);
+        add_box(world, JOSTLE_BODY_STATIC, 150, -200, 50, 200);
+        jostle_body_id hero = add_character(world, 94, -8, asked ? 0.5f : 0);
+        CHECK(jostle_body_set_walk_speed(world, hero, 150), "into the wall");
+        run(world, 5);
+        CHECK(jostle_body_set_position(world, hero, (jostle_vec2){94, -300}), "high up");
+        CHECK(jostle_body_set_velocity(world, hero, (jostle_vec2){0, 0}), "at rest");
+        run(world, 20);
+        const double fall = jostle_body_get_position(world, hero).y + 300;
+        const double open_air = kG * (double)kDt * kDt * 20 * 21 / 2;
+        if (asked)
+            CHECK(fall < 0.25 * open_air, "held by the wall");
+        else
+            CHECK_NEAR(fall, open_air, 1e-3);
+        CHECK(jostle_body_get_touching(world, hero).wall_right, "against the wall");
+        CHECK(jostle_world_destroy(world), "destroy");
+    }
+    CHECK_NO_ERROR();
+}
+
+/// A 20 x 10 box of density 2 (mass 400) without gravity: a force of (800, -400) for one
+/// step changes its velocity by (800, -400) / 400 / 60 = (1/30, -1/60), and the next step
+/// nothing more. An impulse of (8, -2) on a box of mass 4 changes its velocity by
+/// (2, -0.5) at once. Static bodies are not moved.
+static void test_forces(void) {
+    jostle_world* world = make_world(0);
+    jostle_body_def def = jostle_default_body_def();
+    def.hw = 10;
+    def.hh = 5;
+    def.density = 2;
+    jostle_body_id box = jostle_body_create(world, &def);
+    CHECK(jostle_body_apply_force(world, box, (jostle_vec2){800, -400}), "a force");
+    CHECK(jostle_body_get_velocity(world, box).x == 0, "for the next step");
+    run(world, 1);
+    CHECK_NEAR(jostle_body_get_velocity(world, box).x, 1.0 / 30.0, 1e-6);
+    CHECK_NEAR(jostle_body_get_velocity(world, box).y, -1.0 / 60.0, 1e-6);
+    run(world, 1);
+    CHECK_NEAR(jostle_body_get_velocity(world, box).x, 1.0 / 30.0, 1e-6);
+
+    def.mass = 4;
+    def.x = 100;
+    jostle_body_id light = jostle_body_create(world, &def);
+    CHECK(jostle_body_apply_impulse(world, light, (jostle_vec2){8, -2}), "an impulse");
+    const jostle_vec2 v = jostle_body_get_velocity(world, light);
+    CHECK(v.x == 2 && v.y == -0.5f, "at once");
+
+    jostle_body_id wall = add_box(world, JOSTLE_BODY_STATIC, -100, 0, 5, 5);
+    CHECK(jostle_body_apply_force(world, wall, (jostle_vec2){1e6f, 0}) &&
+              jostle_body_apply_impulse(world, wall, (jostle_vec2){1e6f, 0}),
+          "accepted, and nothing happens");
+    run(world, 1);
+    CHECK(jostle_body_get_velocity(world, wall).x == 0, "a static body stays");
+    CHECK_NO_ERROR();
+
+    CHECK(!jostle_body_apply_force(world, box, (jostle_vec2){NAN, 0}), "NaN");
+    CHECK_ERROR("jostle_body_apply_force", "force must be finite");
+    CHECK(!jostle_body_apply_impulse(world, box, (jostle_vec2){0, INFINITY}), "infinite");
+    CHECK_ERROR("jostle_body_apply_impulse", "impulse must be finite");
+    CHECK_NEAR(jostle_body_get_velocity(world, box).x, 1.0 / 30.0, 1e-6); // unchanged
+    CHECK(jostle_world_destroy(world), "destroy");
+    CHECK_NO_ERROR();
+}
+
+/// A 10 x 10 crate (mass 100) at rest on a floor whose top is y = 0 (x from -100 to 100),
+/// under gravity 600, its left edge at x = 20; another box at x = -50, and a sensor
+/// around the crate.
+static void test_contacts_now(void) {
+    jostle_world* world = make_world(600);
+    jostle_body_id floor = add_box(world, JOSTLE_BODY_STATIC, 0, 10, 100, 10);
+    jostle_body_id crate = add_box(world, JOSTLE_BODY_DYNAMIC, 25, -5, 5, 5);
+    jostle_body_id other = add_box(world, JOSTLE_BODY_DYNAMIC, -50, -5, 5, 5);
+    jostle_body_def zone = jostle_default_body_def();
+    zone.type = JOSTLE_BODY_STATIC;
+    zone.x = 25;
+    zone.hw = 20;
+    zone.hh = 20;
+    zone.sensor = true;
+    jostle_body_id sensor = jostle_body_create(world, &zone);
+    run(world, 30);
+
+    jostle_contact_info contacts[2];
+    CHECK(jostle_body_contacts(world, crate, contacts, 2) == 1, "the floor alone, no sensor");
+    CHECK(same(contacts[0].other, floor), "the floor");
+    CHECK(contacts[0].normal.x == 0 && contacts[0].normal.y == -1, "from the floor to the crate");
+    // The middle of the stretch they share, x 20 to 30, on the floor's top.
+    CHECK_NEAR(contacts[0].point.x, 25.0, 1e-4);
+    CHECK_NEAR(contacts[0].point.y, 0.0, 0.05);
+    // Holding the crate up for a step: m g dt = 100 * 600 / 60 = 1000.
+    CHECK_NEAR(contacts[0].impulse, 1000.0, 1.0);
+
+    // The floor's, with the buffer rule: in the order of the bodies they pair with.
+    const jostle_body_id sentinel = {77, 77};
+    contacts[1].other = sentinel;
+    CHECK(jostle_body_contacts(world, floor, NULL, 0) == 2, "the count alone");
+    CHECK(jostle_body_contacts(world, floor, contacts, 1) == 2, "the full count, one copied");
+    CHECK(same(contacts[0].other, crate) && contacts[0].normal.y == 1, "the crate first");
+    CHECK(same(contacts[1].other, sentinel), "nothing beyond the capacity");
+    CHECK(jostle_body_contacts(world, floor, contacts, 2) == 2 && same(contacts[1].other, other),
+          "then the other box");
+
+    CHECK(jostle_body_is_touching(world, crate, floor) &&
+              jostle_body_is_touching(world, floor, crate),
+          "touching, both ways");
+    CHECK(!jostle_body_is_touching(world, crate, other), "apart");
+    CHECK(!jostle_body_is_touching(world, crate, sensor), "a sensor is not a contact");
+    CHECK_NO_ERROR();
+
+    CHECK(jostle_body_contacts(world, crate, contacts, -1) == 0, "capacity < 0");
+    CHECK_ERROR("jostle_body_contacts", "capacity must be >= 0");
+    CHECK(jostle_body_destroy(world, other), "destroy");
+    CHECK(jostle_body_contacts(world, other, NULL, 0) == 0, "stale");
+    CHECK_ERROR("jostle_body_contacts", "stale");
+    CHECK(!jostle_body_is_touching(world, floor, other), "stale");
+    CHECK_ERROR("jostle_body_is_touching", "stale");
+    CHECK(jostle_world_destroy(world), "destroy");
+    CHECK_NO_ERROR();
+}
+
+/// A contact begin says where the bodies met: a box 20 wide overhanging the left end of a
+/// floor (x from -100) lands on x -100 to -85, so at -92.5, on the floor's top.
+static void test_contact_point(void) {
+    jostle_world* world = make_world(600);
+    add_box(world, JOSTLE_BODY_STATIC, 0, 10, 100, 10);
+    add_box(world, JOSTLE_BODY_DYNAMIC, -95, -50, 10, 5);
+    int met = 0;
+    for (int i = 0; i < 60 && !met; ++i) {
+        CHECK(jostle_world_step(world, kDt), "step");
+        const jostle_contact_event* begins = jostle_world_contact_begins(world, &met);
+        for (int k = 0; k < met; ++k) {
+            CHECK_NEAR(begins[k].point.x, -92.5, 1e-3);
+            CHECK_NEAR(begins[k].point.y, 0.0, 0.05);
+        }
+    }
+    CHECK(met == 1, "it landed");
+    CHECK(jostle_world_destroy(world), "destroy");
+    CHECK_NO_ERROR();
+}
+
+// --- Bulk reads --------------------------------------------------------------------------
+
+static void test_read_positions(void) {
+    jostle_world* world = make_world(0);
+    jostle_body_def def = jostle_default_body_def();
+    def.hw = 1;
+    def.hh = 1;
+    def.x = 1, def.y = 2, def.vx = 3, def.vy = 4;
+    jostle_body_id a = jostle_body_create(world, &def);
+    def.x = 5, def.y = 6, def.vx = 7, def.vy = 8;
+    jostle_body_create(world, &def);
+    def.x = 9, def.y = 10, def.vx = 0, def.vy = 0;
+    jostle_body_create(world, &def);
+    CHECK(jostle_body_destroy(world, a), "destroyed: the order is the list's, b then c");
+
+    jostle_vec2 positions[5];
+    for (int i = 0; i < 5; ++i)
+        positions[i] = (jostle_vec2){-1, -1};
+    CHECK(jostle_world_read_positions(world, positions, 5) == 2, "two bodies");
+    CHECK(positions[0].x == 5 && positions[0].y == 6, "b");
+    CHECK(positions[1].x == 9 && positions[1].y == 10, "c");
+    CHECK(positions[2].x == -1 && positions[2].y == -1, "left alone");
+    jostle_vec2 velocities[1] = {{-1, -1}};
+    CHECK(jostle_world_read_velocities(world, velocities, 1) == 2, "the full count");
+    CHECK(velocities[0].x == 7 && velocities[0].y == 8, "b's, as many as fit");
+    CHECK(jostle_world_read_positions(world, NULL, 0) == 2, "the count alone");
+    CHECK_NO_ERROR();
+
+    CHECK(jostle_world_read_positions(world, NULL, 2) == 0, "NULL with room");
+    CHECK_ERROR("jostle_world_read_positions", "out is NULL but capacity is 2");
+    CHECK(jostle_world_read_velocities(world, velocities, -1) == 0, "capacity < 0");
+    CHECK_ERROR("jostle_world_read_velocities", "capacity must be >= 0");
+    CHECK(jostle_world_read_positions(NULL, positions, 5) == 0, "no world");
+    CHECK_ERROR("jostle_world_read_positions", "world is NULL");
+    CHECK(jostle_world_destroy(world), "destroy");
+    CHECK_NO_ERROR();
+}
+
 // --- Queries -----------------------------------------------------------------------------
 
 /// A static scene, so every answer follows from the numbers:
@@ -464,6 +775,258 @@ static void test_queries(void) {
     CHECK(jostle_move_and_slide(world, (jostle_vec2){-50, 80}, (jostle_vec2){5, 5},
                                 (jostle_vec2){30, 20}, NULL, &end, NULL, 0) == 1,
           "the count without a buffer");
+    CHECK(jostle_world_destroy(world), "destroy");
+    CHECK_NO_ERROR();
+}
+
+// --- Moving a body by hand, bump.lua's way -----------------------------------------------
+//
+// The cases of bump.lua's spec suite (tests/test_move.cpp), without gravity. bump gives a
+// rect by its top-left corner and size: rect() makes such a box. The item moved is
+// (0, 0, 1, 1), a kinematic body: centre (0.5, 0.5).
+
+static jostle_body_id rect(jostle_world* world, float x, float y, float w, float h,
+                           jostle_body_type type) {
+    return add_box(world, type, x + w / 2, y + h / 2, w / 2, h / 2);
+}
+
+static jostle_world* move_scene(jostle_body_id* item) {
+    jostle_world* world = make_world(0);
+    *item = rect(world, 0, 0, 1, 1, JOSTLE_BODY_KINEMATIC);
+    return world;
+}
+
+/// Answers every body with the response `context` points to.
+static jostle_response always(jostle_body_id other, void* context) {
+    (void)other;
+    return *(const jostle_response*)context;
+}
+
+static void test_move_responses(void) {
+    jostle_body_id item;
+    jostle_move_result r;
+
+    // In an empty world it goes all the way.
+    jostle_world* world = move_scene(&item);
+    CHECK(jostle_body_move(world, item, (jostle_vec2){1, 1}, NULL, NULL, &r), "moved");
+    CHECK(at(r.centre, 1.5f, 1.5f) && r.count == 0 && r.collisions == NULL, "all the way");
+    CHECK(at(jostle_body_get_position(world, item), 1.5f, 1.5f), "the body is there");
+    CHECK(jostle_world_destroy(world), "destroy");
+
+    // Touch: its bottom (1) reaches b's top (2) after 1 of 5, and stops there.
+    world = move_scene(&item);
+    jostle_body_id b = rect(world, 0, 2, 1, 1, JOSTLE_BODY_STATIC);
+    jostle_body_id c = rect(world, 0, 3, 1, 1, JOSTLE_BODY_STATIC);
+    jostle_response response = JOSTLE_RESPONSE_TOUCH;
+    CHECK(jostle_body_move(world, item, (jostle_vec2){0, 5}, always, &response, &r), "touch");
+    CHECK(at(r.centre, 0.5f, 1.5f) && r.count == 1, "stopped on b");
+    const jostle_move_collision* hit = &r.collisions[0];
+    CHECK(same(hit->other, b) && hit->response == JOSTLE_RESPONSE_TOUCH, "b, touched");
+    CHECK(at(hit->normal, 0, -1) && at(hit->touch, 0.5f, 1.5f), "from above, on its top");
+    CHECK_NEAR(hit->time, 0.2, 1e-6);
+    CHECK(at(hit->other_centre, 0.5f, 2.5f) && at(hit->other_half, 0.5f, 0.5f), "b's box");
+    CHECK(at(jostle_body_get_position(world, item), 0.5f, 1.5f), "the body is there");
+    // The array stays as it was until the next move, whatever else happens.
+    CHECK(jostle_world_step(world, kDt), "step");
+    CHECK(same(r.collisions[0].other, b), "still there after a step");
+
+    // Cross: through both, each reported in turn (the item is back at the start).
+    CHECK(jostle_body_set_position(world, item, (jostle_vec2){0.5f, 0.5f}), "back");
+    response = JOSTLE_RESPONSE_CROSS;
+    CHECK(jostle_body_move(world, item, (jostle_vec2){0, 5}, always, &response, &r), "cross");
+    CHECK(at(r.centre, 0.5f, 5.5f) && r.count == 2, "all the way, two met");
+    CHECK(same(r.collisions[0].other, b) && same(r.collisions[1].other, c), "in turn");
+    CHECK_NEAR(r.collisions[0].time, 0.2, 1e-6);
+    CHECK_NEAR(r.collisions[1].time, 0.4, 1e-6);
+    CHECK(at(r.collisions[1].touch, 0.5f, 2.5f), "c touched at 2.5");
+
+    // Bounce: down 5 onto b's top after 1: the 4 left go back up, from 1.5 to -2.5.
+    CHECK(jostle_body_set_position(world, item, (jostle_vec2){0.5f, 0.5f}), "back");
+    response = JOSTLE_RESPONSE_BOUNCE;
+    CHECK(jostle_body_move(world, item, (jostle_vec2){0, 5}, always, &response, &r), "bounce");
+    CHECK(at(r.centre, 0.5f, -2.5f) && r.count == 1, "turned back");
+    CHECK(at(r.collisions[0].touch, 0.5f, 1.5f) &&
+              r.collisions[0].response == JOSTLE_RESPONSE_BOUNCE,
+          "off b's top");
+    CHECK(jostle_world_destroy(world), "destroy");
+
+    // Slide, the default: b (0, 2, 1, 2) below the item, c (2, 1, 1, 1). Moving by (5, 5),
+    // the item meets c's left face after 1 of 5, at (1.5, 1.5), then slides down the rest,
+    // to (1.5, 5.5), past b's corner without entering it.
+    world = move_scene(&item);
+    rect(world, 0, 2, 1, 2, JOSTLE_BODY_STATIC);
+    c = rect(world, 2, 1, 1, 1, JOSTLE_BODY_STATIC);
+    CHECK(jostle_body_move(world, item, (jostle_vec2){5, 5}, NULL, NULL, &r), "slide");
+    CHECK(at(r.centre, 1.5f, 5.5f) && r.count == 1, "down c's face");
+    CHECK(same(r.collisions[0].other, c) && r.collisions[0].response == JOSTLE_RESPONSE_SLIDE,
+          "c, slid along");
+    CHECK(at(r.collisions[0].normal, -1, 0) && at(r.collisions[0].touch, 1.5f, 1.5f),
+          "its left face");
+    CHECK_NEAR(r.collisions[0].time, 0.2, 1e-6);
+    // Without a result: the move alone. Along y 0..1 it passes over c's top (touching is
+    // not running into), and it does not tunnel through a thin wall at x = 50.
+    CHECK(jostle_body_set_position(world, item, (jostle_vec2){0.5f, 0.5f}), "back");
+    rect(world, 50, -5, 1, 10, JOSTLE_BODY_STATIC);
+    CHECK(jostle_body_move(world, item, (jostle_vec2){100, 0}, NULL, NULL, NULL), "no result");
+    CHECK(at(jostle_body_get_position(world, item), 49.5f, 0.5f), "stopped by the wall");
+    CHECK(jostle_world_destroy(world), "destroy");
+    CHECK_NO_ERROR();
+}
+
+/// A filter that ignores one body and slides on the others, counting its calls per body.
+typedef struct ghost_filter {
+    jostle_body_id ghost;
+    int calls[8]; // by slot
+} ghost_filter;
+
+static jostle_response through_ghost(jostle_body_id other, void* context) {
+    ghost_filter* f = (ghost_filter*)context;
+    if (other.index < 8)
+        ++f->calls[other.index];
+    return same(other, f->ghost) ? JOSTLE_RESPONSE_IGNORE : JOSTLE_RESPONSE_SLIDE;
+}
+
+static void test_move_filters(void) {
+    jostle_body_id item;
+    jostle_move_result r;
+
+    // Ignore means through, unreported; the filter is asked once per body.
+    jostle_world* world = move_scene(&item);
+    ghost_filter f;
+    memset(&f, 0, sizeof f);
+    f.ghost = rect(world, 3, 0, 1, 1, JOSTLE_BODY_STATIC);
+    jostle_body_id wall = rect(world, 6, 0, 1, 1, JOSTLE_BODY_STATIC);
+    CHECK(jostle_body_move(world, item, (jostle_vec2){10, 0}, through_ghost, &f, &r), "moved");
+    CHECK(at(r.centre, 5.5f, 0.5f) && r.count == 1 && same(r.collisions[0].other, wall),
+          "through the ghost, stopped by the wall");
+    for (int slot = 0; slot < 8; ++slot)
+        CHECK(f.calls[slot] <= 1, "asked at most once per body");
+    CHECK(f.calls[f.ghost.index] == 1 && f.calls[wall.index] == 1, "asked of both");
+    CHECK(jostle_world_destroy(world), "destroy");
+
+    // By default a sensor is crossed and reported; a body the item's mask leaves out is not
+    // met at all.
+    world = move_scene(&item);
+    jostle_body_def coin_def = jostle_default_body_def();
+    coin_def.type = JOSTLE_BODY_STATIC;
+    coin_def.x = 3.5f;
+    coin_def.y = 0.5f;
+    coin_def.hw = 0.5f;
+    coin_def.hh = 0.5f;
+    coin_def.sensor = true;
+    jostle_body_id coin = jostle_body_create(world, &coin_def);
+    jostle_body_def left_out = coin_def;
+    left_out.x = 6.5f;
+    left_out.sensor = false;
+    left_out.category = 4;
+    jostle_body_create(world, &left_out);
+    CHECK(jostle_body_set_mask(world, item, ~4u), "mask");
+    CHECK(jostle_body_move(world, item, (jostle_vec2){10, 0}, NULL, NULL, &r), "moved");
+    CHECK(at(r.centre, 10.5f, 0.5f) && r.count == 1, "all the way, one met");
+    CHECK(same(r.collisions[0].other, coin) && r.collisions[0].response == JOSTLE_RESPONSE_CROSS,
+          "the coin, crossed");
+
+    // A one-way platform ({0, -1}: its top) stops it only from above.
+    jostle_body_def platform = jostle_default_body_def();
+    platform.type = JOSTLE_BODY_STATIC;
+    platform.x = 10.5f;
+    platform.y = -5;
+    platform.hw = 5;
+    platform.hh = 0.5f;
+    platform.one_way = (jostle_vec2){0, -1};
+    jostle_body_create(world, &platform);
+    CHECK(jostle_body_move(world, item, (jostle_vec2){0, -10}, NULL, NULL, &r) &&
+              at(r.centre, 10.5f, -9.5f) && r.count == 0,
+          "up through it");
+    CHECK(jostle_body_move(world, item, (jostle_vec2){0, 10}, NULL, NULL, &r) &&
+              at(r.centre, 10.5f, -6) && r.count == 1,
+          "down onto its top");
+    CHECK(jostle_world_destroy(world), "destroy");
+    CHECK_NO_ERROR();
+}
+
+/// What a filter tries: reading is allowed, changing the world is refused.
+typedef struct meddling_filter {
+    jostle_world* world;
+    jostle_body_id item;
+    int found;   // bodies a query inside the filter found
+    int refused; // changes refused with the move's message
+} meddling_filter;
+
+static void count_refusal(meddling_filter* f, bool ok, const char* function) {
+    const char* m = jostle_last_error();
+    if (!ok && strncmp(m, function, strlen(function)) == 0 &&
+        strstr(m, "called from a filter during jostle_body_move"))
+        ++f->refused;
+    jostle_clear_error();
+}
+
+static jostle_response meddle(jostle_body_id other, void* context) {
+    meddling_filter* f = (meddling_filter*)context;
+    jostle_body_id found[4];
+    f->found =
+        jostle_query_point(f->world, jostle_body_get_position(f->world, other), NULL, found, 4);
+    count_refusal(f, jostle_body_set_position(f->world, other, (jostle_vec2){100, 100}),
+                  "jostle_body_set_position");
+    count_refusal(f, jostle_body_destroy(f->world, other), "jostle_body_destroy");
+    jostle_body_def def = jostle_default_body_def();
+    def.hw = 1;
+    def.hh = 1;
+    count_refusal(f, !jostle_body_id_is_null(jostle_body_create(f->world, &def)),
+                  "jostle_body_create");
+    count_refusal(f, jostle_body_move(f->world, f->item, (jostle_vec2){1, 0}, NULL, NULL, NULL),
+                  "jostle_body_move");
+    count_refusal(f, jostle_world_step(f->world, kDt), "jostle_world_step");
+    count_refusal(f, jostle_world_destroy(f->world), "jostle_world_destroy");
+    return JOSTLE_RESPONSE_SLIDE;
+}
+
+/// Answers with a value that is not a jostle_response.
+static jostle_response nonsense(jostle_body_id other, void* context) {
+    (void)other;
+    (void)context;
+    return (jostle_response)9;
+}
+
+static void test_move_misuse(void) {
+    jostle_body_id item;
+    jostle_move_result r;
+    jostle_world* world = move_scene(&item);
+    jostle_body_id wall = rect(world, 3, 0, 1, 1, JOSTLE_BODY_STATIC);
+
+    // The filter may read the world, not change it.
+    meddling_filter f = {world, item, 0, 0};
+    CHECK(jostle_body_move(world, item, (jostle_vec2){10, 0}, meddle, &f, &r), "moved");
+    CHECK(f.found == 1, "a query from the filter finds the wall");
+    CHECK(f.refused == 6, "set_position, destroy, create, move, step and destroy refused");
+    CHECK(at(r.centre, 2.5f, 0.5f) && r.count == 1 && same(r.collisions[0].other, wall),
+          "the move as if the filter had done nothing");
+    CHECK(at(jostle_body_get_position(world, wall), 3.5f, 0.5f), "the wall stays");
+    CHECK(jostle_world_body_count(world) == 2, "nothing created or destroyed");
+    CHECK(jostle_body_set_position(world, item, (jostle_vec2){0.5f, 0.5f}), "allowed again");
+    CHECK_NO_ERROR();
+
+    // A filter's answer out of the enum: nothing moves.
+    r.count = 5;
+    CHECK(!jostle_body_move(world, item, (jostle_vec2){10, 0}, nonsense, NULL, &r), "refused");
+    CHECK_ERROR("jostle_body_move", "got 9");
+    CHECK(at(r.centre, 0.5f, 0.5f) && r.count == 0 && r.collisions == NULL, "it did not move");
+    CHECK(at(jostle_body_get_position(world, item), 0.5f, 0.5f), "it is where it was");
+
+    // Deltas: not finite, out of range.
+    CHECK(!jostle_body_move(world, item, (jostle_vec2){NAN, 0}, NULL, NULL, &r), "NaN");
+    CHECK_ERROR("jostle_body_move", "delta must be finite");
+    CHECK(at(r.centre, 0.5f, 0.5f) && r.count == 0, "where it was");
+    CHECK(!jostle_body_move(world, item, (jostle_vec2){2e9f, 0}, NULL, NULL, NULL), "too far");
+    CHECK_ERROR("jostle_body_move", "1e9");
+
+    // Stale and null handles, no world.
+    CHECK(jostle_body_destroy(world, wall), "destroy");
+    CHECK(!jostle_body_move(world, wall, (jostle_vec2){1, 0}, NULL, NULL, &r), "stale");
+    CHECK_ERROR("jostle_body_move", "stale");
+    CHECK(at(r.centre, 0, 0) && r.count == 0, "zero: there is no such body");
+    CHECK(!jostle_body_move(NULL, item, (jostle_vec2){1, 0}, NULL, NULL, &r), "no world");
+    CHECK_ERROR("jostle_body_move", "world is NULL");
     CHECK(jostle_world_destroy(world), "destroy");
     CHECK_NO_ERROR();
 }
@@ -640,11 +1203,6 @@ static jostle_world* landing_scene(callback_state* s, jostle_body_id* box) {
     return world;
 }
 
-static void run(jostle_world* world, int steps) {
-    for (int i = 0; i < steps; ++i)
-        CHECK(jostle_world_step(world, kDt), "step");
-}
-
 static float lowest_vy_after(jostle_world* world, jostle_body_id box, int steps) {
     float lowest = 0;
     for (int i = 0; i < steps; ++i) {
@@ -777,6 +1335,62 @@ static void test_fixed_step(void) {
     CHECK(jostle_fixed_step_alpha(NULL) == 0, "no clock");
     CHECK_ERROR("jostle_fixed_step_alpha", "clock is NULL");
     jostle_fixed_step_destroy(NULL);
+    jostle_fixed_step_destroy(clock);
+    CHECK(jostle_world_destroy(world), "destroy");
+    CHECK_NO_ERROR();
+}
+
+/// Steps of 0.25 s; a box moving at 4 units/s covers 1 unit a step, so its positions after
+/// each step are whole numbers and where it is drawn between them is alpha.
+static void test_draw_positions(void) {
+    jostle_world* world = make_world(0);
+    jostle_body_def def = jostle_default_body_def();
+    def.hw = 1;
+    def.hh = 1;
+    def.vx = 4;
+    jostle_body_id box = jostle_body_create(world, &def);
+    jostle_fixed_step* clock = jostle_fixed_step_create(0.25f, 8);
+    jostle_vec2 p = jostle_fixed_step_draw_position(clock, world, box);
+    CHECK(p.x == 0 && p.y == 0, "nothing stepped yet: where it is");
+    CHECK(jostle_fixed_step_update(clock, world, 0.375f) == 1, "1.5 steps: at 1, alpha 0.5");
+    CHECK_NEAR(jostle_fixed_step_draw_position(clock, world, box).x, 0.5, 1e-6);
+    CHECK(jostle_fixed_step_update(clock, world, 0.5f) == 2, "2 steps: at 3, alpha 0.5");
+    CHECK_NEAR(jostle_fixed_step_draw_position(clock, world, box).x, 2.5, 1e-6);
+    CHECK(jostle_fixed_step_update(clock, world, 0.125f) == 1, "0.125 + 0.125: at 4, alpha 0");
+    CHECK_NEAR(jostle_fixed_step_draw_position(clock, world, box).x, 3.0, 1e-6);
+    CHECK(jostle_fixed_step_update(clock, world, 0.125f) == 0, "no step: alpha 0.5");
+    CHECK_NEAR(jostle_fixed_step_draw_position(clock, world, box).x, 3.5, 1e-6);
+
+    // A body made since the last step is drawn where it is; all at once, in list order.
+    def.x = 7;
+    jostle_body_id late = jostle_body_create(world, &def);
+    p = jostle_fixed_step_draw_position(clock, world, late);
+    CHECK(p.x == 7 && p.y == 0, "where it is");
+    jostle_vec2 all[3] = {{-1, -1}, {-1, -1}, {-1, -1}};
+    CHECK(jostle_fixed_step_read_draw_positions(clock, world, all, 3) == 2, "two bodies");
+    CHECK_NEAR(all[0].x, 3.5, 1e-6);
+    CHECK(all[1].x == 7 && all[1].y == 0 && all[2].x == -1, "the new one, nothing beyond");
+    CHECK(jostle_fixed_step_read_draw_positions(clock, world, all, 1) == 2, "the full count");
+    CHECK(jostle_fixed_step_read_draw_positions(clock, world, NULL, 0) == 2, "the count alone");
+
+    // A slot reused by another body is not mistaken for the old one.
+    CHECK(jostle_body_destroy(world, box), "destroyed");
+    def.x = -5;
+    def.vx = 0;
+    jostle_body_id reused = jostle_body_create(world, &def);
+    p = jostle_fixed_step_draw_position(clock, world, reused);
+    CHECK(p.x == -5 && p.y == 0, "the new body where it is");
+    CHECK_NO_ERROR();
+
+    p = jostle_fixed_step_draw_position(clock, world, box);
+    CHECK(p.x == 0 && p.y == 0, "zero");
+    CHECK_ERROR("jostle_fixed_step_draw_position", "stale");
+    CHECK(jostle_fixed_step_draw_position(NULL, world, reused).x == 0, "no clock");
+    CHECK_ERROR("jostle_fixed_step_draw_position", "clock is NULL");
+    CHECK(jostle_fixed_step_read_draw_positions(clock, NULL, all, 3) == 0, "no world");
+    CHECK_ERROR("jostle_fixed_step_read_draw_positions", "world is NULL");
+    CHECK(jostle_fixed_step_read_draw_positions(clock, world, NULL, 3) == 0, "no buffer");
+    CHECK_ERROR("jostle_fixed_step_read_draw_positions", "out is NULL but capacity is 3");
     jostle_fixed_step_destroy(clock);
     CHECK(jostle_world_destroy(world), "destroy");
     CHECK_NO_ERROR();
@@ -1009,10 +1623,22 @@ int main(void) {
     test_crush_event();
     test_world_settings();
     test_body_properties();
+    test_character_def();
+    test_walking();
+    test_ground_of_a_lift();
+    test_wall_friction();
+    test_forces();
+    test_contacts_now();
+    test_contact_point();
+    test_read_positions();
     test_queries();
+    test_move_responses();
+    test_move_filters();
+    test_move_misuse();
     test_tile_map();
     test_pre_solve();
     test_fixed_step();
+    test_draw_positions();
     test_misuse();
     printf("test_c_api: all checks passed\n");
     return 0;
