@@ -97,15 +97,17 @@ int pushEvents(lua_State* L, const char* where, Count count, Fill fill) {
     const int env = lua_gettop(L);
     lua_createtable(L, static_cast<int>(count(handle.data->world)), 0);
     for (std::size_t i = 0; handle.data && i < count(handle.data->world); ++i) {
-        lua_createtable(L, 0, 5);
+        lua_createtable(L, 0, 7);
         fill(env, &handle, i);
         rawSetInteger(L, -2, static_cast<std::int64_t>(i) + 1);
     }
     return 1;
 }
 
-/// {a = body, b = body, nx = , ny = , approachSpeed = }
-template <class Get> int pushContactEvents(lua_State* L, const char* where, Get get) {
+/// {a = body, b = body, nx = , ny = , approachSpeed = }, and x, y where they touch for a
+/// begin (`withPoint`).
+template <class Get>
+int pushContactEvents(lua_State* L, const char* where, bool withPoint, Get get) {
     return pushEvents(
         L, where, [&](const World& w) { return get(w).size(); },
         [&](int env, WorldHandle* handle, std::size_t i) {
@@ -117,6 +119,10 @@ template <class Get> int pushContactEvents(lua_State* L, const char* where, Get 
             setNumber(L, "nx", e.normal.x);
             setNumber(L, "ny", e.normal.y);
             setNumber(L, "approachSpeed", e.approachSpeed);
+            if (withPoint) {
+                setNumber(L, "x", e.point.x);
+                setNumber(L, "y", e.point.y);
+            }
         });
 }
 
@@ -134,12 +140,12 @@ template <class Get> int pushSensorEvents(lua_State* L, const char* where, Get g
 }
 
 int worldGetContactBegins(lua_State* L) {
-    return pushContactEvents(L, "World:getContactBegins",
+    return pushContactEvents(L, "World:getContactBegins", true,
                              [](const World& w) { return w.contactBegins(); });
 }
 
 int worldGetContactEnds(lua_State* L) {
-    return pushContactEvents(L, "World:getContactEnds",
+    return pushContactEvents(L, "World:getContactEnds", false,
                              [](const World& w) { return w.contactEnds(); });
 }
 
