@@ -28,6 +28,20 @@
 
 namespace jostle::lua {
 
+/// A field of a table of numbers, for setNumbers.
+struct NamedNumber {
+    const char* name;
+    float value;
+};
+
+/// Sets each field to its number in the table on top of the stack.
+inline void setNumbers(lua_State* L, std::initializer_list<NamedNumber> fields) {
+    for (const NamedNumber& field : fields) {
+        lua_pushnumber(L, static_cast<lua_Number>(field.value));
+        lua_setfield(L, -2, field.name);
+    }
+}
+
 // Metatables in the registry, by the names luaL_newmetatable gives them.
 inline constexpr const char* kWorldType = "jostle.World";
 inline constexpr const char* kBodyType = "jostle.Body";
@@ -98,6 +112,12 @@ struct TileMapHandle {
 /// filter's) when the Lua callback raised an error; the error value waits on top of the
 /// Lua stack (events.cpp).
 struct CallbackFailed {};
+
+/// What a trampoline does: calls the C function at `runner` with `data` (a light
+/// userdata), the World userdata at `world` and the Lua callback at `callback`, protected,
+/// leaving its one result on top. If it raised, throws CallbackFailed with the error value
+/// on top instead. Pushes nothing that allocates before the call, so raises nothing itself.
+void callBack(lua_State* L, int runner, void* data, int world, int callback);
 
 /// guard() for C++ work that calls Lua back through a trampoline that throws
 /// CallbackFailed. `after` runs once the work is done, however it ended (it clears the
@@ -171,6 +191,9 @@ void pushBody(lua_State* L, int env, WorldHandle* world, BodyId id);
 /// The body at `index`, live and of `world`, as an argument called `name`.
 BodyId checkBodyArgument(lua_State* L, int index, const WorldData& world, const char* where,
                          const char* name);
+/// Pushes a table {[bodyField] = body, numbers...}: a ray's hit, a contact.
+void pushBodyRecord(lua_State* L, int env, WorldHandle* world, const char* bodyField, BodyId id,
+                    std::initializer_list<NamedNumber> numbers);
 void registerBodyMethods(lua_State* L, int worldMethods);
 void openBody(lua_State* L);
 
@@ -199,17 +222,16 @@ void openFixedStep(lua_State* L);
 
 // --- Shared helpers ----------------------------------------------------------------------
 
-/// A field of a table of numbers, for setNumbers.
-struct NamedNumber {
-    const char* name;
-    float value;
-};
-
-/// Sets each field to its number in the table on top of the stack.
-inline void setNumbers(lua_State* L, std::initializer_list<NamedNumber> fields) {
-    for (const NamedNumber& field : fields) {
-        lua_pushnumber(L, static_cast<lua_Number>(field.value));
-        lua_setfield(L, -2, field.name);
+/// Pushes an array of one value per element of `elements(data)`, a vector of the world's
+/// data: `push(element)` pushes each. The vector is read afresh at each entry, and not at
+/// all once the world is gone: creating tables and userdata may run a finalizer, Lua code
+/// that might use this very world.
+template <class Elements, class Push>
+void pushArray(lua_State* L, WorldHandle& handle, Elements elements, Push push) {
+    lua_createtable(L, static_cast<int>(elements(*handle.data).size()), 0);
+    for (std::size_t i = 0; handle.data && i < elements(*handle.data).size(); ++i) {
+        push(elements(*handle.data)[i]);
+        rawSetInteger(L, -2, static_cast<std::int64_t>(i) + 1);
     }
 }
 

@@ -406,20 +406,16 @@ int bodyGetContacts(lua_State* L) {
     guard(L, where, [&] { worldOf(body).contacts(body.id, handle->data->contacts); });
     pushUserValue(L, 1);
     const int env = lua_gettop(L);
-    lua_createtable(L, static_cast<int>(handle->data->contacts.size()), 0);
-    // Entry by entry, reading the world each time (a finalizer may run: see getBodies).
-    for (std::size_t i = 0; handle->data && i < handle->data->contacts.size(); ++i) {
-        const ContactInfo contact = handle->data->contacts[i];
-        lua_createtable(L, 0, 6);
-        pushBody(L, env, handle, contact.other);
-        lua_setfield(L, -2, "other");
-        setNumbers(L, {{"nx", contact.normal.x},
-                       {"ny", contact.normal.y},
-                       {"x", contact.point.x},
-                       {"y", contact.point.y},
-                       {"impulse", contact.impulse}});
-        rawSetInteger(L, -2, static_cast<std::int64_t>(i) + 1);
-    }
+    pushArray(
+        L, *handle, [](const WorldData& w) -> const auto& { return w.contacts; },
+        [&](const ContactInfo& contact) {
+            pushBodyRecord(L, env, handle, "other", contact.other,
+                           {{"nx", contact.normal.x},
+                            {"ny", contact.normal.y},
+                            {"x", contact.point.x},
+                            {"y", contact.point.y},
+                            {"impulse", contact.impulse}});
+        });
     return 1;
 }
 
@@ -632,6 +628,14 @@ constexpr luaL_Reg kWorldBodyMethods[] = {
 void pushBody(lua_State* L, int env, WorldHandle* world, BodyId id) {
     pushHandle<BodyHandle>(L, env, kSlotBodies, 'b', kBodyType, world, id,
                            world->data->world.isValid(id));
+}
+
+void pushBodyRecord(lua_State* L, int env, WorldHandle* world, const char* bodyField, BodyId id,
+                    std::initializer_list<NamedNumber> numbers) {
+    lua_createtable(L, 0, static_cast<int>(numbers.size()) + 1);
+    pushBody(L, env, world, id);
+    lua_setfield(L, -2, bodyField);
+    setNumbers(L, numbers);
 }
 
 BodyId checkBodyArgument(lua_State* L, int index, const WorldData& world, const char* where,

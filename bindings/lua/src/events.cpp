@@ -74,12 +74,7 @@ int runPreSolve(lua_State* L) {
 /// The C++ pre-solve callback: runs the Lua one through runPreSolve, protected.
 bool trampoline(WorldData& world, Collision& collision) {
     lua_State* L = world.stepState;
-    lua_pushvalue(L, world.runnerIndex);
-    lua_pushlightuserdata(L, &collision);
-    lua_pushvalue(L, world.worldIndex);
-    lua_pushvalue(L, world.callbackIndex);
-    if (lua_pcall(L, 3, 1, 0) != 0)
-        throw CallbackFailed{}; // the error value stays on top for world:step to raise
+    callBack(L, world.runnerIndex, &collision, world.worldIndex, world.callbackIndex);
     const bool keep = lua_toboolean(L, -1) != 0;
     lua_pop(L, 1);
     return keep;
@@ -209,6 +204,15 @@ constexpr luaL_Reg kEventMethods[] = {
 };
 
 } // namespace
+
+void callBack(lua_State* L, int runner, void* data, int world, int callback) {
+    lua_pushvalue(L, runner);
+    lua_pushlightuserdata(L, data);
+    lua_pushvalue(L, world);
+    lua_pushvalue(L, callback);
+    if (lua_pcall(L, 3, 1, 0) != 0)
+        throw CallbackFailed{}; // the error value stays on top, for the caller to raise
+}
 
 void preparePreSolve(lua_State* L, int worldIndex, WorldData& world) {
     worldIndex = absIndex(L, worldIndex);

@@ -166,19 +166,16 @@ int worldRayCastAll(lua_State* L) {
 
     pushUserValue(L, 1);
     const int env = lua_gettop(L);
-    lua_createtable(L, static_cast<int>(world.rayHits.size()), 0);
-    for (std::size_t i = 0; handle.data && i < handle.data->rayHits.size(); ++i) {
-        const RayHit hit = handle.data->rayHits[i];
-        lua_createtable(L, 0, 6);
-        pushBody(L, env, &handle, hit.body);
-        lua_setfield(L, -2, "body");
-        setNumbers(L, {{"x", hit.point.x},
-                       {"y", hit.point.y},
-                       {"nx", hit.normal.x},
-                       {"ny", hit.normal.y},
-                       {"fraction", hit.fraction}});
-        rawSetInteger(L, -2, static_cast<std::int64_t>(i) + 1);
-    }
+    pushArray(
+        L, handle, [](const WorldData& w) -> const auto& { return w.rayHits; },
+        [&](const RayHit& hit) {
+            pushBodyRecord(L, env, &handle, "body", hit.body,
+                           {{"x", hit.point.x},
+                            {"y", hit.point.y},
+                            {"nx", hit.normal.x},
+                            {"ny", hit.normal.y},
+                            {"fraction", hit.fraction}});
+        });
     return 1;
 }
 
@@ -196,6 +193,19 @@ int worldBoxCast(lua_State* L) {
         [](const BoxCastHit& hit) { return hit.centre; });
 }
 
+/// Pushes x, y (`end`) and the array of what a move met (pushArray's), for moveAndSlide
+/// and move: `push(env, element)` pushes each, `env` the world's user value table.
+template <class Elements, class Push>
+int pushMoved(lua_State* L, WorldHandle& handle, Vec2 end, Elements elements, Push push) {
+    lua_pushnumber(L, static_cast<lua_Number>(end.x));
+    lua_pushnumber(L, static_cast<lua_Number>(end.y));
+    pushUserValue(L, 1);
+    const int env = lua_gettop(L);
+    pushArray(L, handle, elements, [&](const auto& element) { push(env, element); });
+    lua_remove(L, env);
+    return 3;
+}
+
 /// x, y, hits: where the box ends up, and an array of {body = , nx = , ny = }.
 int worldMoveAndSlide(lua_State* L) {
     const char* where = "World:moveAndSlide";
@@ -210,25 +220,13 @@ int worldMoveAndSlide(lua_State* L) {
         world.moved.hits.swap(result.hits);
     });
 
-    const Vec2 end = world.moved.centre;
-    lua_pushnumber(L, static_cast<lua_Number>(end.x));
-    lua_pushnumber(L, static_cast<lua_Number>(end.y));
-    pushUserValue(L, 1);
-    const int env = lua_gettop(L);
-    lua_createtable(L, static_cast<int>(world.moved.hits.size()), 0);
-    for (std::size_t i = 0; handle.data && i < handle.data->moved.hits.size(); ++i) {
-        const MoveHit hit = handle.data->moved.hits[i];
-        lua_createtable(L, 0, 3);
-        pushBody(L, env, &handle, hit.body);
-        lua_setfield(L, -2, "body");
-        lua_pushnumber(L, static_cast<lua_Number>(hit.normal.x));
-        lua_setfield(L, -2, "nx");
-        lua_pushnumber(L, static_cast<lua_Number>(hit.normal.y));
-        lua_setfield(L, -2, "ny");
-        rawSetInteger(L, -2, static_cast<std::int64_t>(i) + 1);
-    }
-    lua_remove(L, env);
-    return 3;
+    return pushMoved(
+        L, handle, world.moved.centre,
+        [](const WorldData& w) -> const auto& { return w.moved.hits; },
+        [&](int env, const MoveHit& hit) {
+            pushBodyRecord(L, env, &handle, "body", hit.body,
+                           {{"nx", hit.normal.x}, {"ny", hit.normal.y}});
+        });
 }
 
 // --- world:move ---------------------------------------------------------------------------
@@ -281,12 +279,7 @@ struct FilterSlots {
 
 Response filterTrampoline(const FilterSlots& slots, BodyId other) {
     lua_State* L = slots.L;
-    lua_pushvalue(L, slots.runner);
-    lua_pushlightuserdata(L, &other);
-    lua_pushvalue(L, slots.world);
-    lua_pushvalue(L, slots.filter);
-    if (lua_pcall(L, 3, 1, 0) != 0)
-        throw CallbackFailed{}; // the error value stays on top for world:move to raise
+    callBack(L, slots.runner, &other, slots.world, slots.filter);
     const auto response = static_cast<Response>(lua_tointeger(L, -1));
     lua_pop(L, 1);
     return response;
@@ -350,19 +343,11 @@ int worldMove(lua_State* L) {
         },
         [&] { world.moving = false; });
 
-    const Vec2 end = world.outcome.centre;
-    lua_pushnumber(L, static_cast<lua_Number>(end.x));
-    lua_pushnumber(L, static_cast<lua_Number>(end.y));
-    pushUserValue(L, 1);
-    const int env = lua_gettop(L);
-    lua_createtable(L, static_cast<int>(world.outcome.collisions.size()), 0);
-    std::size_t count = 0;
-    for (; handle.data && count < handle.data->outcome.collisions.size(); ++count) {
-        pushCollision(L, env, &handle, 2, handle.data->outcome.collisions[count]);
-        rawSetInteger(L, -2, static_cast<std::int64_t>(count) + 1);
-    }
-    lua_remove(L, env);
-    pushWhole(L, static_cast<std::int64_t>(count));
+    pushMoved(
+        L, handle, world.outcome.centre,
+        [](const WorldData& w) -> const auto& { return w.outcome.collisions; },
+        [&](int env, const MoveCollision& c) { pushCollision(L, env, &handle, 2, c); });
+    pushWhole(L, static_cast<std::int64_t>(rawLength(L, -1)));
     return 4;
 }
 

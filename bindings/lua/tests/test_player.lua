@@ -173,6 +173,17 @@ local function onGround(player, what)
   return ground == what
 end
 
+-- A check for every frame of a ride: the rider's place on the lift is where it was when
+-- the check was made (x within 1e-3, y within 0.2), and it stands on the lift.
+local function riding(rider, lift, what)
+  local ox, oy = px(rider) - px(lift), py(rider) - py(lift)
+  return function(i)
+    t.near(px(rider) - px(lift), ox, 1e-3, "x on " .. what .. ", frame " .. i)
+    t.near(py(rider) - py(lift), oy, 0.2, "y on " .. what .. ", frame " .. i)
+    t.truthy(onGround(rider, lift), "on " .. what .. ", frame " .. i)
+  end
+end
+
 local tests = {}
 local function test(name, fn) tests[#tests + 1] = {name, fn} end
 
@@ -269,19 +280,14 @@ test("a character runs the level", function()
     return px(player) - px(lift), py(player) - py(lift)
   end
   run.stage("settle on the lift", {frames = 1})
-  local ox, oy = offset()
-  t.near(oy, -6 - HH, 0.05, "on the lift's top")
-  local function ride(i)
-    local x, y = offset()
-    t.near(x, ox, 1e-3, "x on the lift, frame " .. i)
-    t.near(y, oy, 0.2, "y on the lift, frame " .. i)
-    t.truthy(onGround(player, lift), "on the lift, frame " .. i)
-  end
+  t.near(select(2, offset()), -6 - HH, 0.05, "on the lift's top")
+  local ride = riding(player, lift, "the lift")
+  local rideStart = offset()
   run.stage("ride right", {frames = 120, each = ride, done = function()
     return select(1, lift:getVelocity()) < 0
   end})
   t.near(px(lift), LIFT_RIGHT, 1.01, "the lift reached the right end")
-  t.near(px(player), px(lift) + ox, 1e-3, "and carried the player there")
+  t.near(px(player) - px(lift), rideStart, 1e-3, "and carried the player there")
   run.stage("ride left", {frames = 20, each = ride})
   t.equal(select(1, lift:getVelocity()), -60, "the lift moves left")
 
@@ -292,7 +298,7 @@ test("a character runs the level", function()
     t.near(offset() - before, SPEED * dt * i, 1e-3, "walked along the lift, frame " .. i)
     t.near((player:getVelocity()), SPEED - 60, 1e-3, "its world velocity, frame " .. i)
   end})
-  ox, oy = offset()
+  ride = riding(player, lift, "the lift")
   run.stage("ride to the right end again", {frames = 400, each = ride, done = function()
     return px(lift) >= LIFT_RIGHT - 1e-3
   end})
@@ -304,16 +310,7 @@ test("a character runs the level", function()
     return onGround(player, up) and px(player) >= px(up)
   end})
   run.stage("settle on the vertical lift", {frames = 1})
-  local function upOffset()
-    return px(player) - px(up), py(player) - py(up)
-  end
-  ox, oy = upOffset()
-  local function rideUp(i)
-    local x, y = upOffset()
-    t.near(x, ox, 1e-3, "x on the vertical lift, frame " .. i)
-    t.near(y, oy, 0.2, "y on the vertical lift, frame " .. i)
-    t.truthy(onGround(player, up), "on the vertical lift, frame " .. i)
-  end
+  local rideUp = riding(player, up, "the vertical lift")
   -- Up 96 (to the shelf's top), a wait, down 96, up again.
   run.stage("ride up", {frames = 120, each = rideUp, done = function()
     return select(2, up:getVelocity()) == 0
