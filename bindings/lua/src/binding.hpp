@@ -21,10 +21,26 @@
 #include <jostle/tilemap.hpp>
 #include <jostle/world.hpp>
 
+#include <initializer_list>
 #include <new>
+#include <span>
 #include <vector>
 
 namespace jostle::lua {
+
+/// A field of a table of numbers, for setNumbers.
+struct NamedNumber {
+    const char* name;
+    float value;
+};
+
+/// Sets each field to its number in the table on top of the stack.
+inline void setNumbers(lua_State* L, std::initializer_list<NamedNumber> fields) {
+    for (const NamedNumber& field : fields) {
+        lua_pushnumber(L, static_cast<lua_Number>(field.value));
+        lua_setfield(L, -2, field.name);
+    }
+}
 
 // Metatables in the registry, by the names luaL_newmetatable gives them.
 inline constexpr const char* kWorldType = "jostle.World";
@@ -54,6 +70,9 @@ struct WorldData {
     // While world:step() runs: the state it was called in, and the stack slots holding
     // what the pre-solve callback needs (events.cpp).
     bool stepping = false;
+    /// While world:move() runs, and so while its filter does: the world must not change
+    /// under the core's sweep (requireChangeable).
+    bool moving = false;
     lua_State* stepState = nullptr;
     int worldIndex = 0;    ///< the World userdata
     int runnerIndex = 0;   ///< the C function that calls the Lua callback, protected
@@ -65,6 +84,14 @@ struct WorldData {
     std::vector<BodyId> ids;
     std::vector<RayHit> rayHits;
     MoveResult moved;
+    MoveOutcome outcome;
+    std::vector<ContactInfo> contacts;
+    /// Positions or velocities on their way into a Lua table (pushVec2Array).
+    std::vector<Vec2> vectors;
+    /// What world:getPositionsBuffer and getVelocitiesBuffer hand to LuaJIT's FFI: kept
+    /// until the next call of the same method, or until the world goes.
+    std::vector<Vec2> positionsBuffer;
+    std::vector<Vec2> velocitiesBuffer;
 };
 
 struct WorldHandle {
@@ -81,15 +108,75 @@ struct TileMapHandle {
     TileMapId id;
 };
 
-/// Thrown through the core's step by the pre-solve trampoline when the Lua callback
-/// raised an error; the error value waits on top of the Lua stack (events.cpp).
+/// Thrown through the core's step by the pre-solve trampoline (and through move by the
+/// filter's) when the Lua callback raised an error; the error value waits on top of the
+/// Lua stack (events.cpp).
 struct CallbackFailed {};
+
+/// What a trampoline does: calls the C function at `runner` with `data` (a light
+/// userdata), the World userdata at `world` and the Lua callback at `callback`, protected,
+/// leaving its one result on top. If it raised, throws CallbackFailed with the error value
+/// on top instead. Pushes nothing that allocates before the call, so raises nothing itself.
+void callBack(lua_State* L, int runner, void* data, int world, int callback);
+
+/// guard() for C++ work that calls Lua back through a trampoline that throws
+/// CallbackFailed. `after` runs once the work is done, however it ended (it clears the
+/// flags set for the work, and must not raise); then the callback's error is raised as
+/// it was (a string keeps its position, a table stays the same table), or the C++ one as
+/// guard raises it.
+template <class Work, class After>
+void guardCallbacks(lua_State* L, const char* where, Work&& work, After&& after) {
+    char message[kMessageSize];
+    bool callbackFailed = false;
+    const bool ran = attempt(message, [&] {
+        try {
+            work();
+        } catch (const CallbackFailed&) {
+            callbackFailed = true;
+            throw;
+        }
+    });
+    after();
+    if (callbackFailed)
+        lua_error(L); // the callback's own error value, left on top by the trampoline
+    if (!ran)
+        raise(L, where, "%s", message);
+}
+
+/// Raises "<where>: called from World:move's filter ..." while a move of `world` runs: its
+/// filter may read the world but not change it. Every method that changes a world, its
+/// bodies or its maps calls it.
+void requireChangeable(lua_State* L, const WorldData& world, const char* where);
 
 // --- world.cpp -------------------------------------------------------------------------
 
 /// The live world whose userdata is at `index` (self of a World method), or a Lua error.
 WorldData& checkWorld(lua_State* L, int index, const char* where);
 WorldHandle& checkWorldHandle(lua_State* L, int index, const char* where);
+/// checkWorld, for a method that changes the world: requireChangeable too.
+WorldData& checkWorldToChange(lua_State* L, int index, const char* where);
+/// Pushes world.vectors as a flat array {x1, y1, x2, y2, ...}: into the table at
+/// `tableIndex` if it is one (its entries beyond the new ones cleared), else a new one.
+/// `handle` is the World userdata's contents (read afresh at each entry).
+void pushVec2Array(lua_State* L, WorldHandle& handle, int tableIndex);
+/// The table argument at `index` that a bulk read fills: its absolute index, or 0 for
+/// none or nil; a Lua error for anything else.
+int optTableToFill(lua_State* L, int index, const char* where);
+
+/// A bulk read of one vector per body, in the order of World::bodies(): `read(world,
+/// out)` fills `out` (as long as the body count) under guard, then the result is pushed
+/// as pushVec2Array pushes it, into the table argument at `tableArg` if one is given.
+template <class Read>
+int pushBulkRead(lua_State* L, WorldHandle& handle, int tableArg, const char* where, Read read) {
+    const int table = optTableToFill(L, tableArg, where);
+    WorldData& world = *handle.data;
+    guard(L, where, [&] {
+        world.vectors.resize(world.world.bodyCount());
+        read(world.world, std::span<Vec2>(world.vectors));
+    });
+    pushVec2Array(L, handle, table);
+    return 1;
+}
 /// world:step(dt) for the World userdata at `index`; raises what the step or a callback
 /// raised.
 void stepWorld(lua_State* L, int index, float dt, const char* where);
@@ -104,6 +191,9 @@ void pushBody(lua_State* L, int env, WorldHandle* world, BodyId id);
 /// The body at `index`, live and of `world`, as an argument called `name`.
 BodyId checkBodyArgument(lua_State* L, int index, const WorldData& world, const char* where,
                          const char* name);
+/// Pushes a table {[bodyField] = body, numbers...}: a ray's hit, a contact.
+void pushBodyRecord(lua_State* L, int env, WorldHandle* world, const char* bodyField, BodyId id,
+                    std::initializer_list<NamedNumber> numbers);
 void registerBodyMethods(lua_State* L, int worldMethods);
 void openBody(lua_State* L);
 
@@ -131,6 +221,19 @@ int newFixedStep(lua_State* L);
 void openFixedStep(lua_State* L);
 
 // --- Shared helpers ----------------------------------------------------------------------
+
+/// Pushes an array of one value per element of `elements(data)`, a vector of the world's
+/// data: `push(element)` pushes each. The vector is read afresh at each entry, and not at
+/// all once the world is gone: creating tables and userdata may run a finalizer, Lua code
+/// that might use this very world.
+template <class Elements, class Push>
+void pushArray(lua_State* L, WorldHandle& handle, Elements elements, Push push) {
+    lua_createtable(L, static_cast<int>(elements(*handle.data).size()), 0);
+    for (std::size_t i = 0; handle.data && i < elements(*handle.data).size(); ++i) {
+        push(elements(*handle.data)[i]);
+        rawSetInteger(L, -2, static_cast<std::int64_t>(i) + 1);
+    }
+}
 
 /// Pushes the key under which the userdata of (slot, generation) is kept once retired
 /// (see pushHandle): a string, "b12:3" for a body; `tag` tells bodies and maps apart.

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdio>
 #include <iterator>
+#include <optional>
 #include <type_traits>
 #include <variant>
 
@@ -54,6 +55,7 @@ template <class T, class Read> T read(lua_State* L, const char* where, Read read
 /// Runs a setter on the body that is self, or raises.
 template <class Change>
 void change(lua_State* L, const char* where, const BodyHandle& body, Change change) {
+    requireChangeable(L, *body.world->data, where);
     guard(L, where, [&] { change(worldOf(body), body.id); });
 }
 
@@ -193,6 +195,7 @@ void storeUserData(lua_State* L, int env, BodyId id, int valueIndex) {
 int worldNewBody(lua_State* L) {
     const char* where = "World:newBody";
     WorldHandle& handle = checkWorldHandle(L, 1, where);
+    requireChangeable(L, *handle.data, where);
     const BodyDef def = readBodyDef(L, 2, where);
     BodyId id;
     guard(L, where, [&] { id = handle.data->world.createBody(def); });
@@ -211,6 +214,7 @@ int worldNewBody(lua_State* L) {
 int bodyDestroy(lua_State* L) {
     const char* where = "Body:destroy";
     const BodyHandle& body = checkBody(L, 1, where);
+    requireChangeable(L, *body.world->data, where); // before its user data goes
     pushUserValue(L, 1);
     lua_pushnil(L);
     storeUserData(L, -2, body.id, -1);
@@ -375,6 +379,75 @@ int bodyGetTouching(lua_State* L) {
     return 1;
 }
 
+/// ground, nx, ny, vx, vy: what the body stood on at the end of the last step, the
+/// ground's push (its normal) and its velocity; nil in the air.
+int bodyGetGround(lua_State* L) {
+    const char* where = "Body:getGround";
+    const BodyHandle& body = checkBody(L, 1, where);
+    std::optional<Ground> ground;
+    guard(L, where, [&] { ground = worldOf(body).ground(body.id); });
+    if (!ground) {
+        lua_pushnil(L);
+        return 1;
+    }
+    pushUserValue(L, 1);
+    pushBody(L, -1, body.world, ground->body);
+    lua_remove(L, -2);
+    pushVec2(L, ground->normal);
+    return 1 + 2 + pushVec2(L, ground->velocity);
+}
+
+/// An array of {other = , nx = , ny = , x = , y = , impulse = }: the bodies it touched at
+/// the end of the last step.
+int bodyGetContacts(lua_State* L) {
+    const char* where = "Body:getContacts";
+    const BodyHandle& body = checkBody(L, 1, where);
+    WorldHandle* handle = body.world;
+    guard(L, where, [&] { worldOf(body).contacts(body.id, handle->data->contacts); });
+    pushUserValue(L, 1);
+    const int env = lua_gettop(L);
+    pushArray(
+        L, *handle, [](const WorldData& w) -> const auto& { return w.contacts; },
+        [&](const ContactInfo& contact) {
+            pushBodyRecord(L, env, handle, "other", contact.other,
+                           {{"nx", contact.normal.x},
+                            {"ny", contact.normal.y},
+                            {"x", contact.point.x},
+                            {"y", contact.point.y},
+                            {"impulse", contact.impulse}});
+        });
+    return 1;
+}
+
+/// True if the two touched at the end of the last step.
+int bodyIsTouching(lua_State* L) {
+    const char* where = "Body:isTouching";
+    const BodyHandle& body = checkBody(L, 1, where);
+    const BodyId other = checkBodyArgument(L, 2, *body.world->data, where, "other");
+    bool touching = false;
+    guard(L, where, [&] { touching = worldOf(body).isTouching(body.id, other); });
+    lua_pushboolean(L, touching);
+    return 1;
+}
+
+/// body:applyForce(fx, fy) and applyImpulse(ix, iy): a vector given to the body, at its
+/// centre.
+int applyVector(lua_State* L, const char* where, const char* xName, const char* yName,
+                void (World::*apply)(BodyId, Vec2)) {
+    const BodyHandle& body = checkBody(L, 1, where);
+    const Vec2 vector = checkVec2(L, 2, where, xName, yName);
+    change(L, where, body, [&](World& w, BodyId id) { (w.*apply)(id, vector); });
+    return 0;
+}
+
+int bodyApplyForce(lua_State* L) {
+    return applyVector(L, "Body:applyForce", "fx", "fy", &World::applyForce);
+}
+
+int bodyApplyImpulse(lua_State* L) {
+    return applyVector(L, "Body:applyImpulse", "ix", "iy", &World::applyImpulse);
+}
+
 /// The body as a definition table that world:newBody accepts: the same fields, userData
 /// (the value itself, not a copy) included.
 int bodyGetDef(lua_State* L) {
@@ -383,7 +456,7 @@ int bodyGetDef(lua_State* L) {
     // mass or density, never both, as newBody wants it.
     const properties::Property* leftOut =
         def.mass > 0.0f ? &properties::kDensity : &properties::kMass;
-    lua_createtable(L, 0, 18);
+    lua_createtable(L, 0, 20);
     for (const auto& field : properties::kBodyFields) {
         if (field.property == leftOut)
             continue;
@@ -444,10 +517,14 @@ constexpr Setting<float> kNumberSettings[] = {
     {"getGravityScale", "setGravityScale", {"scale"}, &World::gravityScale,
         &World::setGravityScale},
     {"getDamping", "setDamping", {"damping"}, &World::damping, &World::setDamping},
+    {"getWallFriction", "setWallFriction", {"friction"}, &World::wallFriction,
+        &World::setWallFriction},
+    {"getWalkSpeed", "setWalkSpeed", {"speed"}, &World::walkSpeed, &World::setWalkSpeed},
 };
 constexpr Setting<bool> kFlagSettings[] = {
     {"isBullet", "setBullet", {"bullet"}, &World::isBullet, &World::setBullet},
     {"isSensor", "setSensor", {"sensor"}, &World::isSensor, &World::setSensor},
+    {"isCharacter", "setCharacter", {"character"}, &World::isCharacter, &World::setCharacter},
 };
 constexpr Setting<std::uint32_t> kBitsSettings[] = {
     {"getCategory", "setCategory", {"category"}, &World::category, &World::setCategory},
@@ -531,6 +608,11 @@ constexpr luaL_Reg kBodyMethods[] = {
     {"dropThrough", bodyDropThrough},
     {"getSeparation", bodyGetSeparation},
     {"getTouching", bodyGetTouching},
+    {"getGround", bodyGetGround},
+    {"getContacts", bodyGetContacts},
+    {"isTouching", bodyIsTouching},
+    {"applyForce", bodyApplyForce},
+    {"applyImpulse", bodyApplyImpulse},
     {"getDef", bodyGetDef},
     {"getTileMap", bodyGetTileMap},
     {nullptr, nullptr},
@@ -546,6 +628,14 @@ constexpr luaL_Reg kWorldBodyMethods[] = {
 void pushBody(lua_State* L, int env, WorldHandle* world, BodyId id) {
     pushHandle<BodyHandle>(L, env, kSlotBodies, 'b', kBodyType, world, id,
                            world->data->world.isValid(id));
+}
+
+void pushBodyRecord(lua_State* L, int env, WorldHandle* world, const char* bodyField, BodyId id,
+                    std::initializer_list<NamedNumber> numbers) {
+    lua_createtable(L, 0, static_cast<int>(numbers.size()) + 1);
+    pushBody(L, env, world, id);
+    lua_setfield(L, -2, bodyField);
+    setNumbers(L, numbers);
 }
 
 BodyId checkBodyArgument(lua_State* L, int index, const WorldData& world, const char* where,
@@ -570,7 +660,7 @@ void registerBodyMethods(lua_State* L, int worldMethods) {
 
 void openBody(lua_State* L) {
     luaL_newmetatable(L, kBodyType);
-    lua_createtable(L, 0, 48);
+    lua_createtable(L, 0, 64);
     luaL_setfuncs(L, kBodyMethods, 0);
     addSettings(L, kVectorSettings);
     addSettings(L, kNumberSettings);

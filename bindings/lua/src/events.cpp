@@ -74,12 +74,7 @@ int runPreSolve(lua_State* L) {
 /// The C++ pre-solve callback: runs the Lua one through runPreSolve, protected.
 bool trampoline(WorldData& world, Collision& collision) {
     lua_State* L = world.stepState;
-    lua_pushvalue(L, world.runnerIndex);
-    lua_pushlightuserdata(L, &collision);
-    lua_pushvalue(L, world.worldIndex);
-    lua_pushvalue(L, world.callbackIndex);
-    if (lua_pcall(L, 3, 1, 0) != 0)
-        throw CallbackFailed{}; // the error value stays on top for world:step to raise
+    callBack(L, world.runnerIndex, &collision, world.worldIndex, world.callbackIndex);
     const bool keep = lua_toboolean(L, -1) != 0;
     lua_pop(L, 1);
     return keep;
@@ -97,15 +92,17 @@ int pushEvents(lua_State* L, const char* where, Count count, Fill fill) {
     const int env = lua_gettop(L);
     lua_createtable(L, static_cast<int>(count(handle.data->world)), 0);
     for (std::size_t i = 0; handle.data && i < count(handle.data->world); ++i) {
-        lua_createtable(L, 0, 5);
+        lua_createtable(L, 0, 7);
         fill(env, &handle, i);
         rawSetInteger(L, -2, static_cast<std::int64_t>(i) + 1);
     }
     return 1;
 }
 
-/// {a = body, b = body, nx = , ny = , approachSpeed = }
-template <class Get> int pushContactEvents(lua_State* L, const char* where, Get get) {
+/// {a = body, b = body, nx = , ny = , approachSpeed = }, and x, y where they touch for a
+/// begin (`withPoint`).
+template <class Get>
+int pushContactEvents(lua_State* L, const char* where, bool withPoint, Get get) {
     return pushEvents(
         L, where, [&](const World& w) { return get(w).size(); },
         [&](int env, WorldHandle* handle, std::size_t i) {
@@ -117,6 +114,10 @@ template <class Get> int pushContactEvents(lua_State* L, const char* where, Get 
             setNumber(L, "nx", e.normal.x);
             setNumber(L, "ny", e.normal.y);
             setNumber(L, "approachSpeed", e.approachSpeed);
+            if (withPoint) {
+                setNumber(L, "x", e.point.x);
+                setNumber(L, "y", e.point.y);
+            }
         });
 }
 
@@ -134,12 +135,12 @@ template <class Get> int pushSensorEvents(lua_State* L, const char* where, Get g
 }
 
 int worldGetContactBegins(lua_State* L) {
-    return pushContactEvents(L, "World:getContactBegins",
+    return pushContactEvents(L, "World:getContactBegins", true,
                              [](const World& w) { return w.contactBegins(); });
 }
 
 int worldGetContactEnds(lua_State* L) {
-    return pushContactEvents(L, "World:getContactEnds",
+    return pushContactEvents(L, "World:getContactEnds", false,
                              [](const World& w) { return w.contactEnds(); });
 }
 
@@ -203,6 +204,15 @@ constexpr luaL_Reg kEventMethods[] = {
 };
 
 } // namespace
+
+void callBack(lua_State* L, int runner, void* data, int world, int callback) {
+    lua_pushvalue(L, runner);
+    lua_pushlightuserdata(L, data);
+    lua_pushvalue(L, world);
+    lua_pushvalue(L, callback);
+    if (lua_pcall(L, 3, 1, 0) != 0)
+        throw CallbackFailed{}; // the error value stays on top, for the caller to raise
+}
 
 void preparePreSolve(lua_State* L, int worldIndex, WorldData& world) {
     worldIndex = absIndex(L, worldIndex);

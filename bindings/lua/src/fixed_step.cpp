@@ -12,7 +12,6 @@ namespace jostle::lua {
 
 namespace {
 
-
 FixedStep& checkClock(lua_State* L, const char* where) {
     auto* clock = static_cast<FixedStep*>(luaL_testudata(L, 1, kFixedStepType));
     if (!clock)
@@ -56,6 +55,41 @@ int clockUpdate(lua_State* L) {
     return 1;
 }
 
+/// x, y: where to draw the body now, between where it was before the last step update
+/// took and where it is, by alpha.
+int clockGetDrawPosition(lua_State* L) {
+    const char* where = "FixedStep:getDrawPosition";
+    const FixedStep& clock = checkClock(L, where);
+    const WorldData& world = checkWorld(L, 2, where);
+    const BodyId body = checkBodyArgument(L, 3, world, where, "body");
+    Vec2 at;
+    guard(L, where, [&] { at = clock.drawPosition(world.world, body); });
+    lua_pushnumber(L, static_cast<lua_Number>(at.x));
+    lua_pushnumber(L, static_cast<lua_Number>(at.y));
+    return 2;
+}
+
+/// {x1, y1, x2, y2, ...}: getDrawPosition of every body, in the order of
+/// world:getBodies(), into the table given or a new one.
+int clockGetDrawPositions(lua_State* L) {
+    const char* where = "FixedStep:getDrawPositions";
+    const FixedStep& clock = checkClock(L, where);
+    return pushBulkRead(
+        L, checkWorldHandle(L, 2, where), 3, where,
+        [&](const World& w, std::span<Vec2> out) { clock.readDrawPositions(w, out); });
+}
+
+/// Keeps where every body is now, for getDrawPosition: update calls it before the last
+/// step it takes; a game stepping the world by hand calls it before the last step of a
+/// frame.
+int clockRememberPositions(lua_State* L) {
+    const char* where = "FixedStep:rememberPositions";
+    FixedStep& clock = checkClock(L, where);
+    const WorldData& world = checkWorld(L, 2, where);
+    guard(L, where, [&] { clock.rememberPositions(world.world); });
+    return 0;
+}
+
 int clockGetAlpha(lua_State* L) {
     lua_pushnumber(L, static_cast<lua_Number>(checkClock(L, "FixedStep:getAlpha").alpha()));
     return 1;
@@ -95,10 +129,17 @@ int clockToString(lua_State* L) {
 }
 
 constexpr luaL_Reg kClockMethods[] = {
-    {"advance", clockAdvance},   {"update", clockUpdate},
-    {"getAlpha", clockGetAlpha}, {"getDroppedSeconds", clockGetDroppedSeconds},
-    {"getDt", clockGetDt},       {"getMaxStepsPerFrame", clockGetMaxStepsPerFrame},
-    {"reset", clockReset},       {nullptr, nullptr},
+    {"advance", clockAdvance},
+    {"update", clockUpdate},
+    {"getAlpha", clockGetAlpha},
+    {"getDroppedSeconds", clockGetDroppedSeconds},
+    {"getDt", clockGetDt},
+    {"getMaxStepsPerFrame", clockGetMaxStepsPerFrame},
+    {"reset", clockReset},
+    {"getDrawPosition", clockGetDrawPosition},
+    {"getDrawPositions", clockGetDrawPositions},
+    {"rememberPositions", clockRememberPositions},
+    {nullptr, nullptr},
 };
 
 } // namespace

@@ -1,7 +1,13 @@
 // Queries: world:queryPoint, queryBox, queryRect, rayCast, rayCastAll, boxCast,
 // moveAndSlide. Each takes an optional filter table last:
 // {mask = , category = , includeSensors = , ignore = body}.
+// And world:move, bump.lua's move, whose filter is a function called from inside the
+// core's sweep, the way the pre-solve callback is (events.cpp): through a protected
+// runner, its error thrown through the core as CallbackFailed and raised once out of it.
 #include "binding.hpp"
+
+#include <cstring>
+#include <initializer_list>
 
 namespace jostle::lua {
 
@@ -160,26 +166,16 @@ int worldRayCastAll(lua_State* L) {
 
     pushUserValue(L, 1);
     const int env = lua_gettop(L);
-    lua_createtable(L, static_cast<int>(world.rayHits.size()), 0);
-    for (std::size_t i = 0; handle.data && i < handle.data->rayHits.size(); ++i) {
-        const RayHit hit = handle.data->rayHits[i];
-        lua_createtable(L, 0, 6);
-        pushBody(L, env, &handle, hit.body);
-        lua_setfield(L, -2, "body");
-        const struct {
-            const char* name;
-            float value;
-        } numbers[] = {{"x", hit.point.x},
-                       {"y", hit.point.y},
-                       {"nx", hit.normal.x},
-                       {"ny", hit.normal.y},
-                       {"fraction", hit.fraction}};
-        for (const auto& number : numbers) {
-            lua_pushnumber(L, static_cast<lua_Number>(number.value));
-            lua_setfield(L, -2, number.name);
-        }
-        rawSetInteger(L, -2, static_cast<std::int64_t>(i) + 1);
-    }
+    pushArray(
+        L, handle, [](const WorldData& w) -> const auto& { return w.rayHits; },
+        [&](const RayHit& hit) {
+            pushBodyRecord(L, env, &handle, "body", hit.body,
+                           {{"x", hit.point.x},
+                            {"y", hit.point.y},
+                            {"nx", hit.normal.x},
+                            {"ny", hit.normal.y},
+                            {"fraction", hit.fraction}});
+        });
     return 1;
 }
 
@@ -197,6 +193,19 @@ int worldBoxCast(lua_State* L) {
         [](const BoxCastHit& hit) { return hit.centre; });
 }
 
+/// Pushes x, y (`end`) and the array of what a move met (pushArray's), for moveAndSlide
+/// and move: `push(env, element)` pushes each, `env` the world's user value table.
+template <class Elements, class Push>
+int pushMoved(lua_State* L, WorldHandle& handle, Vec2 end, Elements elements, Push push) {
+    lua_pushnumber(L, static_cast<lua_Number>(end.x));
+    lua_pushnumber(L, static_cast<lua_Number>(end.y));
+    pushUserValue(L, 1);
+    const int env = lua_gettop(L);
+    pushArray(L, handle, elements, [&](const auto& element) { push(env, element); });
+    lua_remove(L, env);
+    return 3;
+}
+
 /// x, y, hits: where the box ends up, and an array of {body = , nx = , ny = }.
 int worldMoveAndSlide(lua_State* L) {
     const char* where = "World:moveAndSlide";
@@ -211,32 +220,147 @@ int worldMoveAndSlide(lua_State* L) {
         world.moved.hits.swap(result.hits);
     });
 
-    const Vec2 end = world.moved.centre;
-    lua_pushnumber(L, static_cast<lua_Number>(end.x));
-    lua_pushnumber(L, static_cast<lua_Number>(end.y));
-    pushUserValue(L, 1);
-    const int env = lua_gettop(L);
-    lua_createtable(L, static_cast<int>(world.moved.hits.size()), 0);
-    for (std::size_t i = 0; handle.data && i < handle.data->moved.hits.size(); ++i) {
-        const MoveHit hit = handle.data->moved.hits[i];
-        lua_createtable(L, 0, 3);
-        pushBody(L, env, &handle, hit.body);
-        lua_setfield(L, -2, "body");
-        lua_pushnumber(L, static_cast<lua_Number>(hit.normal.x));
-        lua_setfield(L, -2, "nx");
-        lua_pushnumber(L, static_cast<lua_Number>(hit.normal.y));
-        lua_setfield(L, -2, "ny");
-        rawSetInteger(L, -2, static_cast<std::int64_t>(i) + 1);
+    return pushMoved(
+        L, handle, world.moved.centre,
+        [](const WorldData& w) -> const auto& { return w.moved.hits; },
+        [&](int env, const MoveHit& hit) {
+            pushBodyRecord(L, env, &handle, "body", hit.body,
+                           {{"nx", hit.normal.x}, {"ny", hit.normal.y}});
+        });
+}
+
+// --- world:move ---------------------------------------------------------------------------
+
+/// The filter's answers, in the order of Response (Ignore is nil or false).
+constexpr const char* kResponseNames[] = {"slide", "touch", "cross", "bounce", nullptr};
+static_assert(static_cast<int>(Response::Slide) == 0 && static_cast<int>(Response::Touch) == 1 &&
+              static_cast<int>(Response::Cross) == 2 && static_cast<int>(Response::Bounce) == 3 &&
+              static_cast<int>(Response::Ignore) == 4);
+
+constexpr const char* kFilterRule =
+    "expected \"slide\", \"touch\", \"cross\", \"bounce\", or nil or false to ignore";
+
+/// Called (protected) by the filter's trampoline with the other body's BodyId, the World
+/// userdata and the filter: returns the Response of filter(other), as a number.
+int runMoveFilter(lua_State* L) {
+    const BodyId other = *static_cast<const BodyId*>(lua_touserdata(L, 1));
+    auto* world = static_cast<WorldHandle*>(lua_touserdata(L, 2));
+    lua_pushvalue(L, 3);
+    pushUserValue(L, 2);
+    pushBody(L, -1, world, other);
+    lua_remove(L, -2);
+    lua_call(L, 1, 1);
+    // nil or false: Ignore, as bump.lua's filters say it.
+    if (lua_isnil(L, -1) || (lua_type(L, -1) == LUA_TBOOLEAN && !lua_toboolean(L, -1))) {
+        pushWhole(L, static_cast<int>(Response::Ignore));
+        return 1;
     }
-    lua_remove(L, env);
-    return 3;
+    if (lua_type(L, -1) == LUA_TSTRING) {
+        const char* given = lua_tostring(L, -1);
+        for (int i = 0; kResponseNames[i]; ++i)
+            if (std::strcmp(given, kResponseNames[i]) == 0) {
+                pushWhole(L, i);
+                return 1;
+            }
+        raise(L, "World:move", "filter returned \"%s\": %s", given, kFilterRule);
+    }
+    raise(L, "World:move", "filter returned %s: %s",
+          lua_type(L, -1) == LUA_TBOOLEAN ? "true" : typeName(L, -1), kFilterRule);
+}
+
+/// The C++ filter: runs the Lua one through runMoveFilter, protected, with what it needs
+/// at these stack slots.
+struct FilterSlots {
+    lua_State* L;
+    int runner; ///< runMoveFilter
+    int world;  ///< the World userdata
+    int filter; ///< the Lua function
+};
+
+Response filterTrampoline(const FilterSlots& slots, BodyId other) {
+    lua_State* L = slots.L;
+    callBack(L, slots.runner, &other, slots.world, slots.filter);
+    const auto response = static_cast<Response>(lua_tointeger(L, -1));
+    lua_pop(L, 1);
+    return response;
+}
+
+/// Sets t[name] = {fields...} for the table t on top.
+void setRecord(lua_State* L, const char* name, std::initializer_list<NamedNumber> fields) {
+    lua_createtable(L, 0, static_cast<int>(fields.size()));
+    setNumbers(L, fields);
+    lua_setfield(L, -2, name);
+}
+
+/// One of move's collisions as bump.lua names its fields: {item = , other = , type = ,
+/// normal = {x, y}, touch = {x, y} (the centre there), ti = , otherRect = {x, y, w, h}}.
+void pushCollision(lua_State* L, int env, WorldHandle* handle, int item, const MoveCollision& c) {
+    lua_createtable(L, 0, 7);
+    lua_pushvalue(L, item);
+    lua_setfield(L, -2, "item");
+    pushBody(L, env, handle, c.other);
+    lua_setfield(L, -2, "other");
+    lua_pushstring(L, kResponseNames[static_cast<int>(c.response)]);
+    lua_setfield(L, -2, "type");
+    setRecord(L, "normal", {{"x", c.normal.x}, {"y", c.normal.y}});
+    setRecord(L, "touch", {{"x", c.touch.x}, {"y", c.touch.y}});
+    setNumbers(L, {{"ti", c.time}});
+    const Vec2 corner = c.otherCentre - c.otherHalf;
+    const Vec2 size = c.otherHalf * 2.0f;
+    setRecord(L, "otherRect", {{"x", corner.x}, {"y", corner.y}, {"w", size.x}, {"h", size.y}});
+}
+
+/// world:move(body, dx, dy [, filter]) -> x, y, cols, len: moves the body by (dx, dy)
+/// the way bump.lua's world:move does; filter(other) answers "slide", "touch", "cross",
+/// "bounce", or nil or false to go through unreported.
+int worldMove(lua_State* L) {
+    const char* where = "World:move";
+    WorldHandle& handle = checkWorldHandle(L, 1, where);
+    WorldData& world = *handle.data;
+    requireChangeable(L, world, where);
+    const BodyId id = checkBodyArgument(L, 2, world, where, "body");
+    const Vec2 delta = checkVec2(L, 3, where, "dx", "dy");
+    const bool filtered = !lua_isnoneornil(L, 5);
+    if (filtered && lua_type(L, 5) != LUA_TFUNCTION)
+        raise(L, where, "filter: expected a function or nil, got %s", typeName(L, 5));
+    lua_settop(L, 5);
+    luaL_checkstack(L, 8, "jostle: World:move");
+    lua_pushcfunction(L, runMoveFilter);
+    const FilterSlots slots{L, lua_gettop(L), 1, 5};
+
+    // The filter may read the world but not change it: the core sweeps through it.
+    world.moving = true;
+    guardCallbacks(
+        L, where,
+        [&] {
+            MoveFilter filter;
+            if (filtered)
+                filter = [&slots](BodyId other) { return filterTrampoline(slots, other); };
+            // Into the kept outcome, so that its memory serves call after call.
+            MoveOutcome outcome = move(world.world, id, delta, filter);
+            world.outcome.centre = outcome.centre;
+            world.outcome.collisions.swap(outcome.collisions);
+        },
+        [&] { world.moving = false; });
+
+    pushMoved(
+        L, handle, world.outcome.centre,
+        [](const WorldData& w) -> const auto& { return w.outcome.collisions; },
+        [&](int env, const MoveCollision& c) { pushCollision(L, env, &handle, 2, c); });
+    pushWhole(L, static_cast<std::int64_t>(rawLength(L, -1)));
+    return 4;
 }
 
 constexpr luaL_Reg kQueryMethods[] = {
-    {"queryPoint", worldQueryPoint},     {"queryBox", worldQueryBox},
-    {"queryRect", worldQueryRect},       {"rayCast", worldRayCast},
-    {"rayCastAll", worldRayCastAll},     {"boxCast", worldBoxCast},
-    {"moveAndSlide", worldMoveAndSlide}, {nullptr, nullptr},
+    {"queryPoint", worldQueryPoint},
+    {"queryBox", worldQueryBox},
+    {"queryRect", worldQueryRect},
+    {"rayCast", worldRayCast},
+    {"rayCastAll", worldRayCastAll},
+    {"boxCast", worldBoxCast},
+    {"moveAndSlide", worldMoveAndSlide},
+    {"move", worldMove},
+    {nullptr, nullptr},
 };
 
 } // namespace

@@ -84,6 +84,7 @@ struct MapSettings {
 int worldNewTileMap(lua_State* L) {
     const char* where = "World:newTileMap";
     WorldHandle& handle = checkWorldHandle(L, 1, where);
+    requireChangeable(L, *handle.data, where);
     checkTable(L, 2, where, "def");
     const Fields fields(L, 2, where);
     static constexpr const char* kNames[] = {"x",        "y",      "tile",     "rows",
@@ -159,6 +160,7 @@ int mapSetTile(lua_State* L) {
     const auto row =
         static_cast<int>(checkWhole(L, 3, where, "row", -kMaxCoordinate, kMaxCoordinate));
     const bool solid = checkBoolean(L, 4, where, "solid");
+    requireChangeable(L, *map.world->data, where);
     guard(L, where, [&] { setTile(map.world->data->world, map.id, column, row, solid); });
     return 0;
 }
@@ -295,6 +297,7 @@ int mapGetBodies(lua_State* L) {
 int mapDestroy(lua_State* L) {
     const char* where = "TileMap:destroy";
     const TileMapHandle& map = checkMap(L, 1, where);
+    requireChangeable(L, *map.world->data, where);
     guard(L, where, [&] { destroyTileMap(map.world->data->world, map.id); });
     return 0;
 }

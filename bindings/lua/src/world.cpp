@@ -3,6 +3,8 @@
 
 #include <cmath>
 #include <cstdio>
+#include <span>
+#include <type_traits>
 
 namespace jostle::lua {
 
@@ -149,6 +151,51 @@ int worldGetBodies(lua_State* L) {
     return 1;
 }
 
+/// {x1, y1, x2, y2, ...}: the positions (or velocities) of the bodies, in the order of
+/// world:getBodies(), into the table given or a new one.
+int worldGetPositions(lua_State* L) {
+    const char* where = "World:getPositions";
+    return pushBulkRead(L, checkWorldHandle(L, 1, where), 2, where,
+                        [](const World& w, std::span<Vec2> out) { w.readPositions(out); });
+}
+
+int worldGetVelocities(lua_State* L) {
+    const char* where = "World:getVelocities";
+    return pushBulkRead(L, checkWorldHandle(L, 1, where), 2, where,
+                        [](const World& w, std::span<Vec2> out) { w.readVelocities(out); });
+}
+
+#ifdef LUAJIT_VERSION
+// For LuaJIT's FFI: the array itself, as floats x1, y1, x2, y2, ..., and the number of
+// bodies; no call per body nor per value.
+static_assert(sizeof(Vec2) == 2 * sizeof(float) && std::is_standard_layout_v<Vec2>,
+              "the buffers are read as float arrays");
+
+/// Fills the kept `buffer` by `read` and returns a pointer to it and the body count.
+int pushBuffer(lua_State* L, const char* where, std::vector<Vec2> WorldData::*buffer,
+               std::size_t (World::*read)(std::span<Vec2>) const) {
+    WorldData& world = checkWorld(L, 1, where);
+    std::vector<Vec2>& out = world.*buffer;
+    guard(L, where, [&] {
+        out.resize(world.world.bodyCount());
+        (world.world.*read)(out);
+    });
+    lua_pushlightuserdata(L, out.data());
+    pushWhole(L, static_cast<std::int64_t>(out.size()));
+    return 2;
+}
+
+int worldGetPositionsBuffer(lua_State* L) {
+    return pushBuffer(L, "World:getPositionsBuffer", &WorldData::positionsBuffer,
+                      &World::readPositions);
+}
+
+int worldGetVelocitiesBuffer(lua_State* L) {
+    return pushBuffer(L, "World:getVelocitiesBuffer", &WorldData::velocitiesBuffer,
+                      &World::readVelocities);
+}
+#endif
+
 int worldGetBodyCount(lua_State* L) {
     const WorldData& world = checkWorld(L, 1, "World:getBodyCount");
     pushWhole(L, static_cast<std::int64_t>(world.world.bodyCount()));
@@ -164,7 +211,7 @@ int worldGetGravity(lua_State* L) {
 
 int worldSetGravity(lua_State* L) {
     const char* where = "World:setGravity";
-    WorldData& world = checkWorld(L, 1, where);
+    WorldData& world = checkWorldToChange(L, 1, where);
     const Vec2 g = checkVec2(L, 2, where, "x", "y");
     guard(L, where, [&] { world.world.setGravity(g); });
     return 0;
@@ -178,7 +225,7 @@ int worldGetMaxVelocity(lua_State* L) {
 
 int worldSetMaxVelocity(lua_State* L) {
     const char* where = "World:setMaxVelocity";
-    WorldData& world = checkWorld(L, 1, where);
+    WorldData& world = checkWorldToChange(L, 1, where);
     const float maxVelocity = checkNumberOrInfinity(L, 2, where, "maxVelocity");
     if (!(maxVelocity > 0.0f))
         raise(L, where, "maxVelocity: must be > 0 (math.huge for no clamp)");
@@ -193,7 +240,7 @@ int worldGetSolver(lua_State* L) {
 
 int worldSetSolver(lua_State* L) {
     const char* where = "World:setSolver";
-    WorldData& world = checkWorld(L, 1, where);
+    WorldData& world = checkWorldToChange(L, 1, where);
     const Solver solver = solverOf(checkOption(L, 2, where, "solver", kSolverNames));
     guard(L, where, [&] { world.world.setSolver(solver); });
     return 0;
@@ -206,7 +253,7 @@ int worldGetSleeping(lua_State* L) {
 
 int worldSetSleeping(lua_State* L) {
     const char* where = "World:setSleeping";
-    WorldData& world = checkWorld(L, 1, where);
+    WorldData& world = checkWorldToChange(L, 1, where);
     const bool enabled = checkBoolean(L, 2, where, "enabled");
     guard(L, where, [&] { world.world.setSleeping(enabled); });
     return 0;
@@ -220,7 +267,7 @@ int worldGetClassicOptions(lua_State* L) {
 /// Fields left out keep their current values.
 int worldSetClassicOptions(lua_State* L) {
     const char* where = "World:setClassicOptions";
-    WorldData& world = checkWorld(L, 1, where);
+    WorldData& world = checkWorldToChange(L, 1, where);
     checkTable(L, 2, where, "options");
     ClassicOptions options = world.world.classicOptions();
     readClassic(Fields(L, 2, where), options);
@@ -235,7 +282,7 @@ int worldGetPhysicalOptions(lua_State* L) {
 
 int worldSetPhysicalOptions(lua_State* L) {
     const char* where = "World:setPhysicalOptions";
-    WorldData& world = checkWorld(L, 1, where);
+    WorldData& world = checkWorldToChange(L, 1, where);
     checkTable(L, 2, where, "options");
     PhysicalOptions options = world.world.physicalOptions();
     readPhysical(Fields(L, 2, where), options);
@@ -254,6 +301,7 @@ int worldDestroy(lua_State* L) {
         return 0; // twice is harmless, as for a file
     if (handle->data->stepping)
         raise(L, where, "called from a callback during step()");
+    requireChangeable(L, *handle->data, where);
     delete handle->data;
     handle->data = nullptr;
     // Let go of the Lua values the world held for its bodies.
@@ -297,6 +345,12 @@ constexpr luaL_Reg kWorldMethods[] = {
     {"step", worldStep},
     {"getBodies", worldGetBodies},
     {"getBodyCount", worldGetBodyCount},
+    {"getPositions", worldGetPositions},
+    {"getVelocities", worldGetVelocities},
+#ifdef LUAJIT_VERSION
+    {"getPositionsBuffer", worldGetPositionsBuffer},
+    {"getVelocitiesBuffer", worldGetVelocitiesBuffer},
+#endif
     {"getGravity", worldGetGravity},
     {"setGravity", worldSetGravity},
     {"getMaxVelocity", worldGetMaxVelocity},
@@ -336,33 +390,66 @@ WorldData& checkWorld(lua_State* L, int index, const char* where) {
     return *checkWorldHandle(L, index, where).data;
 }
 
+void requireChangeable(lua_State* L, const WorldData& world, const char* where) {
+    if (world.moving)
+        raise(L, where,
+              "called from World:move's filter (the world cannot change until the "
+              "move is done)");
+}
+
+WorldData& checkWorldToChange(lua_State* L, int index, const char* where) {
+    WorldData& world = checkWorld(L, index, where);
+    requireChangeable(L, world, where);
+    return world;
+}
+
+int optTableToFill(lua_State* L, int index, const char* where) {
+    if (lua_isnoneornil(L, index))
+        return 0;
+    return checkTable(L, index, where, "t");
+}
+
+void pushVec2Array(lua_State* L, WorldHandle& handle, int tableIndex) {
+    // A table reused shorter than before loses its tail, so that #t stays 2 x the count.
+    const std::size_t before = tableIndex != 0 ? rawLength(L, tableIndex) : 0;
+    if (tableIndex != 0)
+        lua_pushvalue(L, tableIndex);
+    else
+        lua_createtable(L, static_cast<int>(handle.data->vectors.size() * 2), 0);
+    const int table = lua_gettop(L);
+    // Entry by entry, reading the world each time: growing the table may run a finalizer,
+    // Lua code that might use this very world.
+    int next = 1;
+    for (std::size_t i = 0; handle.data && i < handle.data->vectors.size(); ++i) {
+        const Vec2 v = handle.data->vectors[i];
+        lua_pushnumber(L, static_cast<lua_Number>(v.x));
+        lua_rawseti(L, table, next++);
+        lua_pushnumber(L, static_cast<lua_Number>(v.y));
+        lua_rawseti(L, table, next++);
+    }
+    for (std::size_t i = static_cast<std::size_t>(next); i <= before; ++i) {
+        lua_pushnil(L);
+        lua_rawseti(L, table, static_cast<int>(i));
+    }
+}
+
 void stepWorld(lua_State* L, int index, float dt, const char* where) {
     index = absIndex(L, index);
     WorldData& world = checkWorld(L, index, where);
     if (world.stepping)
         raise(L, where, "called from a callback during step()");
+    requireChangeable(L, world, where);
     const int top = lua_gettop(L);
     preparePreSolve(L, index, world);
 
     world.stepping = true;
     world.stepState = L;
-    char message[kMessageSize];
-    bool callbackFailed = false;
-    const bool stepped = attempt(message, [&] {
-        try {
-            world.world.step(dt);
-        } catch (const CallbackFailed&) {
-            callbackFailed = true;
-            throw;
-        }
-    });
-    world.stepping = false;
-    world.stepState = nullptr;
-
-    if (callbackFailed)
-        lua_error(L); // the callback's own error value, left on top by the trampoline
-    if (!stepped)
-        raise(L, where, "%s", message);
+    guardCallbacks(
+        L, where, [&] { world.world.step(dt); },
+        [&] {
+            world.stepping = false;
+            world.stepState = nullptr;
+        });
     lua_settop(L, top);
 }
 

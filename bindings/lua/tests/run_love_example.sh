@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # Runs the LÖVE example (bindings/lua/example) for 3 simulated seconds under a virtual X
-# server and checks that it started, loaded jostle.so and saw every box land.
+# server and checks that it started, loaded jostle.so and saw every box land, and that its
+# scripted player (a character) walked at exactly 150 and jumped as high as worked out by
+# hand (106.78).
 #
 #   run_love_example.sh EXAMPLE_DIR MODULE_DIR
 #
@@ -34,6 +36,10 @@ for model in physical classic; do
   # "... 9 of 9 boxes landed ...": every box of the tutorial's scene touched something.
   if ! grep -Eq "jostle example: 3\.00 s simulated .* $model model, .* ([0-9]+) of \1 boxes landed" <<<"$output"; then
     echo "$model: the example's summary line is missing or not every box landed" >&2
+    failed=1
+  fi
+  if ! grep -q "jostle example: the player walked at 150.0 to 150.0 and jumped 106.78 high" <<<"$output"; then
+    echo "$model: the player's line is missing, or it did not walk at 150 or jump 106.78" >&2
     failed=1
   fi
 done
