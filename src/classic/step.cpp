@@ -1,5 +1,6 @@
 // The classic model: the tutorial's update(dt), checkCollision and solveCollision,
-// line for line, plus the two options of its "Physics" section (mass, coulomb).
+// line for line, plus the two options of its "Physics" section (mass, coulomb). One file,
+// a little past 400 lines, so that it reads beside the tutorial from top to bottom.
 //
 // One deliberate difference from the tutorial's code: its response line
 //     a.xv = a.xv - px*r + tx*f
