@@ -16,7 +16,7 @@ Vec2 rightOf(Vec2 down) {
 
 /// Whether a surface pushing `body` along `push` is a floor the character stands on.
 bool isCharacterFloor(const Body& body, Vec2 push, Vec2 down) {
-    return body.character && body.isDynamic() && surfaceOf(push, down) == kFloor;
+    return body.isCharacter() && surfaceOf(push, down) == kFloor;
 }
 
 } // namespace
@@ -25,9 +25,9 @@ void walkCharacters(WorldState& world) {
     const Vec2 right = rightOf(world.events.down);
     for (BodyId id : world.order) {
         Body& body = world.slots[id.index];
-        if (!body.character || !body.isDynamic() || body.asleep)
+        if (!body.isCharacter() || body.asleep)
             continue;
-        const BodyId ground = groundOf(world, id.index).body;
+        const BodyId ground = groundOf(world, id).body;
         const float under = ground.isNull() ? 0.0f : dot(world.slots[ground.index].velocity, right);
         body.velocity = withinRange(body.velocity +
                                     right * (under + body.walkSpeed - dot(body.velocity, right)));
@@ -35,7 +35,7 @@ void walkCharacters(WorldState& world) {
 }
 
 float frictionAgainst(const Body& body, Vec2 push, Vec2 down) {
-    if (!body.character || !body.isDynamic() || surfaceOf(push, down) == kFloor)
+    if (!body.isCharacter() || surfaceOf(push, down) == kFloor)
         return body.friction;
     return body.wallFriction;
 }

@@ -93,19 +93,14 @@ Vec2 pointOf(const WorldState& world, const TouchRecord& record) {
                       record.normal);
 }
 
-GroundRecord groundOf(const WorldState& world, std::uint32_t slot) {
+GroundRecord groundOf(const WorldState& world, BodyId id) {
     GroundRecord ground;
     float hardest = 0.0f;
-    world.events.forEachTouchOf(slot, [&](const TouchRecord& r) {
-        const bool isA = r.a.index == slot && world.isCurrent(r.a);
-        const bool isB = r.b.index == slot && world.isCurrent(r.b);
-        if ((!isA && !isB) || !world.isCurrent(isA ? r.b : r.a))
-            return; // of the slot's previous body, or on a body destroyed since
-        const Vec2 push = isA ? r.normal : -r.normal;
+    world.forEachContactOf(id, [&](BodyId other, Vec2 push, const TouchRecord& r) {
         if (surfaceOf(push, world.events.down) != kFloor ||
             (!ground.body.isNull() && !(r.impulse > hardest)))
             return;
-        ground = {isA ? r.b : r.a, push};
+        ground = {other, push};
         hardest = r.impulse;
     });
     return ground;
@@ -161,8 +156,10 @@ void StepEvents::publish(const WorldState& world, bool anyAwake) {
         [&](const TouchRecord& r) {
             ends.push_back({r.a, r.b, r.normal, 0.0f, Vec2{}});
         });
-    std::lock_guard<std::mutex> lock(indexMutex_);
-    indexed_ = false;
+    {
+        std::lock_guard<std::mutex> lock(indexMutex_);
+        indexed_ = false; // contactsBefore_ changed
+    }
     sortByPair(sensorsNow, scratch_, buckets_, world.slots.size());
     compare(
         world, sensorsNow, sensorsBefore_, scratch_, sensorNotEvaluated,

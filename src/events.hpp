@@ -106,14 +106,14 @@ void recordContact(WorldState& world, std::uint32_t body, std::uint32_t other, V
 /// Where the two bodies of `record` touch, as they are now (ContactEvent::point).
 Vec2 pointOf(const WorldState& world, const TouchRecord& record);
 
-/// What the body in `slot` stands on: of the pairs it touched at the end of the last step
-/// in which a floor pushed it, the one that pushed hardest (the first of equals). Null if
-/// none (World::ground).
+/// What body `id` stands on: of the bodies it touched at the end of the last step that
+/// pushed it as a floor, the one that pushed hardest (the first of equals). Null if none
+/// (World::ground).
 struct GroundRecord {
     BodyId body;
     Vec2 normal;
 };
-GroundRecord groundOf(const WorldState& world, std::uint32_t slot);
+GroundRecord groundOf(const WorldState& world, BodyId id);
 
 /// Records that `visitor` overlaps `sensor` at the end of this step.
 void recordSensor(WorldState& world, std::uint32_t sensor, std::uint32_t visitor);

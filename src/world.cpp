@@ -112,12 +112,8 @@ std::span<const CrushEvent> World::crushes() const {
 void World::contacts(BodyId id, std::vector<ContactInfo>& out) const {
     lookUp(*state_, id, "contacts");
     out.clear();
-    state_->events.forEachTouchOf(id.index, [&](const TouchRecord& r) {
-        const bool isA = r.a == id;
-        if ((!isA && r.b != id) || !state_->isCurrent(isA ? r.b : r.a))
-            return; // of the slot's previous body, or with a body destroyed since
-        out.push_back(
-            {isA ? r.b : r.a, isA ? r.normal : -r.normal, pointOf(*state_, r), r.impulse});
+    state_->forEachContactOf(id, [&](BodyId other, Vec2 normal, const TouchRecord& r) {
+        out.push_back({other, normal, pointOf(*state_, r), r.impulse});
     });
 }
 
@@ -131,9 +127,8 @@ bool World::isTouching(BodyId a, BodyId b) const {
     lookUp(*state_, a, "isTouching");
     lookUp(*state_, b, "isTouching");
     bool touching = false;
-    state_->events.forEachTouchOf(a.index, [&](const TouchRecord& r) {
-        touching = touching || (r.a == a && r.b == b) || (r.a == b && r.b == a);
-    });
+    state_->forEachContactOf(
+        a, [&](BodyId other, Vec2, const TouchRecord&) { touching = touching || other == b; });
     return touching;
 }
 

@@ -334,7 +334,7 @@ void World::setWalkSpeed(BodyId id, float speed) {
 
 std::optional<Ground> World::ground(BodyId id) const {
     lookUp(*state_, id, "ground");
-    const GroundRecord g = groundOf(*state_, id.index);
+    const GroundRecord g = groundOf(*state_, id);
     if (g.body.isNull())
         return std::nullopt;
     return Ground{g.body, g.normal, state_->slots[g.body.index].velocity};

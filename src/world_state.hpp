@@ -69,6 +69,8 @@ struct alignas(64) Body {
     bool bullet = false;
 
     bool isDynamic() const { return type == BodyType::Dynamic; }
+    /// A character that walks and rubs only on floors: the flag counts on dynamic bodies.
+    bool isCharacter() const { return character && isDynamic(); }
     /// The mass it has as a dynamic body: explicit, or density × area.
     float dynamicMass() const { return mass > 0.0f ? mass : density * 4.0f * half.x * half.y; }
     /// Sets invMass from the type, mass, density and size.
@@ -166,6 +168,15 @@ struct WorldState {
     bool isCurrent(BodyId id) const { return jostle::isCurrent(slots, id); }
     bool isLive(std::uint32_t slot) const { return slots[slot].alive; }
     bool isResting(const Body& body) const { return body.type == BodyType::Static || body.asleep; }
+    /// Calls visit(other, normal, record) for each body that `id` touched at the end of the
+    /// last step and that is still there; `normal` points from `other` towards `id`.
+    template <class Visit> void forEachContactOf(BodyId id, Visit&& visit) const {
+        events.forEachTouchOf(id.index, [&](const TouchRecord& r) {
+            const bool isA = r.a == id;
+            if ((isA || r.b == id) && isCurrent(isA ? r.b : r.a))
+                visit(isA ? r.b : r.a, isA ? r.normal : -r.normal, r);
+        });
+    }
     /// Whether the body in slot `a` was created before the one in slot `b`.
     bool createdBefore(std::uint32_t a, std::uint32_t b) const { return created[a] < created[b]; }
 };

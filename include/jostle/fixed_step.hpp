@@ -85,16 +85,22 @@ public:
     /// advance(frameSeconds), then world.step(dt()) that many times; returns the number
     /// of steps. For games that draw the world as it is after the last step. If a step
     /// throws (a callback of yours did), the steps left are not taken and their time is
-    /// lost.
-    /// It also keeps where every body was before the last step, for drawPosition.
+    /// lost. It also keeps where every body was before the last step, for drawPosition.
     int update(World& world, float frameSeconds) {
         const int steps = advance(frameSeconds);
+        takeSteps(world, steps, [&] { world.step(dt_); });
+        return steps;
+    }
+
+    /// Calls step() `steps` times (what advance() returned), keeping where every body of
+    /// `world` is before the last one, as update() does: for a binding or a game that
+    /// steps the world its own way.
+    template <class Step> void takeSteps(const World& world, int steps, Step&& step) {
         for (int i = 0; i < steps; ++i) {
             if (i == steps - 1)
                 rememberPositions(world);
-            world.step(dt_);
+            step();
         }
-        return steps;
     }
 
     /// Where to draw a body now: between where it was before the last step update()
@@ -103,9 +109,8 @@ public:
     /// yet (created since). Throws jostle::Error for a stale BodyId, as World does.
     Vec2 drawPosition(const World& world, BodyId id) const {
         const Vec2 now = world.position(id);
-        if (id.index >= before_.size() || before_[id.index].body != id)
-            return now;
-        return lerp(before_[id.index].position, now);
+        const Before* before = beforeOf(id);
+        return before ? lerp(before->position, now) : now;
     }
 
     /// Keeps where every body of `world` is now, for drawPosition: update() calls it
@@ -127,11 +132,9 @@ public:
     std::size_t readDrawPositions(const World& world, std::span<Vec2> out) const {
         const std::size_t count = world.readPositions(out);
         const std::span<const BodyId> bodies = world.bodies();
-        for (std::size_t i = 0; i < count; ++i) {
-            const BodyId id = bodies[i];
-            if (id.index < before_.size() && before_[id.index].body == id)
-                out[i] = lerp(before_[id.index].position, out[i]);
-        }
+        for (std::size_t i = 0; i < count; ++i)
+            if (const Before* before = beforeOf(bodies[i]))
+                out[i] = lerp(before->position, out[i]);
         return count;
     }
 
@@ -160,6 +163,18 @@ public:
     }
 
 private:
+    /// Where a body was before the last step update() took.
+    struct Before {
+        BodyId body;
+        Vec2 position;
+    };
+
+    /// `id`'s, or nullptr if update() has not seen that body (created since).
+    const Before* beforeOf(BodyId id) const {
+        return id.index < before_.size() && before_[id.index].body == id ? &before_[id.index]
+                                                                         : nullptr;
+    }
+
     static constexpr double kTicksPerSecond = 1e9;
     /// Longer than the most time the cap lets through, kMaxStepsLimit × kMaxDt, and
     /// short enough that accumulated_ never overflows.
@@ -171,11 +186,6 @@ private:
     Vec2 lerp(Vec2 previous, Vec2 current) const {
         return previous + (current - previous) * alpha();
     }
-
-    struct Before {
-        BodyId body;
-        Vec2 position;
-    };
 
     float dt_;
     int maxSteps_;

@@ -40,11 +40,10 @@ int jostle_fixed_step_update(jostle_fixed_step* clock, jostle_world* world, floa
         // A failing step (out of memory) is reported, and the steps taken stand.
         int taken = 0;
         guard(function, 0, [&] {
-            for (; taken < steps; ++taken) {
-                if (taken == steps - 1)
-                    c.rememberPositions(w.world); // as FixedStep::update does
+            c.takeSteps(w.world, steps, [&] {
                 stepWorld(w, c.dt());
-            }
+                ++taken;
+            });
             return 0;
         });
         return taken;

@@ -64,8 +64,10 @@ bool staysApart(const Body& a, const Body& b, Vec2 normal, float gap, float dt) 
     return gap > 0.0f && gap > (towardA + towardB) * dt;
 }
 
-/// Where a contact's normal is chosen, or nothing if the pair cannot meet in this step.
-/// The axis is geometry.hpp's contactAxis, with two exceptions at corners:
+/// Where a contact's normal is chosen, or nothing if the pair cannot meet in this step:
+/// apart along an axis by more than the skin, or along the chosen one at all, and not
+/// closing that gap (staysApart). The axis is geometry.hpp's contactAxis, with two
+/// exceptions at corners:
 /// - A dynamic body apart on both axes from a static or kinematic one meets it where its
 ///   path across the step first touches it, and not at all if the path clears it: a box
 ///   rising past a ledge does not hit the ledge's side.
@@ -98,7 +100,10 @@ std::optional<Facing> chooseNormal(const StepContext& step, const Body& a, const
         if (isSeam(step.world, aStatic ? a : b, aStatic ? b : a, alongX ? 0 : 1))
             alongX = !alongX;
     }
-    return alongX ? Facing{normalX, gapX, skinX} : Facing{normalY, gapY, skinY};
+    const Facing facing = alongX ? Facing{normalX, gapX, skinX} : Facing{normalY, gapY, skinY};
+    if (staysApart(a, b, facing.normal, facing.gap, step.dt))
+        return std::nullopt;
+    return facing;
 }
 
 /// Starts `c` from last step's impulses if the cache holds the same contact: the same
@@ -188,8 +193,6 @@ void buildContacts(StepContext& step) {
         if (!facing)
             continue;
         const auto [normal, gap, skin] = *facing;
-        if (staysApart(a, b, normal, gap, step.dt))
-            continue;
         // The normal points from b towards a; a pair touching within the skin was on the
         // platform's side when the step began.
         if ((a.isOneWay() && !a.blocks(-normal, gap >= -skin, b.dropThroughTime)) ||

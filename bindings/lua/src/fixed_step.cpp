@@ -46,11 +46,8 @@ int clockUpdate(lua_State* L) {
         raise(L, where, "frameSeconds: must be >= 0");
     int steps = 0;
     guard(L, where, [&] { steps = clock.advance(seconds); });
-    for (int i = 0; i < steps; ++i) {
-        if (i == steps - 1)
-            clock.rememberPositions(checkWorld(L, 2, where).world);
-        stepWorld(L, 2, clock.dt(), where);
-    }
+    clock.takeSteps(checkWorld(L, 2, where).world, steps,
+                    [&] { stepWorld(L, 2, clock.dt(), where); });
     pushWhole(L, steps);
     return 1;
 }
