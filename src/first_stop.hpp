@@ -3,7 +3,7 @@
 #pragma once
 
 #include "geometry.hpp"
-#include "query_index.hpp"
+#include "candidates.hpp"
 #include "world_state.hpp"
 
 #include <algorithm>

@@ -1,11 +1,11 @@
 // Queries: what is at a point, in a box, on a ray, in the way of a moving box. The
-// geometry is in geometry.hpp, the candidates come from query_index.hpp; this file
+// geometry is in geometry.hpp, the candidates come from candidates.hpp; this file
 // applies the filters and the rules of each query (jostle/query.hpp).
 #include "jostle/query.hpp"
 
 #include "first_stop.hpp"
 #include "geometry.hpp"
-#include "query_index.hpp"
+#include "candidates.hpp"
 #include "world_access.hpp"
 
 #include <algorithm>

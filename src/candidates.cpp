@@ -1,5 +1,5 @@
-// The query index and the candidates of a query.
-#include "query_index.hpp"
+// The candidates of a query, and the query index they keep up to date.
+#include "candidates.hpp"
 
 #include "broadphase.hpp"
 #include "world_state.hpp"
@@ -45,9 +45,7 @@ void rebuild(const WorldState& w, QueryIndex& index) {
 
 } // namespace
 
-Candidates::Candidates(const WorldState& world)
-    : w_(world), index_(world.queries), grid_(world.restingGrid), gridSlots_(world.restingSlots),
-      order_(world.order), created_(world.created) {
+Candidates::Candidates(const WorldState& world) : w_(world), index_(world.queries) {
     std::lock_guard<std::mutex> lock(index_.mutex);
     if (orderChanged(w_, index_))
         rebuild(w_, index_);
