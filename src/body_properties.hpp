@@ -34,6 +34,7 @@ enum class Rule : std::uint8_t {
     NonNegative, ///< in range and >= 0
     MassOrZero,  ///< in range, >= 0, and 0 (the mass comes from density) or >= 1e-9
     Direction,   ///< a vector: {0, 0} or a unit vector along x or y (oneWay)
+    Corner,      ///< a vector: {0, 0} or each component -1 or +1 (slope)
 };
 
 namespace checks {
@@ -79,6 +80,7 @@ constexpr std::array<NumberCheck, kMaxSteps> stepsOf(Rule rule) {
         return {inRange, massNonNegative, massZeroOrNotTiny};
     case Rule::Any:
     case Rule::Direction:
+    case Rule::Corner:
         break;
     }
     return {};
@@ -93,6 +95,8 @@ inline const char* stepProblem(Rule rule, std::size_t step, float value) {
 inline const char* stepProblem(Rule rule, std::size_t step, Vec2 value) {
     if (rule == Rule::Direction && step == 0 && !isValidOneWay(value))
         return "must be [0, 0] or one of [1, 0], [-1, 0], [0, 1], [0, -1]";
+    if (rule == Rule::Corner && step == 0 && !isValidSlope(value))
+        return "must be [0, 0] or each component -1 or 1";
     return nullptr;
 }
 template <class T> const char* stepProblem(Rule, std::size_t, T) {
@@ -162,6 +166,9 @@ inline constexpr Property kSensor{"sensor", Rule::Any, false};
 inline constexpr Property kUserData{"userData", Rule::Any, static_cast<void*>(nullptr)};
 inline constexpr Property kCharacter{"character", Rule::Any, false};
 inline constexpr Property kWallFriction{"wallFriction", Rule::Unit, 0.0f};
+inline constexpr Property kRadius{"radius", Rule::NonNegative, 0.0f};
+inline constexpr Property kSlope{"slope", Rule::Corner, Vec2{}};
+inline constexpr Property kSegment{"segment", Rule::Any, false};
 /// A tile map's own: the side of its square tiles (checkTileMapDef has its further rules).
 inline constexpr Property kTile{"tile", Rule::Finite, 0.0f, true};
 
@@ -174,9 +181,9 @@ template <class T> using CType = typename CTypeOf<T>::type;
 /// True if `rule` is one for values of type T.
 template <class T> constexpr bool ruleFits(Rule rule) {
     if constexpr (std::is_same_v<T, float>)
-        return rule != Rule::Direction;
+        return rule != Rule::Direction && rule != Rule::Corner;
     else if constexpr (std::is_same_v<T, Vec2>)
-        return rule == Rule::Direction || rule == Rule::Any;
+        return rule == Rule::Direction || rule == Rule::Corner || rule == Rule::Any;
     else
         return rule == Rule::Any;
 }
@@ -236,6 +243,9 @@ inline constexpr BodyField kBodyFields[] = {
     {kUserData, &BodyDef::userData, &jostle_body_def::user_data},
     {kCharacter, &BodyDef::character, &jostle_body_def::character},
     {kWallFriction, &BodyDef::wallFriction, &jostle_body_def::wall_friction},
+    {kRadius, &BodyDef::radius, &jostle_body_def::radius},
+    {kSlope, &BodyDef::slope, &jostle_body_def::slope},
+    {kSegment, &BodyDef::segment, &jostle_body_def::segment},
 };
 
 /// TileMapDef's members but its rows, which are a map's alone, in tilemap.hpp's order.

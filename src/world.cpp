@@ -201,6 +201,9 @@ void World::setSolver(Solver solver) {
     requireNotStepping(*state_, "setSolver");
     if (solver != Solver::Classic && solver != Solver::Physical)
         fail("setSolver", "solver must be classic or physical");
+    if (solver == Solver::Classic && state_->shapedBodies > 0)
+        fail("setSolver", "the classic model has sharp boxes only, and this world has "
+                          "rounded bodies, ramps or segments");
     state_->def.solver = solver;
     state_->contactCache.clear();
     state_->events.clear();

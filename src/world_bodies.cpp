@@ -47,12 +47,18 @@ BodyId World::createBody(const BodyDef& def) {
         fail("createBody", "BodyDef." + problem->field + ": " + problem->problem);
 
     WorldState& w = *state_;
+    const Shape shape{def.radius, def.slope, def.segment};
+    if (shape.kind() != ShapeKind::Box && w.def.solver == Solver::Classic)
+        fail("createBody", std::string("BodyDef.") + (def.slope != Vec2{} ? "slope" : "radius") +
+                               ": the classic model has sharp boxes only");
     const std::optional<std::uint32_t> taken = takeSlot(w.slots, w.freeSlots, w.firstGeneration);
     if (!taken)
         fail("createBody", "too many bodies");
     const std::uint32_t slot = *taken;
     w.created.resize(w.slots.size());
     w.created[slot] = w.bodiesCreated++;
+    w.shapes.resize(w.slots.size());
+    w.shapes[slot] = shape;
     Body& body = w.slots[slot];
     const std::uint32_t generation = body.generation;
     body = Body{};
@@ -63,6 +69,9 @@ BodyId World::createBody(const BodyDef& def) {
     body.half = {def.hw, def.hh};
     forEachKeptSetting([&](auto given, auto kept) { body.*kept = def.*given; });
     body.lastStepVelocity = body.velocity;
+    body.shape = shape.kind();
+    if (!body.isBox())
+        ++w.shapedBodies;
     body.updateMass();
 
     if (slot < w.events.touching.size())
@@ -81,6 +90,8 @@ void World::destroyBody(BodyId id) {
     if (body.type == BodyType::Static)
         w.restingDirty = true;
     body.alive = false;
+    if (!body.isBox())
+        --w.shapedBodies;
     body.generation = nextGeneration(body.generation);
     (w.stepping ? w.pendingFree : w.freeSlots).push_back(id.index);
     w.order.erase(std::find(w.order.begin(), w.order.end(), id));
@@ -122,6 +133,10 @@ BodyDef World::bodyDef(BodyId id) const {
                 .vx = b.velocity.x,
                 .vy = b.velocity.y};
     forEachKeptSetting([&](auto given, auto kept) { def.*given = b.*kept; });
+    const Shape& shape = state_->shapes[id.index];
+    def.radius = shape.radius;
+    def.slope = shape.slope;
+    def.segment = shape.segment;
     return def;
 }
 
@@ -133,6 +148,8 @@ void World::setType(BodyId id, BodyType type) {
     Body& b = lookUp(*state_, id, "setType");
     if (const char* problem = properties::formProblem(type))
         fail("setType", std::string("type ") + problem);
+    if (type == BodyType::Dynamic && (b.shape == ShapeKind::Ramp || b.shape == ShapeKind::Segment))
+        fail("setType", "a ramp or segment must be static or kinematic");
     disturb(*state_, id.index); // what rested on it, where it was
     state_->restingDirty = true;
     b.type = type;
@@ -176,6 +193,8 @@ void World::setHalfExtents(BodyId id, Vec2 halfExtents) {
     Body& b = lookUp(*state_, id, "setHalfExtents");
     require("setHalfExtents", "halfExtents.x", properties::kHw.rule, halfExtents.x);
     require("setHalfExtents", "halfExtents.y", properties::kHh.rule, halfExtents.y);
+    if (std::min(halfExtents.x, halfExtents.y) < state_->shapes[id.index].radius)
+        fail("setHalfExtents", "halfExtents must be >= the body's radius");
     disturb(*state_, id.index); // what rested on it, as it was
     b.half = halfExtents;
     b.updateMass();
@@ -264,6 +283,8 @@ void World::setOneWay(BodyId id, Vec2 normal) {
     Body& body = lookUp(*state_, id, "setOneWay");
     if (!isValidOneWay(normal))
         fail("setOneWay", "normal must be {0, 0} or one of {±1, 0}, {0, ±1}");
+    if (normal != Vec2{} && !body.isBox())
+        fail("setOneWay", "a rounded body, ramp or segment cannot be one-way");
     body.oneWay = normal;
     disturb(*state_, id.index);
 }

@@ -10,6 +10,7 @@
 #include "physical/contact_cache.hpp"
 #include "physical/scratch.hpp"
 #include "query_index.hpp"
+#include "shapes.hpp"
 #include "tilemap.hpp"
 
 #include <cstddef>
@@ -44,6 +45,8 @@ struct alignas(64) Body {
     bool asleep = false;
     /// BodyDef::character: walks at walkSpeed, rubs only on floors (docs/characters.md).
     bool character = false;
+    /// A box, or a shape whose numbers are in WorldState::shapes (shapes.hpp).
+    ShapeKind shape = ShapeKind::Box;
 
     // --- Read once a step, or less ---
     void* userData = nullptr;
@@ -75,6 +78,8 @@ struct alignas(64) Body {
     float dynamicMass() const { return mass > 0.0f ? mass : density * 4.0f * half.x * half.y; }
     /// Sets invMass from the type, mass, density and size.
     void updateMass() { invMass = isDynamic() ? 1.0f / dynamicMass() : 0.0f; }
+    /// A sharp box: the pair rules of geometry.hpp, not those of shapes.hpp.
+    bool isBox() const { return shape == ShapeKind::Box; }
     bool isOneWay() const { return oneWay.x != 0.0f || oneWay.y != 0.0f; }
     /// Whether this body stops another that meets it along `normal` (from this body
     /// towards the other). A one-way platform stops only what meets its blocking face,
@@ -88,7 +93,7 @@ struct alignas(64) Body {
     Box box() const { return boxAround(position, half); }
 };
 
-static_assert(offsetof(Body, character) < 64, "the hot part of Body fits one cache line");
+static_assert(offsetof(Body, shape) < 64, "the hot part of Body fits one cache line");
 static_assert(sizeof(Body) == 128, "a Body is two cache lines");
 
 /// The filter rule: each one's category shares a bit with the other's mask.
@@ -131,6 +136,11 @@ struct WorldState {
     /// result follows. Set by createBody, never renumbered.
     std::vector<std::uint64_t> created;
     std::uint64_t bodiesCreated = 0;
+    /// Each slot's shape beyond its box (radius, slope), read only when Body::shape says
+    /// it is not a box.
+    std::vector<Shape> shapes;
+    /// How many live bodies are not sharp boxes: the classic model refuses them.
+    std::uint32_t shapedBodies = 0;
 
     /// The broadphase of bodies at rest: static and sleeping bodies, rebuilt only when
     /// one of them changes (restingDirty), so a still level costs nothing per step.

@@ -1,8 +1,10 @@
 // jostle/body.hpp: bodies, as the user describes them.
 //
 // A body is an axis-aligned box: a centre (x, y) and half extents (hw, hh). It never
-// rotates. You describe one with a BodyDef, hand it to World::createBody, and get a
-// BodyId back: a small handle that the world checks on every use.
+// rotates. Within its box it may be rounded (a radius: rounded boxes, capsules, circles),
+// or cut along a diagonal (a ramp, or a ramp's sloped face alone: a one-sided segment);
+// docs/slopes-and-shapes.md. You describe one with a BodyDef, hand it to World::createBody, and get
+// a BodyId back: a small handle that the world checks on every use.
 #pragma once
 
 #include "jostle/math.hpp"
@@ -103,6 +105,20 @@ struct BodyDef {
     /// A character's friction against walls and ceilings, in [0, 1]. 0 (the default):
     /// it slides along a wall it is pressed into as in open air.
     float wallFriction = 0.0f;
+    /// Rounds the box's corners with this radius, in [0, min(hw, hh)]: hw = hh = radius is
+    /// a circle, hw = radius < hh an upright capsule. 0 (the default): a sharp box. Mass
+    /// still comes from the box's area, 4 × hw × hh. The physical model only.
+    float radius = 0.0f;
+    /// A ramp: the box cut along a diagonal, keeping the right triangle whose sloped face
+    /// looks towards this corner (each component -1 or +1). {-1, -1} in a y-down world is
+    /// a floor rising to the right (the slope faces up and left), {1, 1} a ceiling
+    /// falling to the right. {0, 0} (the default): not cut. Ramps are static or
+    /// kinematic, and not rounded. The physical model only.
+    Vec2 slope{};
+    /// With a slope: only the sloped face, a one-sided line from corner to corner that
+    /// blocks what comes from the side it looks towards and lets through what comes from
+    /// behind, as a one-way platform does (dropThrough works on it too).
+    bool segment = false;
     /// Yours: jostle stores it and gives it back, nothing more.
     void* userData = nullptr;
 };
@@ -115,12 +131,17 @@ struct FieldError {
 };
 
 /// The first problem with `def`, or nothing if World::createBody will accept it.
-/// The rules: every number finite; hw, hh, density > 0; mass, damping >= 0;
+/// The rules: every number finite; hw, hh, density > 0; mass, damping, radius >= 0;
 /// bounce, friction and wallFriction in [0, 1]; oneWay {0, 0} or a unit vector along x
-/// or y.
+/// or y; radius at most hw and hh; slope {0, 0} or each component -1 or +1, and then the
+/// body static or kinematic, with no radius and no oneWay; segment only with a slope; a
+/// rounded body not one-way.
 std::optional<FieldError> checkBodyDef(const BodyDef& def);
 
 /// True if `normal` is acceptable as BodyDef::oneWay.
 bool isValidOneWay(Vec2 normal);
+
+/// True if `corner` is acceptable as BodyDef::slope.
+bool isValidSlope(Vec2 corner);
 
 } // namespace jostle

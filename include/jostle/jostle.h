@@ -301,6 +301,13 @@ typedef struct jostle_body_def {
     /// jostle_body_set_walk_speed along its ground, rubs only on floors.
     bool character;
     float wall_friction; ///< a character's friction on walls and ceilings, default 0
+    /// Rounds the corners (jostle::BodyDef::radius): in [0, min(hw, hh)]; hw = hh = radius
+    /// is a circle. Default 0. docs/slopes-and-shapes.md.
+    float radius;
+    /// A ramp (jostle::BodyDef::slope): the corner its sloped face looks towards, each
+    /// component -1 or 1; {0, 0} (the default): not cut. Static or kinematic only.
+    jostle_vec2 slope;
+    bool segment; ///< with a slope: the sloped face alone, a one-sided line
     /// Set by jostle_default_body_def() (and jostle_body_get_def); leave it alone.
     uint32_t internal_cookie;
 } jostle_body_def;

@@ -222,6 +222,9 @@ public:
     BodyDef bodyDef(BodyId id) const;
 
     BodyType type(BodyId id) const;
+    /// Throws jostle::Error to make a ramp or segment dynamic: they are static or
+    /// kinematic. A body's shape (BodyDef::radius, slope, segment) is fixed at creation;
+    /// bodyDef gives it back.
     void setType(BodyId id, BodyType type);
 
     Vec2 position(BodyId id) const;
@@ -231,7 +234,7 @@ public:
     Vec2 velocity(BodyId id) const;
     void setVelocity(BodyId id, Vec2 velocity);
 
-    /// Half width and half height.
+    /// Half width and half height; never below the body's radius (else jostle::Error).
     Vec2 halfExtents(BodyId id) const;
     void setHalfExtents(BodyId id, Vec2 halfExtents);
 
@@ -268,7 +271,7 @@ public:
     void setUserData(BodyId id, void* data);
 
     /// See BodyDef::oneWay. Throws jostle::Error for a normal that is not {0, 0} or a
-    /// unit vector along x or y.
+    /// unit vector along x or y, and for a rounded body, ramp or segment.
     Vec2 oneWay(BodyId id) const;
     void setOneWay(BodyId id, Vec2 normal);
     /// Lets the body fall through every one-way platform for the next `seconds` (>= 0):
@@ -369,6 +372,8 @@ public:
     /// > 0; infinity for no clamp.
     void setMaxVelocity(float maxVelocity);
     Solver solver() const;
+    /// Throws jostle::Error for the classic model while the world has bodies that are not
+    /// sharp boxes (the tutorial's model has boxes only; createBody refuses them there).
     void setSolver(Solver solver);
     bool sleeping() const;
     /// Turning sleeping off wakes every body.

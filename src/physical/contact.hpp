@@ -17,21 +17,26 @@ struct SolverBody {
     std::uint32_t slot;
 };
 
-/// Two bodies touching, or about to within the step, along one axis. Boxes do not
-/// rotate, so a contact is one normal along x or y and one tangent, and its effective
-/// mass is 1 / (invMassA + invMassB) and nothing else.
+/// Two bodies touching, or about to within the step, along one normal. Bodies do not
+/// rotate, so a contact is one normal and one tangent, and its effective mass is
+/// 1 / (invMassA + invMassB) and nothing else. Between boxes the normal lies along x or
+/// y, and the passes work on that axis alone; a slope or a rounded corner gives any other
+/// normal (axis kSloped).
 struct Contact {
+    static constexpr std::uint8_t kSloped = 2;
     std::uint32_t ia, ib; ///< solver bodies; a is the body created first
     /// The normal points from b towards a along one axis (0: x, 1: y), with this sign;
     /// the tangent is the other axis, with its own sign (the normal turned a quarter,
-    /// (-ny, nx)).
+    /// (-ny, nx)). kSloped: along `sloped`, the tangent (-ny, nx).
     std::uint8_t axis;
     /// Which body holds the other, staying put in shock propagation and position
     /// correction (support.hpp says when): 0 none, 1 a, 2 b.
     std::uint8_t supporter = 0;
     float sign, tangentSign;
-    float extent; ///< sum of the half extents along the normal
-    float slop;   ///< overlap left alone
+    /// The value of the centres' offset along the normal, (a - b) · normal, at which the
+    /// two touch: the sum of the half extents between boxes.
+    float extent;
+    float slop; ///< overlap left alone
     float friction;
     float invMassA, invMassB;
     float effectiveMass; ///< 1 / (invMassA + invMassB)
@@ -46,8 +51,16 @@ struct Contact {
     float tangentTarget = 0.0f;
     float bounceSpeed = 0.0f;   ///< to remember: bounce at this speed next step
     float approachSpeed = 0.0f; ///< how fast the pair closed when the step began (>= 0)
+    Vec2 sloped;                ///< the normal of a kSloped contact, unit
+    float size = 0.0f;          ///< of a kSloped contact: the smaller body's reach along the normal
 
-    Vec2 normal() const { return axis == 0 ? Vec2{sign, 0.0f} : Vec2{0.0f, sign}; }
+    Vec2 normal() const {
+        return axis == 0 ? Vec2{sign, 0.0f} : axis == 1 ? Vec2{0.0f, sign} : sloped;
+    }
+    Vec2 tangent() const {
+        const Vec2 n = normal();
+        return {-n.y, n.x};
+    }
     /// The normal impulse of the step, what the held body's partner felt.
     float totalImpulse() const { return normalImpulse + shockImpulse; }
 };

@@ -22,15 +22,59 @@ float relativeSpeed(const StepContext& step, const Contact& c, int axis) {
     return step.bodies[c.ia].velocity[axis] - step.bodies[c.ib].velocity[axis];
 }
 
+/// Applies `impulse` to both bodies of `c` along `direction`.
+void applyImpulse(StepContext& step, const Contact& c, Vec2 direction, float impulse) {
+    SolverBody& a = step.bodies[c.ia];
+    SolverBody& b = step.bodies[c.ib];
+    a.velocity[0] += direction.x * impulse * c.invMassA;
+    a.velocity[1] += direction.y * impulse * c.invMassA;
+    b.velocity[0] -= direction.x * impulse * c.invMassB;
+    b.velocity[1] -= direction.y * impulse * c.invMassB;
+}
+
+float relativeSpeed(const StepContext& step, const Contact& c, Vec2 direction) {
+    return dot(step.velocityOf(c.ia) - step.velocityOf(c.ib), direction);
+}
+
 void warmStart(StepContext& step) {
     for (const Contact& c : step.contacts) {
+        if (c.axis == Contact::kSloped) {
+            applyImpulse(step, c, c.sloped, c.normalImpulse);
+            applyImpulse(step, c, c.tangent(), c.tangentImpulse);
+            continue;
+        }
         applyImpulse(step, c, c.axis, c.sign * c.normalImpulse);
         applyImpulse(step, c, 1 - c.axis, c.tangentSign * c.tangentImpulse);
     }
 }
 
+/// velocityPass for a contact along a slope or a rounded corner: the same, along its
+/// normal and tangent.
+void solveSloped(StepContext& step, Contact& c) {
+    {
+        const float speed = relativeSpeed(step, c, c.sloped);
+        const float impulse =
+            std::max(-c.effectiveMass * (speed - c.targetSpeed), -c.normalImpulse);
+        applyImpulse(step, c, c.sloped, impulse);
+        c.normalImpulse += impulse;
+    }
+    {
+        const Vec2 tangent = c.tangent();
+        const float speed = relativeSpeed(step, c, tangent);
+        const float limit = c.friction * c.normalImpulse;
+        const float impulse = std::clamp(-c.effectiveMass * (speed - c.tangentTarget),
+                                         -limit - c.tangentImpulse, limit - c.tangentImpulse);
+        applyImpulse(step, c, tangent, impulse);
+        c.tangentImpulse = std::clamp(c.tangentImpulse + impulse, -limit, limit);
+    }
+}
+
 void velocityPass(StepContext& step) {
     for (Contact& c : step.contacts) {
+        if (c.axis == Contact::kSloped) {
+            solveSloped(step, c);
+            continue;
+        }
         // Normal: push (never pull) until the pair stops approaching.
         {
             const float speed = c.sign * relativeSpeed(step, c, c.axis);
@@ -68,6 +112,16 @@ void propagateShock(StepContext& step) {
         const float invMass = c.supporter == 1 ? c.invMassB : c.invMassA;
         if (invMass <= 0.0f)
             continue;
+        if (c.axis == Contact::kSloped) {
+            const float speed = relativeSpeed(step, c, c.sloped);
+            const float impulse = std::max(-(speed - c.targetSpeed) / invMass, -c.normalImpulse);
+            SolverBody& held = step.bodies[c.supporter == 1 ? c.ib : c.ia];
+            const float sign = c.supporter == 1 ? -1.0f : 1.0f;
+            held.velocity[0] += sign * c.sloped.x * impulse * invMass;
+            held.velocity[1] += sign * c.sloped.y * impulse * invMass;
+            c.shockImpulse = impulse;
+            continue;
+        }
         const float speed = c.sign * relativeSpeed(step, c, c.axis);
         const float impulse = std::max(-(speed - c.targetSpeed) / invMass, -c.normalImpulse);
         if (c.supporter == 1)

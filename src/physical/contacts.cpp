@@ -3,6 +3,7 @@
 #include "contacts.hpp"
 
 #include "../characters.hpp"
+#include "../shapes.hpp"
 #include "seams.hpp"
 #include "step_context.hpp"
 
@@ -13,6 +14,9 @@
 namespace jostle {
 
 namespace {
+
+/// Two normals this close (the cosine of their angle) are one contact's, from step to step.
+constexpr float kSameNormal = 0.995f;
 
 float combineFriction(FrictionMix mix, float a, float b) {
     return mix == FrictionMix::GeometricMean ? std::sqrt(a * b) : std::min(a, b);
@@ -72,7 +76,7 @@ bool staysApart(const Body& a, const Body& b, Vec2 normal, float gap, float dt) 
 ///   path across the step first touches it, and not at all if the path clears it: a box
 ///   rising past a ledge does not hit the ledge's side.
 /// - If the corner is a seam between two static bodies, the face the contact would push
-///   on is inside the level, and the other axis is the one.
+///   on is inside the level, and the other axis is the one; if both are, no contact.
 std::optional<Facing> chooseNormal(const StepContext& step, const Body& a, const Body& b) {
     const Vec2 d = a.position - b.position;
     const float gapX = std::abs(d.x) - (a.half.x + b.half.x);
@@ -97,8 +101,15 @@ std::optional<Facing> chooseNormal(const StepContext& step, const Body& a, const
     if (gapX >= -skinX && gapY >= -skinY && a.type != b.type &&
         (a.type == BodyType::Static || b.type == BodyType::Static)) {
         const bool aStatic = a.type == BodyType::Static;
-        if (isSeam(step.world, aStatic ? a : b, aStatic ? b : a, alongX ? 0 : 1))
+        const Body& wall = aStatic ? a : b;
+        const Body& other = aStatic ? b : a;
+        if (isSeam(step.world, wall, other, alongX ? 0 : 1)) {
             alongX = !alongX;
+            // Seams on both faces: a box inside the level, under a ramp say, which the
+            // bodies around it stand for. (Only ramps make such boxes touchable.)
+            if (step.world.shapedBodies > 0 && isSeam(step.world, wall, other, alongX ? 0 : 1))
+                return std::nullopt;
+        }
     }
     const Facing facing = alongX ? Facing{normalX, gapX, skinX} : Facing{normalY, gapY, skinY};
     if (staysApart(a, b, facing.normal, facing.gap, step.dt))
@@ -106,13 +117,104 @@ std::optional<Facing> chooseNormal(const StepContext& step, const Body& a, const
     return facing;
 }
 
+/// How far a body reaches from its centre along unit `normal`, for its slop and skin: a
+/// ramp or segment counts its smaller half extent.
+float reachAlong(const Body& body, const Shape& shape, Vec2 normal) {
+    if (body.shape == ShapeKind::Ramp || body.shape == ShapeKind::Segment)
+        return std::min(body.half.x, body.half.y);
+    const float r = shape.radius;
+    return std::abs(normal.x) * (body.half.x - r) + std::abs(normal.y) * (body.half.y - r) + r;
+}
+
+/// A pair where one body is not a sharp box (shapes.hpp), as chooseNormal for boxes.
+struct ShapedFacing {
+    Vec2 normal; ///< from b towards a
+    float gap;
+    float skin;
+    float extent;
+    float size; ///< the smaller reach along the normal
+};
+
+/// Where a pair with a rounded body, a ramp or a segment touches, or nothing if it cannot
+/// meet in this step. One body is the obstacle, whose outline the other's centre stays out
+/// of: a ramp or segment if there is one, else a static or kinematic body, else b. Only
+/// the faces of a static obstacle the level leaves bare push (seams.hpp's pushingFaces); a
+/// segment pushes with its slope alone, and only what was on its side when the step began.
+std::optional<ShapedFacing> chooseShapedNormal(const StepContext& step, std::uint32_t slotA,
+                                               std::uint32_t slotB) {
+    const WorldState& w = step.world;
+    const Body& a = w.slots[slotA];
+    const Body& b = w.slots[slotB];
+    auto isCut = [](const Body& body) {
+        return body.shape == ShapeKind::Ramp || body.shape == ShapeKind::Segment;
+    };
+    if (isCut(a) && isCut(b))
+        return std::nullopt; // ramps are infinitely heavy: two never push each other
+    const bool aIsObstacle = isCut(a) || (!isCut(b) && a.invMass == 0.0f);
+    const std::uint32_t moverSlot = aIsObstacle ? slotB : slotA;
+    const std::uint32_t obstacleSlot = aIsObstacle ? slotA : slotB;
+    const Body& mover = w.slots[moverSlot];
+    const Body& obstacle = w.slots[obstacleSlot];
+    const Shape& moverShape = w.shapes[moverSlot];
+    const Shape& obstacleShape = w.shapes[obstacleSlot];
+    const float r = moverShape.radius;
+    const Outline outline = outlineOf(mover.half - Vec2{r, r}, r, obstacle.half, obstacleShape);
+    const std::uint8_t pushing = pushingFaces(w, obstacle, mover);
+    float apart = 0.0f;
+    const std::optional<Touch> touch =
+        touchOf(outline, mover.position - obstacle.position, pushing, true, apart);
+    if (!touch)
+        return std::nullopt;
+    const float size = std::min(reachAlong(mover, moverShape, touch->normal),
+                                reachAlong(obstacle, obstacleShape, touch->normal));
+    const float skin = std::max(2.0f * step.options.slop, kMinimumSkin) * size;
+    const float reachable = (length(mover.velocity) + length(obstacle.velocity)) * step.dt;
+    if ((apart > skin && apart > reachable) ||
+        staysApart(mover, obstacle, touch->normal, touch->gap, step.dt))
+        return std::nullopt;
+    if (obstacle.shape == ShapeKind::Segment &&
+        (touch->gap < -skin || mover.dropThroughTime > 0.0f))
+        return std::nullopt;
+    return ShapedFacing{aIsObstacle ? -touch->normal : touch->normal, touch->gap, skin,
+                        touch->extent, size};
+}
+
+/// contactOf for a pair chooseShapedNormal found: along an axis if its normal is one.
+Contact shapedContactOf(const StepContext& step, const Body& a, const Body& b,
+                        const ShapedFacing& facing) {
+    Contact c;
+    const Vec2 n = facing.normal;
+    if (n.x == 0.0f || n.y == 0.0f) {
+        const bool alongX = n.x != 0.0f;
+        c.axis = alongX ? 0 : 1;
+        c.sign = alongX ? n.x : n.y;
+        c.tangentSign = alongX ? n.x : -n.y;
+    } else {
+        c.axis = Contact::kSloped;
+        c.sign = c.tangentSign = 1.0f;
+    }
+    c.sloped = n;
+    c.extent = facing.extent;
+    c.size = facing.size;
+    c.slop = step.options.slop * facing.size;
+    const Vec2 down = step.world.events.down;
+    c.friction = combineFriction(step.options.frictionMix, frictionAgainst(a, n, down),
+                                 frictionAgainst(b, -n, down));
+    if (a.character || b.character)
+        c.tangentTarget = dot(walkOver(a, b, n, down), c.tangent());
+    return c;
+}
+
 /// Starts `c` from last step's impulses if the cache holds the same contact: the same
 /// bodies, touching along the same normal. Returns what it found.
 const CachedContact* warmStart(const StepContext& step, Contact& c, std::uint32_t slotA,
                                std::uint32_t slotB, Vec2 normal) {
     const CachedContact* found = step.world.contactCache.find(slotA, slotB);
+    // The same normal, or nearly: a rounded body rolling over a corner turns it a little
+    // every step.
     if (!found || found->generationA != step.world.slots[slotA].generation ||
-        found->generationB != step.world.slots[slotB].generation || found->normal != normal)
+        found->generationB != step.world.slots[slotB].generation ||
+        !(found->normal == normal || dot(found->normal, normal) > kSameNormal))
         return nullptr;
     c.normalImpulse = found->normalImpulse;
     c.tangentImpulse = found->tangentImpulse;
@@ -189,18 +291,32 @@ void buildContacts(StepContext& step) {
                 step.scratch.sensorPairs.push_back(a.sensor ? pair : BodyPair{pair.b, pair.a});
             continue;
         }
-        const std::optional<Facing> facing = chooseNormal(step, a, b);
-        if (!facing)
-            continue;
-        const auto [normal, gap, skin] = *facing;
-        // The normal points from b towards a; a pair touching within the skin was on the
-        // platform's side when the step began.
-        if ((a.isOneWay() && !a.blocks(-normal, gap >= -skin, b.dropThroughTime)) ||
-            (b.isOneWay() && !b.blocks(normal, gap >= -skin, a.dropThroughTime)))
-            continue;
+        Vec2 normal;
+        float gap = 0.0f;
+        Contact c;
+        if (a.isBox() && b.isBox()) {
+            const std::optional<Facing> facing = chooseNormal(step, a, b);
+            if (!facing)
+                continue;
+            normal = facing->normal;
+            gap = facing->gap;
+            const float skin = facing->skin;
+            // The normal points from b towards a; a pair touching within the skin was on
+            // the platform's side when the step began.
+            if ((a.isOneWay() && !a.blocks(-normal, gap >= -skin, b.dropThroughTime)) ||
+                (b.isOneWay() && !b.blocks(normal, gap >= -skin, a.dropThroughTime)))
+                continue;
+            c = contactOf(step, a, b, normal);
+        } else {
+            const std::optional<ShapedFacing> facing = chooseShapedNormal(step, pair.a, pair.b);
+            if (!facing)
+                continue;
+            normal = facing->normal;
+            gap = facing->gap;
+            c = shapedContactOf(step, a, b, *facing);
+        }
 
         const float approach = dot(a.velocity - b.velocity, normal);
-        Contact c = contactOf(step, a, b, normal);
         c.approachSpeed = std::max(0.0f, -approach);
         float bounce = std::max(a.bounce, b.bounce);
         if (w.preSolve) {

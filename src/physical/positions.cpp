@@ -19,17 +19,18 @@ bool correctionPass(StepContext& step) {
         const float overlap = step.overlapOf(c);
         // Centres that have passed each other along the normal (a kinematic body that
         // went on through what it pushed): pushing "out" would push through.
-        if (overlap > c.extent)
+        const bool sloped = c.axis == Contact::kSloped;
+        if (!sloped && overlap > c.extent)
             continue;
         const float excess = overlap - c.slop;
         if (!(excess > 0.0f))
             continue;
         // An excess within float noise goes at once: a fraction of it would round to
         // nothing, and a pair pushed from both sides would stay beyond the slop for good.
-        const float correction =
-            excess <= step.noiseOf(c)
-                ? excess
-                : std::min(step.options.correction * excess, 0.25f * (c.extent - c.slop));
+        const float correction = excess <= step.noiseOf(c)
+                                     ? excess
+                                     : std::min(step.options.correction * excess,
+                                                0.25f * ((sloped ? c.size : c.extent) - c.slop));
         // The body that holds the other stays put (support.hpp); where neither holds, the
         // two share the correction by inverse mass.
         const float shareA = c.supporter == 1   ? 0.0f
@@ -40,8 +41,15 @@ bool correctionPass(StepContext& step) {
                                                 : c.invMassB * c.effectiveMass;
         const float moveA = correction * shareA;
         const float moveB = correction * shareB;
-        a.position[c.axis] += c.sign * moveA;
-        b.position[c.axis] -= c.sign * moveB;
+        if (sloped) {
+            a.position[0] += c.sloped.x * moveA;
+            a.position[1] += c.sloped.y * moveA;
+            b.position[0] -= c.sloped.x * moveB;
+            b.position[1] -= c.sloped.y * moveB;
+        } else {
+            a.position[c.axis] += c.sign * moveA;
+            b.position[c.axis] -= c.sign * moveB;
+        }
         moved = true;
     }
     return moved;

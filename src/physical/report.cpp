@@ -28,7 +28,9 @@ void findCrush(StepContext& step, const Contact& c, std::uint32_t slotA, std::ui
     const std::uint32_t body = kinematicA ? slotB : slotA;
     const std::uint32_t by = kinematicA ? slotA : slotB;
     const Vec2 into = kinematicA ? -c.normal() : c.normal();
-    const float half = w.slots[body].half[c.axis];
+    const Vec2 bodyHalf = w.slots[body].half;
+    const float half =
+        c.axis == Contact::kSloped ? std::min(bodyHalf.x, bodyHalf.y) : bodyHalf[c.axis];
     if (dot(w.slots[by].velocity, into) > 0.0f && overlap > kCrushDepth * half)
         step.scratch.crushCandidates.push_back({body, by, into});
 }
@@ -68,7 +70,8 @@ void reportEvents(StepContext& step) {
     for (const Contact& c : step.contacts) {
         // The solver bodies hold where the step leaves every body of a contact.
         const float gap = -step.overlapOf(c);
-        const float skin = std::max(2.0f * c.slop, kMinimumSkin * c.extent);
+        const float skin = std::max(
+            2.0f * c.slop, kMinimumSkin * (c.axis == Contact::kSloped ? c.size : c.extent));
         const std::uint32_t slotA = step.bodies[c.ia].slot, slotB = step.bodies[c.ib].slot;
         if (gap <= skin)
             recordContact(w, slotA, slotB, c.normal(), c.approachSpeed, c.totalImpulse());

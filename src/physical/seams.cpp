@@ -10,6 +10,64 @@
 
 namespace jostle {
 
+namespace {
+
+/// Whether `cover`, lying on the `side` of a face along `axis`, has a whole face flush
+/// against it: a box's, or a ramp's leg (the faces away from its slope).
+bool coversWith(const WorldState& world, const Body& cover, int axis, float side) {
+    if (cover.isBox())
+        return true;
+    return cover.shape == ShapeKind::Ramp &&
+           world.shapes[&cover - world.slots.data()].slope[axis] == side;
+}
+
+/// Whether the face of static `wall` on `side` along `axis` is covered by another static
+/// body where `other` spans it (the whole stretch of the face beside `other`).
+bool isCovered(const WorldState& world, const Body& wall, const Body& other, int axis, float side) {
+    const int along = 1 - axis;
+    const float face = wall.position[axis] + side * wall.half[axis];
+    const float tolerance =
+        std::max(1e-4f * std::max(wall.half[axis], other.half[axis]), 4.0f * ulpOf(face));
+    const Box wallBox = wall.box(), otherBox = other.box();
+    float from = std::max(wallBox.min[along], otherBox.min[along]);
+    float to = std::min(wallBox.max[along], otherBox.max[along]);
+    if (from > to)
+        from = to = std::clamp(other.position[along], wallBox.min[along], wallBox.max[along]);
+    Box probe;
+    probe.min[axis] = probe.max[axis] = face + side * tolerance;
+    probe.min[along] = from;
+    probe.max[along] = to;
+    bool covered = false;
+    world.restingGrid.query(probe, [&](std::uint32_t k) {
+        const Body& cover = world.slots[world.restingSlots[k]];
+        if (covered || cover.type != BodyType::Static || &cover == &wall ||
+            !coversWith(world, cover, axis, side))
+            return;
+        const Box coverBounds = cover.box();
+        const float near = side > 0.0f ? coverBounds.min[axis] : coverBounds.max[axis];
+        if (std::abs(near - face) > tolerance)
+            return;
+        covered =
+            coverBounds.min[along] <= from + tolerance && coverBounds.max[along] >= to - tolerance;
+    });
+    return covered;
+}
+
+} // namespace
+
+std::uint8_t pushingFaces(const WorldState& world, const Body& wall, const Body& other) {
+    if (wall.shape == ShapeKind::Segment)
+        return 0;
+    if (wall.type != BodyType::Static)
+        return kAllFaces;
+    std::uint8_t faces = 0;
+    for (int axis = 0; axis < 2; ++axis)
+        for (float side : {-1.0f, 1.0f})
+            if (!isCovered(world, wall, other, axis, side))
+                faces |= faceBit(axis, side);
+    return faces;
+}
+
 bool isSeam(const WorldState& world, const Body& wall, const Body& other, int axis) {
     const int along = 1 - axis; // the axis the face runs along
     // The face, and the corner of it nearest `other`; `inward` runs from that corner
@@ -33,7 +91,8 @@ bool isSeam(const WorldState& world, const Body& wall, const Body& other, int ax
     bool covered = false;
     world.restingGrid.query(probe, [&](std::uint32_t k) {
         const Body& cover = world.slots[world.restingSlots[k]];
-        if (covered || cover.type != BodyType::Static || &cover == &wall)
+        if (covered || cover.type != BodyType::Static || &cover == &wall ||
+            !coversWith(world, cover, axis, side))
             return;
         const Box coverBounds = cover.box();
         // On the other side of the face, touching it...

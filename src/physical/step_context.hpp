@@ -46,13 +46,28 @@ struct StepContext {
     /// How deep the pair of contact `c` overlaps along its normal where the solver bodies
     /// are now (negative: the gap between them).
     float overlapOf(const Contact& c) const {
+        if (c.axis == Contact::kSloped)
+            return c.extent - dot(positionOf(c.ia) - positionOf(c.ib), c.sloped);
         return c.extent - c.sign * (bodies[c.ia].position[c.axis] - bodies[c.ib].position[c.axis]);
+    }
+
+    Vec2 positionOf(std::uint32_t solverBody) const {
+        return {bodies[solverBody].position[0], bodies[solverBody].position[1]};
+    }
+    Vec2 velocityOf(std::uint32_t solverBody) const {
+        return {bodies[solverBody].velocity[0], bodies[solverBody].velocity[1]};
     }
 
     /// Float noise in the overlap of `c` where the solver bodies are now: kMinimumSkin of
     /// the smaller half extent along the normal, and four float steps at the pair's
     /// coordinates. Overlap within the slop and this is within the slop.
     float noiseOf(const Contact& c) const {
+        if (c.axis == Contact::kSloped) {
+            const Vec2 pa = positionOf(c.ia), pb = positionOf(c.ib);
+            const float largest = std::max({std::abs(pa.x), std::abs(pa.y), std::abs(pb.x),
+                                            std::abs(pb.y), std::abs(c.extent)});
+            return c.slop * noisePerSlop_ + 4.0f * ulpOf(largest);
+        }
         const float pa = bodies[c.ia].position[c.axis], pb = bodies[c.ib].position[c.axis];
         const float largest = std::max({std::abs(pa), std::abs(pb), c.extent});
         return c.slop * noisePerSlop_ + 4.0f * ulpOf(largest);
@@ -63,7 +78,7 @@ struct StepContext {
     /// position correction leaves them.
     bool beyondSlop(const Contact& c) const {
         const float overlap = overlapOf(c);
-        return overlap <= c.extent && overlap - c.slop > noiseOf(c);
+        return (c.axis == Contact::kSloped || overlap <= c.extent) && overlap - c.slop > noiseOf(c);
     }
 
 private:

@@ -1,0 +1,130 @@
+// The outline of an obstacle for a moving body, and where the body touches it.
+#include "shapes.hpp"
+
+#include <cmath>
+#include <limits>
+
+namespace jostle {
+
+namespace {
+
+/// The corners of a box of half extents h, counter-clockwise in a y-up frame, and the
+/// face of the edge that starts at each.
+constexpr Vec2 kCornerSigns[4] = {{-1.0f, -1.0f}, {1.0f, -1.0f}, {1.0f, 1.0f}, {-1.0f, 1.0f}};
+constexpr std::uint8_t kEdgeFaces[4] = {kFaceMinusY, kFacePlusX, kFacePlusY, kFaceMinusX};
+constexpr Vec2 kEdgeNormals[4] = {{0.0f, -1.0f}, {1.0f, 0.0f}, {0.0f, 1.0f}, {-1.0f, 0.0f}};
+
+Vec2 scaled(Vec2 signs, Vec2 h) {
+    return {signs.x * h.x, signs.y * h.y};
+}
+
+} // namespace
+
+Outline outlineOf(Vec2 core, float radius, Vec2 half, const Shape& shape) {
+    Outline o;
+    const ShapeKind kind = shape.kind();
+    const Vec2 obstacleCore =
+        kind == ShapeKind::Round ? half - Vec2{shape.radius, shape.radius} : half;
+    o.radius = radius + (kind == ShapeKind::Round ? shape.radius : 0.0f);
+    const Vec2 h = core + obstacleCore;
+    // The corner a ramp cuts off, or none.
+    int cut = -1;
+    if (kind == ShapeKind::Ramp || kind == ShapeKind::Segment)
+        for (int i = 0; i < 4; ++i)
+            if (kCornerSigns[i] == shape.slope)
+                cut = i;
+    // The vertices, each with the face of the edge that starts at it.
+    Vec2 vertices[5];
+    std::uint8_t faces[5];
+    int n = 0;
+    for (int i = 0; i < 4; ++i) {
+        if (i != cut) {
+            vertices[n] = scaled(kCornerSigns[i], h);
+            faces[n++] = kEdgeFaces[i];
+            continue;
+        }
+        // The cut corner becomes the sloped edge between the two faces that met there:
+        // the body's core corner sliding along the slope from tip to tip.
+        const Vec2 s = shape.slope;
+        const Vec2 onX{s.x * h.x, s.y * (core.y - obstacleCore.y)};
+        const Vec2 onY{s.x * (core.x - obstacleCore.x), s.y * h.y};
+        const bool xFaceFirst = (kEdgeFaces[(i + 3) % 4] & (kFaceMinusX | kFacePlusX)) != 0;
+        vertices[n] = xFaceFirst ? onX : onY;
+        faces[n++] = Outline::kSloped;
+        vertices[n] = xFaceFirst ? onY : onX;
+        faces[n++] = kEdgeFaces[i];
+    }
+    const Vec2 slopeNormalHere = cut >= 0 ? slopeNormal(half, shape.slope) : Vec2{};
+    for (int k = 0; k < n; ++k) {
+        Outline::Edge& e = o.edges[k];
+        e.from = vertices[k];
+        e.to = vertices[(k + 1) % n];
+        e.face = faces[k];
+        if (e.face == Outline::kSloped) {
+            e.normal = slopeNormalHere;
+        } else {
+            for (int f = 0; f < 4; ++f)
+                if (kEdgeFaces[f] == e.face)
+                    e.normal = kEdgeNormals[f];
+        }
+        e.offset = dot(e.from, e.normal);
+    }
+    o.count = n;
+    return o;
+}
+
+std::optional<Touch> touchOf(const Outline& outline, Vec2 offset, std::uint8_t pushing,
+                             bool slopedPushes, float& apart) {
+    const float radius = outline.radius;
+    auto pushes = [&](int k) {
+        const std::uint8_t face = outline.edges[k].face;
+        return face == Outline::kSloped ? slopedPushes : (pushing & face) != 0;
+    };
+    apart = -std::numeric_limits<float>::infinity();
+    int best = -1;
+    float bestSeparation = -std::numeric_limits<float>::infinity();
+    for (int k = 0; k < outline.count; ++k) {
+        const Outline::Edge& e = outline.edges[k];
+        const float separation = dot(offset, e.normal) - e.offset;
+        apart = std::max(apart, separation - radius);
+        if (pushes(k) && separation > bestSeparation) {
+            best = k;
+            bestSeparation = separation;
+        }
+    }
+    if (best < 0)
+        return std::nullopt;
+    const Outline::Edge& e = outline.edges[best];
+    const Touch alongFace{e.normal, bestSeparation - radius, e.offset + radius};
+    if (!(bestSeparation > 0.0f))
+        return alongFace; // inside: out through the pushing edge it is least deep behind
+    // In front of the edge: past one of its ends, around the corner if the edge beyond
+    // pushes too.
+    const Vec2 along = e.to - e.from;
+    const float t = dot(offset - e.from, along);
+    const float lengthSquared = dot(along, along);
+    int next;
+    Vec2 corner;
+    if (lengthSquared > 0.0f && t < 0.0f) {
+        next = (best + outline.count - 1) % outline.count;
+        corner = e.from;
+    } else if (lengthSquared > 0.0f && t > lengthSquared) {
+        next = (best + 1) % outline.count;
+        corner = e.to;
+    } else if (lengthSquared == 0.0f) {
+        next = best; // a point: round it
+        corner = e.from;
+    } else {
+        return alongFace;
+    }
+    if (!pushes(next))
+        return alongFace;
+    const Vec2 out = offset - corner;
+    const float distance = length(out);
+    if (!(distance > 0.0f))
+        return alongFace;
+    const Vec2 normal = out * (1.0f / distance);
+    return Touch{normal, distance - radius, dot(corner, normal) + radius};
+}
+
+} // namespace jostle
