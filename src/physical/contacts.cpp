@@ -161,8 +161,12 @@ std::optional<ShapedFacing> chooseShapedNormal(const StepContext& step, std::uin
     const Outline outline = outlineOf(mover.half - Vec2{r, r}, r, obstacle.half, obstacleShape);
     const std::uint8_t pushing = pushingFaces(w, obstacle, mover);
     float apart = 0.0f;
-    const std::optional<Touch> touch =
-        touchOf(outline, mover.position - obstacle.position, pushing, true, apart);
+    const Vec2 offset = mover.position - obstacle.position;
+    std::optional<Touch> touch = touchOf(outline, offset, pushing, true, apart);
+    if (!touch)
+        return std::nullopt;
+    touch =
+        atImpact(*touch, offset, (mover.velocity - obstacle.velocity) * step.dt, outline.radius);
     if (!touch)
         return std::nullopt;
     const float size = std::min(reachAlong(mover, moverShape, touch->normal),
