@@ -1,12 +1,15 @@
 // Slopes and round shapes (docs/slopes-and-shapes.md): ramps, segments, rounded bodies.
 // Expected values come from the physics of a block on an incline (a = g (sin θ - μ cos θ))
 // and from the geometry of the shapes.
+#include "jostle/tilemap.hpp"
 #include "jostle/world.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <numbers>
+#include <string>
+#include <vector>
 
 namespace jostle {
 namespace {
@@ -170,6 +173,73 @@ TEST(Slopes, AStackOfCratesOnATwoToOneRampStands) {
     run(world, 10.0f);
     for (std::size_t i = 0; i < crates.size(); ++i)
         EXPECT_LT(length(world.position(crates[i]) - start[i]), 0.05f) << "crate " << i;
+}
+
+} // namespace
+} // namespace jostle
+
+namespace jostle {
+namespace {
+
+// --- Ramp tiles --------------------------------------------------------------------------
+
+TEST(RampTiles, SlidingDownTenChainedRampsTheSpeedNeverDipsAtASeam) {
+    // Ten '/' tiles climbing to the right, solid ground under them, no friction anywhere.
+    std::vector<std::string> rows;
+    for (int r = 0; r < 10; ++r) {
+        std::string row(12, '.');
+        for (int c = 0; c < 12; ++c)
+            if (c == 9 - r)
+                row[std::size_t(c)] = '/';
+            else if (c > 9 - r)
+                row[std::size_t(c)] = '#';
+        rows.push_back(row);
+    }
+    rows.emplace_back(12, '#');
+    World world(WorldDef{.gravity = {0, 100}});
+    createTileMap(world, {.tile = 16, .rows = rows, .friction = 0});
+    // A box on the slope near the top: the line through the tiles' corners is
+    // x + y = 160 (y down); its corner (x + 4, y + 4) on it.
+    const float k = 1.0f / std::sqrt(2.0f);
+    const BodyId box =
+        world.createBody({.x = 140 - 4, .y = 20 - 4, .hw = 4, .hh = 4, .friction = 0});
+    const Vec2 downhill{-k, k};
+    float last = 0.0f;
+    int steps = 0;
+    for (; steps < 300 && world.position(box).x > 24; ++steps) {
+        world.step(kDt);
+        const float speed = dot(world.velocity(box), downhill);
+        ASSERT_GE(speed, last - 1e-3f) << "step " << steps << " at x " << world.position(box).x;
+        last = speed;
+    }
+    // It crossed most of the seams, speeding up at g sin 45° all the way.
+    EXPECT_LT(world.position(box).x, 40.0f);
+    EXPECT_NEAR(last, 100.0f * k * float(steps) * kDt, 0.01f * last);
+}
+
+TEST(RampTiles, ACharacterKeepsItsSpeedAcrossFlatRampFlatAndDownRamp) {
+    // Flat ground, two 45° tiles up, a flat top, two 2:1 ramps down, flat again.
+    World world(WorldDef{.gravity = {0, 800}});
+    createTileMap(world, {.tile = 16,
+                          .rows = {"........................", "........................",
+                                   "........................", "......./####Ll..........",
+                                   "....../#######Ll........", "########################",
+                                   "########################"}});
+    const BodyId player = world.createBody({.x = 24, .y = 72, .hw = 6, .hh = 8, .character = true});
+    world.setWalkSpeed(player, 120);
+    std::vector<float> speeds;
+    for (int i = 0; i < 600 && world.position(player).x < 320; ++i) {
+        world.step(kDt);
+        speeds.push_back(world.velocity(player).x);
+    }
+    ASSERT_GE(world.position(player).x, 320.0f) << "it got stuck at x " << world.position(player).x;
+    // Up, over and down at its walk speed: (320 - 24) / 120 s, give or take a step at each
+    // of the five junctions. (Still to do: the step a junction is met at loses speed.)
+    EXPECT_LE(speeds.size(), std::size_t((320.0f - 24.0f) / 120.0f / kDt) + 5);
+    std::size_t slow = 0;
+    for (float speed : speeds)
+        slow += std::abs(speed - 120.0f) > 1.2f ? 1 : 0;
+    EXPECT_LE(slow, 5u); // one step at each junction, for now
 }
 
 } // namespace
