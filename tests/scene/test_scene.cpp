@@ -22,6 +22,7 @@
 namespace jostle {
 namespace {
 
+using test_support::sampleNeeds;
 using test_support::sampleOf;
 using test_support::valueOf;
 using ::testing::HasSubstr;
@@ -535,9 +536,11 @@ TEST(SceneProperties, EveryBodyPropertyAFileCanHoldIsRead) {
     for (const auto& field : properties::kBodyFields) {
         const std::string name = field.property->name;
         const properties::Value sample = sampleOf(*field.property);
-        const std::string given = "\"" + name + "\": " + jsonOf(sample);
+        std::string body = "{\"" + name + "\": " + jsonOf(sample);
+        // What the sample needs besides (a ramp's type), as test_properties.cpp gives it.
+        for (const auto& [property, value] : sampleNeeds(*field.property))
+            body += std::string(", \"") + property->name + "\": " + jsonOf(value);
         // hw and hh are required: the sample replaces one of them.
-        std::string body = "{" + given;
         for (const char* size : {"hw", "hh"})
             if (name != size)
                 body += std::string(", \"") + size + "\": 1";
