@@ -1,12 +1,14 @@
 // For tests that walk the property tables of src/body_properties.hpp: a valid value of
-// each property that is not its default, and reading and writing a field by its table
-// entry.
+// each property that is not its default, what else a body needs to take it, and reading
+// and writing a field by its table entry.
 #pragma once
 
 #include "body_properties.hpp"
 
 #include <type_traits>
+#include <utility>
 #include <variant>
+#include <vector>
 
 namespace jostle::test_support {
 
@@ -30,7 +32,7 @@ inline properties::Value sampleOf(const properties::Property& property) {
                 return 7.5f;
             }
         } else if constexpr (std::is_same_v<T, Vec2>) {
-            return Vec2{0.0f, -1.0f};
+            return property.rule == Rule::Corner ? Vec2{1.0f, -1.0f} : Vec2{0.0f, -1.0f};
         } else if constexpr (std::is_same_v<T, bool>) {
             return !byDefault;
         } else if constexpr (std::is_same_v<T, std::uint32_t>) {
@@ -42,6 +44,23 @@ inline properties::Value sampleOf(const properties::Property& property) {
         }
     };
     return std::visit(sample, property.byDefault);
+}
+
+/// A property and a value of it.
+using Setting = std::pair<const properties::Property*, properties::Value>;
+
+/// What a body must also hold, besides the defaults and a size of 1 × 1 half extents, for
+/// checkBodyDef to accept the sample of `property`: a ramp (slope) is static or kinematic,
+/// and a segment is a ramp's face, so it needs a slope too. Each value is a sample itself
+/// (kinematic is the type's), so that a test writes them as it writes samples. The radius
+/// sample (0.75) fits in half extents of 1 with nothing else.
+inline std::vector<Setting> sampleNeeds(const properties::Property& property) {
+    using namespace properties;
+    if (&property == &kSlope)
+        return {{&kType, sampleOf(kType)}};
+    if (&property == &kSegment)
+        return {{&kType, sampleOf(kType)}, {&kSlope, sampleOf(kSlope)}};
+    return {};
 }
 
 /// The value of `field` in `def`.

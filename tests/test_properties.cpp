@@ -15,15 +15,18 @@ namespace {
 
 using properties::kBodyFields;
 using properties::kTileMapFields;
+using test_support::sampleNeeds;
 using test_support::sampleOf;
 using test_support::setValue;
 using test_support::valueOf;
 
 constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
 
-/// A valid body with `field` set to its sample value.
+/// A valid body with `field` set to its sample value (and what the sample needs besides).
 BodyDef bodyWithSample(const properties::BodyField& field) {
     BodyDef def{.hw = 1, .hh = 1};
+    for (const auto& [property, value] : sampleNeeds(*field.property))
+        setValue(def, *properties::find(kBodyFields, property->name), value);
     setValue(def, field, sampleOf(*field.property));
     return def;
 }

@@ -19,6 +19,7 @@
 #include <functional>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <string>
 #include <system_error>
 #include <unordered_map>
@@ -130,6 +131,23 @@ std::vector<SceneBody> readBodies(const Json& value, const std::string& place) {
         bodies.push_back(std::move(body));
     }
     return bodies;
+}
+
+/// The first body of `bodies` that a world in the model `solver` refuses, by its place
+/// ("bodies[2].radius") and why: the classic model has sharp boxes only (createBody and
+/// setSolver refuse the others there). Each body has passed checkBodyDef, so a segment has
+/// a slope.
+std::optional<FieldError> modelProblem(Solver solver, const std::vector<SceneBody>& bodies) {
+    if (solver != Solver::Classic)
+        return std::nullopt;
+    for (std::size_t i = 0; i < bodies.size(); ++i) {
+        const BodyDef& def = bodies[i].def;
+        const char* shape = def.slope != Vec2{} ? "slope" : def.radius > 0.0f ? "radius" : nullptr;
+        if (shape)
+            return FieldError{field(element("bodies", i), shape),
+                              R"(the classic model has sharp boxes only (solver "classic"))"};
+    }
+    return std::nullopt;
 }
 
 // --- Tile maps -----------------------------------------------------------------------
@@ -249,6 +267,8 @@ Scene readScene(const Json& root) {
         fail("", R"(missing field "bodies")");
     if (auto problem = checkWorldDef(scene.world))
         fail(problem->field, problem->problem);
+    if (auto problem = modelProblem(scene.world.solver, scene.bodies))
+        fail(problem->field, problem->problem);
     return scene;
 }
 
@@ -303,6 +323,8 @@ std::vector<BodyId> addBodies(World& world, const Scene& scene) {
         if (auto problem = checkBodyDef(scene.bodies[i].def))
             throw Error("addBodies: " + element("bodies", i) + "." + problem->field + ": " +
                         problem->problem);
+    if (auto problem = modelProblem(world.solver(), scene.bodies))
+        throw Error("addBodies: " + problem->field + ": " + problem->problem);
     std::vector<BodyId> ids;
     ids.reserve(scene.bodies.size());
     for (const SceneBody& body : scene.bodies)

@@ -426,6 +426,121 @@ static void test_character_def(void) {
     CHECK_NO_ERROR();
 }
 
+// --- Shapes: rounded bodies, ramps and segments ------------------------------------------
+
+/// A body from `def` with the shape's fields set; null on refusal.
+static jostle_body_id add_shape(jostle_world* world, jostle_body_type type, float hw, float hh,
+                                float radius, float sx, float sy, bool segment) {
+    jostle_body_def def = jostle_default_body_def();
+    def.type = type;
+    def.hw = hw;
+    def.hh = hh;
+    def.radius = radius;
+    def.slope.x = sx;
+    def.slope.y = sy;
+    def.segment = segment;
+    return jostle_body_create(world, &def);
+}
+
+/// The shape of `body` read back by jostle_body_get_def, and a copy made from that def
+/// has it too.
+static bool has_shape(jostle_world* world, jostle_body_id body, float radius, float sx, float sy,
+                      bool segment) {
+    const jostle_body_def def = jostle_body_get_def(world, body);
+    const jostle_body_id copy = jostle_body_create(world, &def);
+    const jostle_body_def again = jostle_body_get_def(world, copy);
+    return def.radius == radius && at(def.slope, sx, sy) && def.segment == segment &&
+           again.radius == radius && at(again.slope, sx, sy) && again.segment == segment;
+}
+
+/// Refused with an error from `function` about `phrase`, and the world keeps its count.
+#define CHECK_REFUSED_SHAPE(world, id, phrase)                                                     \
+    do {                                                                                           \
+        const int count_ = jostle_world_body_count(world);                                         \
+        CHECK(jostle_body_id_is_null(id), phrase);                                                 \
+        CHECK_ERROR("jostle_body_create", phrase);                                                 \
+        CHECK(jostle_world_body_count(world) == count_, "nothing made");                           \
+    } while (0)
+
+/// The fields carry through jostle_body_def both ways: a circle (hw = hh = radius), a
+/// capsule (hw = radius < hh), a ramp and a segment; the defaults are a sharp box.
+static void test_shapes(void) {
+    jostle_body_def b = jostle_default_body_def();
+    CHECK(b.radius == 0 && at(b.slope, 0, 0) && !b.segment, "a sharp box by default");
+
+    jostle_world* world = make_world(kG);
+    jostle_body_id floor = add_box(world, JOSTLE_BODY_STATIC, 0, 100, 200, 10);
+    jostle_body_id ball = add_shape(world, JOSTLE_BODY_DYNAMIC, 5, 5, 5, 0, 0, false);
+    jostle_body_id capsule = add_shape(world, JOSTLE_BODY_DYNAMIC, 3, 8, 3, 0, 0, false);
+    jostle_body_id ramp = add_shape(world, JOSTLE_BODY_STATIC, 40, 20, 0, -1, -1, false);
+    jostle_body_id face = add_shape(world, JOSTLE_BODY_KINEMATIC, 40, 20, 0, 1, -1, true);
+    CHECK_NO_ERROR();
+    CHECK(has_shape(world, floor, 0, 0, 0, false), "the box");
+    CHECK(has_shape(world, ball, 5, 0, 0, false), "the circle");
+    CHECK(has_shape(world, capsule, 3, 0, 0, false), "the capsule");
+    CHECK(has_shape(world, ramp, 0, -1, -1, false), "the ramp");
+    CHECK(has_shape(world, face, 0, 1, -1, true), "the segment");
+    CHECK_NO_ERROR();
+    CHECK(jostle_world_body_count(world) == 10, "five bodies and their copies");
+    run(world, 10);
+    CHECK_NO_ERROR();
+
+    // What the rules between the fields refuse, each named (checkBodyDef's words).
+    CHECK_REFUSED_SHAPE(world, add_shape(world, JOSTLE_BODY_DYNAMIC, 5, 4, 4.5f, 0, 0, false),
+                        "BodyDef.radius: must be <= hw and hh");
+    CHECK_REFUSED_SHAPE(world, add_shape(world, JOSTLE_BODY_DYNAMIC, 5, 5, -1, 0, 0, false),
+                        "BodyDef.radius: must be >= 0");
+    CHECK_REFUSED_SHAPE(world, add_shape(world, JOSTLE_BODY_DYNAMIC, 5, 5, NAN, 0, 0, false),
+                        "BodyDef.radius: must be a finite number");
+    CHECK_REFUSED_SHAPE(world, add_shape(world, JOSTLE_BODY_STATIC, 5, 5, 0, 1, 0, false),
+                        "BodyDef.slope: must be [0, 0] or each component -1 or 1");
+    CHECK_REFUSED_SHAPE(world, add_shape(world, JOSTLE_BODY_STATIC, 5, 5, 0, INFINITY, 1, false),
+                        "BodyDef.slope: must be a finite number");
+    CHECK_REFUSED_SHAPE(world, add_shape(world, JOSTLE_BODY_DYNAMIC, 5, 5, 0, -1, -1, false),
+                        "BodyDef.slope: a ramp or segment must be static or kinematic");
+    CHECK_REFUSED_SHAPE(world, add_shape(world, JOSTLE_BODY_STATIC, 5, 5, 1, -1, -1, false),
+                        "BodyDef.radius: must be 0 for a ramp or segment");
+    CHECK_REFUSED_SHAPE(world, add_shape(world, JOSTLE_BODY_STATIC, 5, 5, 0, 0, 0, true),
+                        "BodyDef.segment: needs a slope");
+    jostle_body_def round = jostle_default_body_def();
+    round.hw = round.hh = round.radius = 2;
+    round.one_way.y = -1;
+    CHECK_REFUSED_SHAPE(world, jostle_body_create(world, &round),
+                        "BodyDef.oneWay: must be [0, 0] for a rounded body, ramp or segment");
+
+    // A shape is fixed at creation: the setters that would break its rules are refused,
+    // and the body stays as it was.
+    CHECK(!jostle_body_set_type(world, ramp, JOSTLE_BODY_DYNAMIC), "a dynamic ramp");
+    CHECK_ERROR("jostle_body_set_type", "a ramp or segment must be static or kinematic");
+    CHECK(jostle_body_get_type(world, ramp) == JOSTLE_BODY_STATIC, "still static");
+    CHECK(jostle_body_set_type(world, face, JOSTLE_BODY_STATIC), "a static segment is fine");
+    CHECK(!jostle_body_set_half_extents(world, ball, (jostle_vec2){4, 5}), "smaller than r");
+    CHECK_ERROR("jostle_body_set_half_extents", "halfExtents must be >= the body's radius");
+    CHECK(at(jostle_body_get_half_extents(world, ball), 5, 5), "still 5 x 5");
+    CHECK(jostle_body_set_half_extents(world, ball, (jostle_vec2){6, 5}), "not smaller than r");
+    CHECK(!jostle_body_set_one_way(world, capsule, (jostle_vec2){0, -1}), "a one-way capsule");
+    CHECK_ERROR("jostle_body_set_one_way", "cannot be one-way");
+    CHECK(at(jostle_body_get_one_way(world, capsule), 0, 0), "solid all round");
+
+    // The classic model has sharp boxes only: a world with shapes cannot switch to it
+    // until they are gone, and a classic world refuses them.
+    CHECK(!jostle_world_set_solver(world, JOSTLE_SOLVER_CLASSIC), "classic with shapes");
+    CHECK_ERROR("jostle_world_set_solver", "the classic model has sharp boxes only");
+    CHECK(jostle_world_get_solver(world) == JOSTLE_SOLVER_PHYSICAL, "still physical");
+    jostle_body_id bodies[16];
+    const int count = jostle_world_bodies(world, bodies, 16);
+    for (int i = 0; i < count; ++i)
+        if (!same(bodies[i], floor))
+            CHECK(jostle_body_destroy(world, bodies[i]), "destroy");
+    CHECK(jostle_world_set_solver(world, JOSTLE_SOLVER_CLASSIC), "classic with boxes alone");
+    CHECK_REFUSED_SHAPE(world, add_shape(world, JOSTLE_BODY_DYNAMIC, 5, 5, 5, 0, 0, false),
+                        "BodyDef.radius: the classic model has sharp boxes only");
+    CHECK_REFUSED_SHAPE(world, add_shape(world, JOSTLE_BODY_STATIC, 5, 5, 0, 1, 1, true),
+                        "BodyDef.slope: the classic model has sharp boxes only");
+    CHECK(jostle_world_destroy(world), "destroy");
+    CHECK_NO_ERROR();
+}
+
 /// A character 12 x 16 walks at the commanded 150 on a floor (top at y = 0), exactly; an
 /// ordinary body set to 150 before each step loses friction * g * dt to the floor in it
 /// (friction 0.5: 150 - 0.5 * 800 / 60 = 143.33). The character knows it stands on the
@@ -1624,6 +1739,7 @@ int main(void) {
     test_world_settings();
     test_body_properties();
     test_character_def();
+    test_shapes();
     test_walking();
     test_ground_of_a_lift();
     test_wall_friction();

@@ -321,6 +321,30 @@ TEST_F(Cli, BadSceneNamesFileAndPlace) {
     EXPECT_EQ(r.out, ""); // not even the header
 }
 
+// The classic model has sharp boxes only: a file that asks for it with a rounded body, a
+// ramp or a segment, or such a file run with --solver classic, is bad input.
+TEST_F(Cli, TheClassicModelRefusesShapes) {
+    const std::string refused = R"(the classic model has sharp boxes only (solver "classic"))";
+    const std::string classic = write("classic.json", R"({"solver": "classic", "bodies": [
+        {"hw": 1, "hh": 1}, {"type": "static", "hw": 4, "hh": 2, "slope": [-1, -1]}]})");
+    const Result r = run("run " + quote(classic) + " --steps 1 --trace -");
+    EXPECT_EQ(r.status, 2);
+    EXPECT_EQ(r.err, "jostle: error: " + classic + ": bodies[1].slope: " + refused + "\n");
+    EXPECT_EQ(r.out, "");
+
+    const std::string physical = write("physical.json", R"({"bodies": [
+        {"id": "ball", "hw": 1, "hh": 1, "radius": 1}]})");
+    EXPECT_EQ(run("run " + quote(physical) + " --steps 1").status, 0);
+    const Result asClassic = run("run " + quote(physical) + " --steps 1 --solver classic");
+    EXPECT_EQ(asClassic.status, 2);
+    EXPECT_EQ(asClassic.err,
+              "jostle: error: " + physical + ": addBodies: bodies[0].radius: " + refused + "\n");
+    const Result render = run("render " + quote(physical) + " --out " + quote(path("ball.png")) +
+                              " --solver classic");
+    EXPECT_EQ(render.status, 2);
+    EXPECT_THAT(render.err, HasSubstr(refused));
+}
+
 TEST_F(Cli, BadTileMapNamesFileAndPlace) {
     const std::string scene = write("bad.json", R"({"bodies": [],
         "tilemap": {"tile": 16, "rows": ["....", "####", "##.#.x"]}})");

@@ -153,6 +153,45 @@ TEST_F(Render, YGrowsDownwardAndEachTypeHasItsColour) {
     EXPECT_EQ(png.at(6, 77), kBackground);
 }
 
+// A circle, a ramp and a segment, 20 × 20 each, side by side, no gravity. The bounds are
+// x -10 to 70 and y -10 to 10; with the margin of 80 / 20 = 4, 88 × 28 units fill 176 ×
+// 56 pixels, 2 a unit: image x = 2x + 28, image y = 2y + 28.
+constexpr const char* kShapes = R"({"gravity": [0, 0], "bodies": [
+    {"type": "static", "x": 0, "y": 0, "hw": 10, "hh": 10, "radius": 10},
+    {"type": "static", "x": 30, "y": 0, "hw": 10, "hh": 10, "slope": [1, -1]},
+    {"type": "static", "x": 60, "y": 0, "hw": 10, "hh": 10, "slope": [-1, -1],
+     "segment": true}]})";
+
+TEST_F(Render, ShapesAreDrawnInTheirShape) {
+    const std::string scene = write("shapes.json", kShapes);
+    const Result result = render(scene + " --out " + path("shapes.png") + " --width 176");
+    ASSERT_EQ(result.status, 0) << result.err;
+    const Png png = readPng(path("shapes.png"));
+    ASSERT_EQ(png.height, 56);
+    // The circle: its centre filled, the corners of its box empty, its edge outlined.
+    EXPECT_EQ(png.at(28, 28), kStatic);
+    EXPECT_EQ(png.at(9, 9), kBackground);     // (-9.25, -9.25), 13 from the centre
+    EXPECT_EQ(png.at(46, 46), kBackground);   // (9.25, 9.25)
+    EXPECT_EQ(png.at(8, 28), kStaticOutline); // (-9.75, 0.25): in, its left neighbour out
+    EXPECT_EQ(png.at(7, 28), kBackground);
+    EXPECT_EQ(png.at(28, 8), kStaticOutline); // the top
+    // The ramp [1, -1]: the top right corner of its box cut away, the bottom left kept.
+    EXPECT_EQ(png.at(106, 10), kBackground);   // (39.25, -8.75)
+    EXPECT_EQ(png.at(100, 20), kBackground);   // (36.25, -3.75)
+    EXPECT_EQ(png.at(72, 44), kStatic);        // (22.25, 8.25)
+    EXPECT_EQ(png.at(80, 30), kStatic);        // (26.25, 1.25)
+    EXPECT_EQ(png.at(68, 30), kStaticOutline); // its left side, x = 20
+    // The segment [-1, -1]: the line from (50, 10) to (70, -10), nothing on either side,
+    // and a tick from its middle towards the corner it looks at (up and left).
+    EXPECT_EQ(png.at(148, 28), kStatic); // (60, 0)
+    EXPECT_EQ(png.at(138, 38), kStatic); // (55, 5)
+    EXPECT_EQ(png.at(158, 18), kStatic); // (65, -5)
+    EXPECT_EQ(png.at(136, 20), kBackground);
+    EXPECT_EQ(png.at(160, 40), kBackground);
+    EXPECT_EQ(png.at(145, 25), kStatic); // the tick, 3 pixels up and left of the middle
+    EXPECT_EQ(png.at(151, 31), kBackground);
+}
+
 TEST_F(Render, GifHasAFrameForStepZeroAndEveryKthStep) {
     const std::string scene = write("box.json", kOneBox);
     const Result result = render(scene + " --out " + path("anim.gif") +

@@ -22,6 +22,7 @@
 namespace jostle {
 namespace {
 
+using test_support::sampleNeeds;
 using test_support::sampleOf;
 using test_support::valueOf;
 using ::testing::HasSubstr;
@@ -118,6 +119,26 @@ TEST(SceneParse, EveryFieldIsReadAsWritten) {
     EXPECT_TRUE(crate.def.bullet);
     EXPECT_FALSE(floor.def.bullet);
     EXPECT_EQ(crate.def.userData, nullptr);
+}
+
+TEST(SceneParse, ShapesAreReadAsWritten) {
+    const Scene scene = parseScene(R"({"bodies": [
+        {"id": "ball", "hw": 2, "hh": 2, "radius": 2},
+        {"id": "capsule", "hw": 1, "hh": 3, "radius": 1},
+        {"id": "ramp", "type": "static", "hw": 8, "hh": 4, "slope": [-1, -1]},
+        {"id": "face", "type": "kinematic", "hw": 8, "hh": 4, "slope": [1, -1], "segment": true},
+        {"id": "box", "hw": 1, "hh": 1}]})");
+    ASSERT_EQ(scene.bodies.size(), 5u);
+    EXPECT_EQ(scene.bodies[0].def.radius, 2.0f);
+    EXPECT_EQ(scene.bodies[1].def.radius, 1.0f);
+    EXPECT_EQ(scene.bodies[2].def.slope, (Vec2{-1.0f, -1.0f}));
+    EXPECT_FALSE(scene.bodies[2].def.segment);
+    EXPECT_EQ(scene.bodies[3].def.slope, (Vec2{1.0f, -1.0f}));
+    EXPECT_TRUE(scene.bodies[3].def.segment);
+    const BodyDef& box = scene.bodies[4].def; // the defaults: a sharp box
+    EXPECT_EQ(box.radius, 0.0f);
+    EXPECT_EQ(box.slope, Vec2{});
+    EXPECT_FALSE(box.segment);
 }
 
 TEST(SceneParse, DefaultsAreThoseOfTheFormat) {
@@ -442,6 +463,54 @@ TEST(SceneErrors, ValueRulesOfBodiesGetTheirPlace) {
                 StartsWith("bodies[0].damping: must be"));
 }
 
+// Rounded bodies, ramps and segments: the rules between fields are checkBodyDef's too.
+TEST(SceneErrors, ShapesFollowTheRulesOfCheckBodyDef) {
+    const std::string three = std::string(kBox) + ", " + kBox + ", " + kBox + ", ";
+    EXPECT_EQ(errorOf(withBodies(three + R"({"hw": 1, "hh": 2, "radius": 1.5})")),
+              "bodies[3].radius: must be <= hw and hh");
+    EXPECT_EQ(errorOf(withBodies(R"({"hw": 1, "hh": 1, "radius": -0.5})")),
+              "bodies[0].radius: must be >= 0");
+    EXPECT_EQ(errorOf(withBodies(R"({"hw": 1, "hh": 1, "radius": "round"})")),
+              "bodies[0].radius: expected a number, got string");
+    EXPECT_EQ(errorOf(withBodies(R"({"type": "static", "hw": 2, "hh": 1, "slope": [1, 0]})")),
+              "bodies[0].slope: must be [0, 0] or each component -1 or 1");
+    EXPECT_EQ(errorOf(withBodies(R"({"type": "static", "hw": 2, "hh": 1, "slope": [-1]})")),
+              "bodies[0].slope: expected an array of 2 numbers, got 1 number");
+    EXPECT_EQ(errorOf(withBodies(R"({"type": "static", "hw": 2, "hh": 1, "slope": "up"})")),
+              "bodies[0].slope: expected an array of 2 numbers, got string");
+    EXPECT_EQ(errorOf(withBodies(kBox + std::string(R"(, {"hw": 2, "hh": 1, "slope": [-1, -1]})"))),
+              "bodies[1].slope: a ramp or segment must be static or kinematic");
+    EXPECT_EQ(errorOf(withBodies(
+                  R"({"type": "static", "hw": 2, "hh": 1, "slope": [-1, -1], "radius": 0.5})")),
+              "bodies[0].radius: must be 0 for a ramp or segment");
+    EXPECT_EQ(errorOf(withBodies(R"({"type": "static", "hw": 2, "hh": 1, "segment": true})")),
+              "bodies[0].segment: needs a slope: a segment is a ramp's sloped face");
+    EXPECT_EQ(errorOf(withBodies(
+                  R"({"type": "static", "hw": 2, "hh": 1, "slope": [-1, -1], "segment": 1})")),
+              "bodies[0].segment: expected true or false, got number");
+    EXPECT_EQ(errorOf(withBodies(R"({"hw": 1, "hh": 1, "radius": 1, "oneWay": [0, -1]})")),
+              "bodies[0].oneWay: must be [0, 0] for a rounded body, ramp or segment");
+    EXPECT_EQ(errorOf(withBodies(
+                  R"({"type": "static", "hw": 2, "hh": 1, "slope": [1, 1], "oneWay": [0, -1]})")),
+              "bodies[0].oneWay: must be [0, 0] for a rounded body, ramp or segment");
+}
+
+// The classic model has sharp boxes only: a file that asks for it and holds a rounded
+// body, a ramp or a segment is refused at the first such body, wherever "solver" stands.
+TEST(SceneErrors, TheClassicModelRefusesShapes) {
+    const std::string refused = R"(: the classic model has sharp boxes only (solver "classic"))";
+    EXPECT_EQ(errorOf(R"({"solver": "classic", "bodies": [)" + std::string(kBox) +
+                      R"(, {"hw": 1, "hh": 1, "radius": 1}]})"),
+              "bodies[1].radius" + refused);
+    EXPECT_EQ(errorOf(R"({"bodies": [{"type": "static", "hw": 2, "hh": 1, "slope": [-1, -1],
+                                      "segment": true}], "solver": "classic"})"),
+              "bodies[0].slope" + refused);
+    // Boxes alone are the classic model's; shapes are the physical model's.
+    EXPECT_EQ(errorOf(R"({"solver": "classic", "bodies": [)" + std::string(kBox) + "]}"), "");
+    EXPECT_EQ(errorOf(R"({"solver": "physical", "bodies": [{"hw": 1, "hh": 1, "radius": 1}]})"),
+              "");
+}
+
 TEST(SceneErrors, Ids) {
     const std::string body = R"({"hw": 1, "hh": 1, "id": )";
     EXPECT_EQ(errorOf(withBodies(body + R"("floor"}, )" + body + R"("crate"}, )" + kBox + ", " +
@@ -535,9 +604,11 @@ TEST(SceneProperties, EveryBodyPropertyAFileCanHoldIsRead) {
     for (const auto& field : properties::kBodyFields) {
         const std::string name = field.property->name;
         const properties::Value sample = sampleOf(*field.property);
-        const std::string given = "\"" + name + "\": " + jsonOf(sample);
+        std::string body = "{\"" + name + "\": " + jsonOf(sample);
+        // What the sample needs besides (a ramp's type), as test_properties.cpp gives it.
+        for (const auto& [property, value] : sampleNeeds(*field.property))
+            body += std::string(", \"") + property->name + "\": " + jsonOf(value);
         // hw and hh are required: the sample replaces one of them.
-        std::string body = "{" + given;
         for (const char* size : {"hw", "hh"})
             if (name != size)
                 body += std::string(", \"") + size + "\": 1";
@@ -707,6 +778,29 @@ TEST(AddBodies, ABadBodyLeavesTheWorldUntouched) {
         EXPECT_THAT(std::string(error.what()), HasSubstr("bodies[1].hh: must be > 0"));
     }
     EXPECT_EQ(world.bodyCount(), 0u);
+}
+
+TEST(AddBodies, TheClassicModelRefusesShapesBeforeCreatingAny) {
+    // A Scene built in code, or a file's scene run in the classic model by
+    // `jostle run --solver classic`: the world's model decides.
+    Scene scene;
+    scene.bodies.push_back({"box", BodyDef{.hw = 1, .hh = 1}});
+    scene.bodies.push_back({"ball", BodyDef{.hw = 1, .hh = 1, .radius = 1}});
+    World classic(WorldDef{.solver = Solver::Classic});
+    try {
+        addBodies(classic, scene);
+        FAIL() << "no jostle::Error";
+    } catch (const Error& error) {
+        EXPECT_EQ(
+            std::string(error.what()),
+            R"(addBodies: bodies[1].radius: the classic model has sharp boxes only (solver "classic"))");
+    }
+    EXPECT_EQ(classic.bodyCount(), 0u);
+
+    World physical;
+    const std::vector<BodyId> ids = addBodies(physical, scene);
+    ASSERT_EQ(ids.size(), 2u);
+    EXPECT_EQ(physical.bodyDef(ids[1]).radius, 1.0f);
 }
 
 // --- addTileMaps ------------------------------------------------------------------------

@@ -54,4 +54,9 @@ PixelRect Camera::toPixels(WorldBox box) const {
     return rect;
 }
 
+Vec2 Camera::toImage(Vec2 point) const {
+    return {static_cast<float>(static_cast<double>(point.x) * scale_ + offsetX_),
+            static_cast<float>(static_cast<double>(point.y) * scale_ + offsetY_)};
+}
+
 } // namespace jostle::cli

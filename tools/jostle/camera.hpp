@@ -27,6 +27,10 @@ public:
     /// none, so that a body smaller than a pixel still shows as one.
     PixelRect toPixels(WorldBox box) const;
 
+    /// Where a point of the world falls in the image, in pixels but not whole ones:
+    /// pixel (x, y) covers [x, x + 1) × [y, y + 1).
+    Vec2 toImage(Vec2 point) const;
+
     /// Image pixels per world unit.
     double scale() const { return scale_; }
 

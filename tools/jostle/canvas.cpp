@@ -2,6 +2,7 @@
 #include "canvas.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 namespace jostle::cli {
@@ -33,6 +34,21 @@ void Canvas::outline(PixelRect rect, std::uint8_t value) {
     fill({rect.x0, rect.y1 - 1, rect.x1, rect.y1}, value); // bottom
     fill({rect.x0, rect.y0, rect.x0 + 1, rect.y1}, value); // left
     fill({rect.x1 - 1, rect.y0, rect.x1, rect.y1}, value); // right
+}
+
+void Canvas::line(double fromX, double fromY, double toX, double toY, std::uint8_t value) {
+    const double dx = toX - fromX;
+    const double dy = toY - fromY;
+    // Far beyond the canvas (a body flung away), a line is not worth a point a pixel.
+    const double length = std::max(std::abs(dx), std::abs(dy));
+    const int steps = static_cast<int>(std::ceil(std::min(length, 1e5)));
+    for (int i = 0; i <= steps; ++i) {
+        const double t = steps == 0 ? 0.0 : double(i) / double(steps);
+        const double x = std::floor(fromX + dx * t);
+        const double y = std::floor(fromY + dy * t);
+        if (x >= 0 && y >= 0 && x < width_ && y < height_)
+            pixels_[index(static_cast<int>(x), static_cast<int>(y))] = value;
+    }
 }
 
 } // namespace jostle::cli

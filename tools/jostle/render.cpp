@@ -9,6 +9,7 @@
 #include "load_scene.hpp"
 
 #include "jostle/scene.hpp"
+#include "shared/drawn_shape.hpp"
 
 #include <algorithm>
 #include <array>
@@ -16,6 +17,7 @@
 #include <cerrno>
 #include <cmath>
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace jostle::cli {
@@ -108,6 +110,42 @@ void imageSize(const RenderOptions& options, WorldBox bounds, int& width, int& h
         width = fittedSide(height, spanY + margin, spanX + margin);
 }
 
+/// The tick on a segment's blocking side: a sixth of its length, 3 to 8 pixels.
+float tickLength(float faceLength) {
+    return std::clamp(faceLength / 6.0f, 3.0f, 8.0f);
+}
+
+/// One body in its shape (shared/drawn_shape.hpp): a box, a rounded box or a ramp filled
+/// with `fill` (none: a sensor, outlined only) and outlined with `outline`; a segment as a
+/// line, with a tick from its middle towards the side it blocks, in `fill` (a sensor's in
+/// `outline`).
+void drawBody(Canvas& canvas, const Camera& camera, const World& world, BodyId body,
+              std::optional<std::uint8_t> fill, std::uint8_t outline) {
+    const PixelRect rect = camera.toPixels(boxOf(world, body));
+    const shared::DrawnShape shape = shared::DrawnShape::of(world, body);
+    if (shape.kind == shared::DrawnKind::Box) {
+        if (fill)
+            canvas.fill(rect, *fill);
+        canvas.outline(rect, outline);
+        return;
+    }
+    const shared::DrawnShape seen =
+        shape.mapped(camera.toImage(shape.centre), static_cast<float>(camera.scale()));
+    if (shape.kind != shared::DrawnKind::Segment) {
+        const auto inside = [&](double x, double y) {
+            return seen.contains({static_cast<float>(x), static_cast<float>(y)});
+        };
+        canvas.shape(rect, inside, fill, outline);
+        return;
+    }
+    const auto ends = seen.triangle();
+    const std::uint8_t colour = fill.value_or(outline);
+    canvas.line(ends[0].x, ends[0].y, ends[1].x, ends[1].y, colour);
+    const Vec2 middle = (ends[0] + ends[1]) * 0.5f;
+    const Vec2 tip = middle + seen.faceNormal() * tickLength(length(ends[1] - ends[0]));
+    canvas.line(middle.x, middle.y, tip.x, tip.y, colour);
+}
+
 void draw(Canvas& canvas, const Camera& camera, const World& world) {
     canvas.clear(0);
     std::vector<BodyId> sensors;
@@ -119,13 +157,11 @@ void draw(Canvas& canvas, const Camera& camera, const World& world) {
         const BodyType type = world.type(body);
         const bool sleeping = type != BodyType::Static && !world.isAwake(body);
         const std::uint8_t fill = fillIndex(type, sleeping);
-        const PixelRect rect = camera.toPixels(boxOf(world, body));
-        canvas.fill(rect, fill);
-        canvas.outline(rect, static_cast<std::uint8_t>(fill + 1));
+        drawBody(canvas, camera, world, body, fill, static_cast<std::uint8_t>(fill + 1));
     }
     // Last, so that what a sensor overlaps does not hide its outline.
     for (BodyId body : sensors)
-        canvas.outline(camera.toPixels(boxOf(world, body)), fillIndex(world.type(body), false));
+        drawBody(canvas, camera, world, body, std::nullopt, fillIndex(world.type(body), false));
 }
 
 /// A GIF frame's delay: the simulated time between frames, in the centiseconds GIF counts
