@@ -56,7 +56,7 @@ Outline outlineOf(Vec2 core, float radius, Vec2 half, const Shape& shape) {
     }
     const Vec2 slopeNormalHere = cut >= 0 ? slopeNormal(half, shape.slope) : Vec2{};
     for (int k = 0; k < n; ++k) {
-        Outline::Edge& e = o.edges[k];
+        Outline::Edge& e = o.edges[std::size_t(k)];
         e.from = vertices[k];
         e.to = vertices[(k + 1) % n];
         e.face = faces[k];
@@ -77,14 +77,14 @@ std::optional<Touch> touchOf(const Outline& outline, Vec2 offset, std::uint8_t p
                              bool slopedPushes, float& apart) {
     const float radius = outline.radius;
     auto pushes = [&](int k) {
-        const std::uint8_t face = outline.edges[k].face;
+        const std::uint8_t face = outline.edges[std::size_t(k)].face;
         return face == Outline::kSloped ? slopedPushes : (pushing & face) != 0;
     };
     apart = -std::numeric_limits<float>::infinity();
     int best = -1;
     float bestSeparation = -std::numeric_limits<float>::infinity();
     for (int k = 0; k < outline.count; ++k) {
-        const Outline::Edge& e = outline.edges[k];
+        const Outline::Edge& e = outline.edges[std::size_t(k)];
         const float separation = dot(offset, e.normal) - e.offset;
         apart = std::max(apart, separation - radius);
         if (pushes(k) && separation > bestSeparation) {
@@ -94,7 +94,7 @@ std::optional<Touch> touchOf(const Outline& outline, Vec2 offset, std::uint8_t p
     }
     if (best < 0)
         return std::nullopt;
-    const Outline::Edge& e = outline.edges[best];
+    const Outline::Edge& e = outline.edges[std::size_t(best)];
     const Touch alongFace{e.normal, bestSeparation - radius, e.offset + radius, std::nullopt};
     if (!(bestSeparation > 0.0f))
         return alongFace; // inside: out through the pushing edge it is least deep behind

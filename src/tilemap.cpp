@@ -526,7 +526,7 @@ TileMapDef tileMapDef(const World& world, TileMapId id) {
     for (int row = 0; row < map.rows; ++row) {
         def.rows.emplace_back(map.tiles.begin() + static_cast<std::ptrdiff_t>(map.at(0, row)),
                               map.tiles.begin() +
-                                  static_cast<std::ptrdiff_t>(map.at(0, row) + map.columns));
+                                  static_cast<std::ptrdiff_t>(map.at(map.columns - 1, row) + 1));
     }
     return def;
 }

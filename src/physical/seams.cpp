@@ -18,7 +18,7 @@ bool coversWith(const WorldState& world, const Body& cover, int axis, float side
     if (cover.isBox())
         return true;
     return cover.shape == ShapeKind::Ramp &&
-           world.shapes[&cover - world.slots.data()].slope[axis] == side;
+           world.shapes[std::size_t(&cover - world.slots.data())].slope[axis] == side;
 }
 
 /// A ramp's tip at the end of its face along `axis` (the face its slope has a side on).
