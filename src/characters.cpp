@@ -4,6 +4,9 @@
 #include "integrate.hpp"
 #include "world_state.hpp"
 
+#include <cmath>
+#include <limits>
+
 namespace jostle {
 
 namespace {
@@ -47,6 +50,19 @@ Vec2 walkOver(const Body& a, const Body& b, Vec2 normal, Vec2 down) {
     if (isCharacterFloor(b, -normal, down))
         return right * -b.walkSpeed;
     return {};
+}
+
+float walkAlongSlope(const Body& a, const Body& b, Vec2 normal, Vec2 down) {
+    const Vec2 right = rightOf(down);
+    const Vec2 tangent{-normal.y, normal.x};
+    const float across = dot(tangent, right);
+    if (across == 0.0f || std::abs(dot(normal, down)) >= 1.0f)
+        return std::numeric_limits<float>::quiet_NaN();
+    if (isCharacterFloor(a, normal, down))
+        return a.walkSpeed / across;
+    if (isCharacterFloor(b, -normal, down))
+        return -b.walkSpeed / across;
+    return std::numeric_limits<float>::quiet_NaN();
 }
 
 } // namespace jostle

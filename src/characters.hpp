@@ -23,4 +23,10 @@ float frictionAgainst(const Body& body, Vec2 push, Vec2 down);
 /// a character on its floor walks at its walk speed over it.
 Vec2 walkOver(const Body& a, const Body& b, Vec2 normal, Vec2 down);
 
+/// On a sloped floor (normal from b towards a, neither along gravity nor across it): the
+/// speed of `a` relative to `b` along the contact's tangent (-ny, nx) at which a character
+/// standing on it moves across gravity at its walk speed. NaN if neither is a character on
+/// it as its floor.
+float walkAlongSlope(const Body& a, const Body& b, Vec2 normal, Vec2 down);
+
 } // namespace jostle

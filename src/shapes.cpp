@@ -95,7 +95,7 @@ std::optional<Touch> touchOf(const Outline& outline, Vec2 offset, std::uint8_t p
     if (best < 0)
         return std::nullopt;
     const Outline::Edge& e = outline.edges[best];
-    const Touch alongFace{e.normal, bestSeparation - radius, e.offset + radius};
+    const Touch alongFace{e.normal, bestSeparation - radius, e.offset + radius, std::nullopt};
     if (!(bestSeparation > 0.0f))
         return alongFace; // inside: out through the pushing edge it is least deep behind
     // In front of the edge: past one of its ends, around the corner if the edge beyond
@@ -124,7 +124,30 @@ std::optional<Touch> touchOf(const Outline& outline, Vec2 offset, std::uint8_t p
     if (!(distance > 0.0f))
         return alongFace;
     const Vec2 normal = out * (1.0f / distance);
-    return Touch{normal, distance - radius, dot(corner, normal) + radius};
+    return Touch{normal, distance - radius, dot(corner, normal) + radius, corner};
+}
+
+std::optional<Touch> atImpact(const Touch& touch, Vec2 offset, Vec2 motion, float radius) {
+    if (!touch.corner || !(touch.gap > 0.0f) || !(radius > 0.0f))
+        return touch;
+    // |p + motion t| = radius, the first t in [0, 1].
+    const Vec2 p = offset - *touch.corner;
+    const float a = dot(motion, motion);
+    const float b = dot(p, motion);
+    const float c = dot(p, p) - radius * radius;
+    const float discriminant = b * b - a * c;
+    if (!(a > 0.0f) || discriminant < 0.0f)
+        return std::nullopt;
+    const float t = (-b - std::sqrt(discriminant)) / a;
+    if (t < 0.0f || t > 1.0f)
+        return std::nullopt;
+    const Vec2 at = p + motion * t;
+    const float distance = length(at);
+    if (!(distance > 0.0f))
+        return touch;
+    const Vec2 normal = at * (1.0f / distance);
+    return Touch{normal, dot(p, normal) - radius, dot(*touch.corner, normal) + radius,
+                 touch.corner};
 }
 
 } // namespace jostle

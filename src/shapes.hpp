@@ -63,7 +63,7 @@ inline Vec2 slopeNormal(Vec2 half, Vec2 slope) {
 /// the sum of the radii around it. Each edge comes from one face of the obstacle's box
 /// (a ramp's tips count as the faces they end on) or from its sloped face.
 struct Outline {
-    static constexpr std::uint8_t kSloped = 4; ///< the face of an edge from the slope
+    static constexpr std::uint8_t kSloped = 16; ///< the face of an edge from the slope
     struct Edge {
         Vec2 normal;       ///< outward, unit
         float offset;      ///< the edge's line: dot(p, normal) == offset
@@ -87,7 +87,15 @@ struct Touch {
     Vec2 normal;
     float gap;
     float extent;
+    /// Around a corner of the outline: the corner, else nothing.
+    std::optional<Vec2> corner;
 };
+
+/// A touch around a rounded corner, of a body apart from it, turned to the normal at which
+/// the body's path `motion` (relative to the obstacle) first meets the corner: the normal
+/// of the impact, not of where the body is now. Nothing if the path misses the corner
+/// (it does not meet it in this step). Any other touch is returned as it is.
+std::optional<Touch> atImpact(const Touch& touch, Vec2 offset, Vec2 motion, float radius);
 
 /// How the body at `offset` touches `outline`, pushed only by edges whose face is in
 /// `pushing` (the sloped face always pushes unless `slopedPushes` is false): the pushing

@@ -15,6 +15,32 @@ namespace jostle {
 
 namespace {
 
+/// What a ramp character stands for. Rows read top first in a y-down world: "down" below
+/// is the next row. A 2:1 ramp takes two tiles, its low half and its high half.
+struct RampTile {
+    char tile;
+    Vec2 slope;   ///< BodyDef::slope of its triangle
+    int height;   ///< 0: a 45° tile; 1: the low half of a 2:1 ramp; 2: its high half
+    char partner; ///< the 2:1 half that merges with it on its right, or 0
+};
+
+constexpr RampTile kRampTiles[] = {
+    {'/', {-1, -1}, 0, 0},   {'\\', {1, -1}, 0, 0}, {'7', {-1, 1}, 0, 0},   {'F', {1, 1}, 0, 0},
+    {'r', {-1, -1}, 1, 'R'}, {'R', {-1, -1}, 2, 0}, {'L', {1, -1}, 2, 'l'}, {'l', {1, -1}, 1, 0},
+    {'c', {-1, 1}, 1, 'C'},  {'C', {-1, 1}, 2, 0},  {'D', {1, 1}, 2, 'd'},  {'d', {1, 1}, 1, 0},
+};
+
+const RampTile* rampTile(char tile) {
+    for (const RampTile& r : kRampTiles)
+        if (r.tile == tile)
+            return &r;
+    return nullptr;
+}
+
+bool isTileChar(char tile) {
+    return tile == '#' || tile == '.' || rampTile(tile) != nullptr;
+}
+
 /// Columns [begin, end) of one row.
 struct Run {
     int begin;
@@ -116,6 +142,39 @@ public:
         return box;
     }
 
+    /// Makes the bodies of a ramp piece: its triangle, and the box under a lone high half
+    /// of a 2:1 ramp (a floor's high half sits on the lower half of its tile; a
+    /// ceiling's hangs from the upper half).
+    void addRamp(RampPiece piece, const RampTile& kind) {
+        const bool floor = kind.slope.y < 0.0f; // its slope faces up: solid below
+        double top = piece.row, bottom = piece.row + 1.0;
+        if (piece.columns == 1 && kind.height != 0) {
+            const bool lowerHalf = (kind.height == 1) == floor;
+            (lowerHalf ? top : bottom) = piece.row + 0.5;
+        }
+        BodyDef def = defOf(piece.column, piece.column + piece.columns, top, bottom);
+        def.slope = kind.slope;
+        piece.ramp = own(world_.createBody(def));
+        if (piece.columns == 1 && kind.height == 2) {
+            const double halfTop = floor ? piece.row + 0.5 : piece.row;
+            piece.under = own(
+                world_.createBody(defOf(piece.column, piece.column + 1, halfTop, halfTop + 0.5)));
+        }
+        map_.ramps.push_back(piece);
+    }
+
+    /// Destroys the bodies of the ramp pieces of `row`.
+    void removeRamps(int row) {
+        for (const RampPiece& piece : map_.ramps) {
+            if (piece.row != row)
+                continue;
+            forget(piece.ramp);
+            if (!piece.under.isNull())
+                forget(piece.under);
+        }
+        std::erase_if(map_.ramps, [&](const RampPiece& piece) { return piece.row == row; });
+    }
+
     /// Destroys every box's body, in creation order.
     void removeAll() {
         for (BodyId body : std::vector<BodyId>(map_.bodies))
@@ -124,14 +183,20 @@ public:
 
 private:
     BodyDef bodyDefOf(const TileBox& box) const {
+        return defOf(box.column, box.column + box.columns, box.row, box.row + box.rows);
+    }
+
+    /// A static body of the map's settings over columns [fromColumn, toColumn) and rows
+    /// [fromRow, toRow), in tiles (halves for 2:1 ramps).
+    BodyDef defOf(double fromColumn, double toColumn, double fromRow, double toRow) const {
         // Edges in double, from the tile counts, so that boxes of different rows that
         // share an edge get the very same float for it wherever floats allow.
         const TileMapDef& s = map_.settings;
         const double tile = static_cast<double>(s.tile);
-        const double left = static_cast<double>(s.x) + box.column * tile;
-        const double right = static_cast<double>(s.x) + (box.column + box.columns) * tile;
-        const double top = static_cast<double>(s.y) + box.row * tile;
-        const double bottom = static_cast<double>(s.y) + (box.row + box.rows) * tile;
+        const double left = static_cast<double>(s.x) + fromColumn * tile;
+        const double right = static_cast<double>(s.x) + toColumn * tile;
+        const double top = static_cast<double>(s.y) + fromRow * tile;
+        const double bottom = static_cast<double>(s.y) + toRow * tile;
         return BodyDef{.type = BodyType::Static,
                        .x = static_cast<float>((left + right) / 2),
                        .y = static_cast<float>((top + bottom) / 2),
@@ -144,6 +209,12 @@ private:
                        .mask = s.mask,
                        .sensor = s.sensor,
                        .userData = s.userData};
+    }
+
+    BodyId own(BodyId body) {
+        map_.bodies.push_back(body);
+        state_.tileMaps.owners[body.index] = {body, id_};
+        return body;
     }
 
     void label(const TileBox& box, std::int32_t slot) {
@@ -168,6 +239,24 @@ private:
     TileMapId id_;
 };
 
+/// The ramp pieces of `row`, made afresh: each ramp tile its own, but a 2:1 ramp's two
+/// halves side by side in their order ("rR", "Ll", "cC", "Dd") one triangle.
+void buildRamps(World& world, TileMapId id, int row) {
+    const TileMapData& map = WorldAccess::state(world).tileMaps.maps[id.index];
+    Boxes boxes(world, id);
+    boxes.removeRamps(row);
+    for (int column = 0; column < map.columns; ++column) {
+        const RampTile* kind = rampTile(map.tiles[map.at(column, row)]);
+        if (!kind)
+            continue;
+        const bool paired = kind->partner != 0 && column + 1 < map.columns &&
+                            map.tiles[map.at(column + 1, row)] == kind->partner;
+        boxes.addRamp({column, row, paired ? 2 : 1, {}, {}}, *kind);
+        if (paired)
+            ++column;
+    }
+}
+
 /// The canonical decomposition of the whole map, top row first, left to right.
 void buildAll(World& world, TileMapId id) {
     const TileMapData& map = WorldAccess::state(world).tileMaps.maps[id.index];
@@ -190,6 +279,8 @@ void buildAll(World& world, TileMapId id) {
             column = run.end;
         }
     }
+    for (int row = 0; row < map.rows; ++row)
+        buildRamps(world, id, row);
 }
 
 } // namespace
@@ -218,9 +309,9 @@ std::optional<FieldError> checkTileMapDef(const TileMapDef& def) {
         const std::string& text = def.rows[row];
         const std::string place = "rows[" + std::to_string(row) + "]";
         for (std::size_t column = 0; column < text.size(); ++column)
-            if (text[column] != '#' && text[column] != '.')
+            if (!isTileChar(text[column]))
                 return FieldError{place + "[" + std::to_string(column) + "]",
-                                  "expected '#' or '.', got " + describeChar(text[column])};
+                                  "expected '#', '.' or a ramp, got " + describeChar(text[column])};
         if (text.size() != columns)
             return FieldError{place, "has " + std::to_string(text.size()) +
                                          " columns, rows[0] has " + std::to_string(columns)};
@@ -279,8 +370,10 @@ TileMapId createTileMap(World& world, const TileMapDef& def) {
     map.rows = static_cast<int>(def.rows.size());
     map.solid.reserve(static_cast<std::size_t>(map.columns) * def.rows.size());
     for (const std::string& row : def.rows)
-        for (char tile : row)
+        for (char tile : row) {
             map.solid.push_back(tile == '#' ? 1 : 0);
+            map.tiles.push_back(tile);
+        }
     map.boxAt.assign(map.solid.size(), TileMapData::kNoBox);
 
     const TileMapId id{index, generation};
@@ -303,14 +396,40 @@ bool World::isValid(TileMapId id) const {
 
 // --- Tiles -------------------------------------------------------------------------------
 
+namespace {
+/// Makes (column, row) solid or not in the box decomposition, rebuilding the boxes
+/// around it.
+void setSolid(World& world, TileMapId id, int column, int row, bool solid);
+} // namespace
+
 void setTile(World& world, TileMapId id, int column, int row, bool solid) {
+    setTile(world, id, column, row, solid ? '#' : '.');
+}
+
+void setTile(World& world, TileMapId id, int column, int row, char tile) {
     TileMapData& map = lookUp(WorldAccess::state(world), id, "setTile");
     if (column < 0 || column >= map.columns || row < 0 || row >= map.rows)
         fail("setTile", describe(column, row) + " is outside the map (" +
                             std::to_string(map.columns) + " columns, " + std::to_string(map.rows) +
                             " rows)");
-    if (map.isSolid(column, row) == solid)
+    if (!isTileChar(tile))
+        fail("setTile", "expected '#', '.' or a ramp, got " + describeChar(tile));
+    char& here = map.tiles[map.at(column, row)];
+    if (here == tile)
         return;
+    const bool rampsChange = rampTile(here) || rampTile(tile);
+    const bool solid = tile == '#';
+    here = tile;
+    if (map.isSolid(column, row) != solid)
+        setSolid(world, id, column, row, solid);
+    if (rampsChange)
+        buildRamps(world, id, row);
+}
+
+namespace {
+
+void setSolid(World& world, TileMapId id, int column, int row, bool solid) {
+    TileMapData& map = WorldAccess::state(world).tileMaps.maps[id.index];
 
     // Only `row`'s runs change, and only around `column`: the runs that go and the runs
     // that come. Every other run keeps its box, unless a new run joins it.
@@ -363,6 +482,15 @@ void setTile(World& world, TileMapId id, int column, int row, bool solid) {
     }
 }
 
+} // namespace
+
+char tileOf(const World& world, TileMapId id, int column, int row) {
+    const TileMapData& map = lookUp(WorldAccess::state(world), id, "tileOf");
+    if (column < 0 || column >= map.columns || row < 0 || row >= map.rows)
+        return '.';
+    return map.tiles[map.at(column, row)];
+}
+
 bool isSolid(const World& world, TileMapId id, int column, int row) {
     const TileMapData& map = lookUp(WorldAccess::state(world), id, "isSolid");
     if (column < 0 || column >= map.columns || row < 0 || row >= map.rows)
@@ -396,10 +524,9 @@ TileMapDef tileMapDef(const World& world, TileMapId id) {
     TileMapDef def = map.settings;
     def.rows.reserve(static_cast<std::size_t>(map.rows));
     for (int row = 0; row < map.rows; ++row) {
-        std::string& text = def.rows.emplace_back(static_cast<std::size_t>(map.columns), '.');
-        for (int column = 0; column < map.columns; ++column)
-            if (map.isSolid(column, row))
-                text[static_cast<std::size_t>(column)] = '#';
+        def.rows.emplace_back(map.tiles.begin() + static_cast<std::ptrdiff_t>(map.at(0, row)),
+                              map.tiles.begin() +
+                                  static_cast<std::ptrdiff_t>(map.at(0, row) + map.columns));
     }
     return def;
 }

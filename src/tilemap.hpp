@@ -19,6 +19,16 @@ struct TileBox {
     BodyId body;
 };
 
+/// The bodies of one ramp tile, or of a pair of 2:1 ramp tiles merged into one triangle:
+/// a ramp, and for the high half of a lone 2:1 tile the box under it.
+struct RampPiece {
+    int column = 0; ///< its leftmost tile
+    int row = 0;
+    int columns = 1; ///< 1, or 2 for a merged pair
+    BodyId ramp;
+    BodyId under; ///< null unless a lone high half
+};
+
 /// One tile map.
 ///
 /// Its boxes are the canonical decomposition of its solid tiles: each row is cut into
@@ -32,8 +42,12 @@ struct TileMapData {
     TileMapDef settings;
     int columns = 0;
     int rows = 0;
-    /// Row by row, 1 for a solid tile.
+    /// Row by row, 1 for a solid tile ('#': ramps are not, they have their own bodies).
     std::vector<std::uint8_t> solid;
+    /// Row by row, each tile's character (tilemap.hpp: '#', '.' or a ramp).
+    std::vector<char> tiles;
+    /// The ramp pieces, row by row, left to right within a row.
+    std::vector<RampPiece> ramps;
     /// Row by row, the index in `boxes` of the box holding each solid tile; kNoBox for
     /// empty tiles.
     std::vector<std::int32_t> boxAt;

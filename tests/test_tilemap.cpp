@@ -216,15 +216,15 @@ TEST(TileMapChecks, EveryBadDefinitionIsNamed) {
     EXPECT_EQ(with([](TileMapDef& d) {
                   d.rows = {"##", "##", "#.", "#.#..x"};
               }),
-              "rows[3][5]: expected '#' or '.', got 'x'");
+              "rows[3][5]: expected '#', '.' or a ramp, got 'x'");
     EXPECT_EQ(with([](TileMapDef& d) {
                   d.rows = {"#", " "};
               }),
-              "rows[1][0]: expected '#' or '.', got ' '");
+              "rows[1][0]: expected '#', '.' or a ramp, got ' '");
     EXPECT_EQ(with([](TileMapDef& d) { d.rows = {"#\t"}; }),
-              "rows[0][1]: expected '#' or '.', got byte 0x09");
+              "rows[0][1]: expected '#', '.' or a ramp, got byte 0x09");
     EXPECT_EQ(with([](TileMapDef& d) { d.rows = {"#\xC3\xA9"}; }), // é in UTF-8
-              "rows[0][1]: expected '#' or '.', got byte 0xC3");
+              "rows[0][1]: expected '#', '.' or a ramp, got byte 0xC3");
     EXPECT_EQ(with([](TileMapDef& d) { d.friction = 1.5f; }), "friction: must be in [0, 1]");
     EXPECT_EQ(with([](TileMapDef& d) { d.bounce = -0.5f; }), "bounce: must be in [0, 1]");
     EXPECT_EQ(with([](TileMapDef& d) {
@@ -240,7 +240,7 @@ TEST(TileMapChecks, CreateTileMapRefusesWhatTheCheckRefusesAndCreatesNothing) {
         FAIL() << "no jostle::Error";
     } catch (const Error& error) {
         EXPECT_EQ(std::string(error.what()),
-                  "createTileMap: TileMapDef.rows[1][1]: expected '#' or '.', got 'x'");
+                  "createTileMap: TileMapDef.rows[1][1]: expected '#', '.' or a ramp, got 'x'");
     }
     EXPECT_EQ(world.bodyCount(), 0u);
 }

@@ -51,7 +51,18 @@ struct TileMapDef {
     /// The side of a square tile, > 0.
     float tile = 0.0f;
     /// One string per row, all of the same length (the number of columns), at least one
-    /// row and one column: '#' is a solid tile, '.' an empty one.
+    /// row and one column: '#' is a solid tile, '.' an empty one, and the ramps (as read
+    /// on screen in a y-down world; docs/slopes-and-shapes.md has pictures):
+    ///
+    ///     /  \    45° floors rising to the right, to the left  (solid below the slope)
+    ///     7  F    45° ceilings: solid top-right, top-left      (solid above the slope)
+    ///     rR Ll   2:1 floors, two tiles each: r low and R high rising to the right,
+    ///             L high and l low rising to the left
+    ///     cC Dd   2:1 ceilings: thick at the right (C), thick at the left (D)
+    ///
+    /// Each ramp tile is its own static body (a ramp: BodyDef::slope), the two halves of a
+    /// 2:1 ramp side by side one triangle. Where a ramp meets the floor or the next ramp,
+    /// nothing catches: the faces the level covers do not push.
     std::vector<std::string> rows;
 
     // Every box of the map is a static body with these settings (body.hpp explains
@@ -78,8 +89,9 @@ struct TileMapDef {
 std::optional<FieldError> checkTileMapDef(const TileMapDef& def);
 
 /// Creates a tile map and the static bodies of its solid tiles, in order, top row first
-/// (the smallest y), left to right. Throws jostle::Error if checkTileMapDef(def) finds a
-/// problem ("createTileMap: TileMapDef.rows[2][5]: expected '#' or '.', got 'x'").
+/// (the smallest y), left to right, then those of its ramps in the same order. Throws jostle::Error
+/// if checkTileMapDef(def) finds a problem ("createTileMap: TileMapDef.rows[2][5]: expected '#' or
+/// '.', got 'x'").
 TileMapId createTileMap(World& world, const TileMapDef& def);
 
 /// Destroys the map and all its bodies (as World::destroyBody does: what rests on them
@@ -92,9 +104,15 @@ void destroyTileMap(World& world, TileMapId map);
 /// on a box that goes wake up, so a box on a tile that is removed falls. A tile made
 /// solid where a dynamic body is pushes the body out, as any overlap does.
 void setTile(World& world, TileMapId map, int column, int row, bool solid);
+/// Sets the tile at (column, row) to any character `rows` may hold ('#', '.', a ramp);
+/// jostle::Error for another. A ramp's row has its ramps rebuilt.
+void setTile(World& world, TileMapId map, int column, int row, char tile);
 
-/// True if the tile at (column, row) is solid. Outside the map: false, as if the map went
-/// on empty forever, so a game can look at the neighbours of an edge tile freely.
+/// The character of the tile at (column, row), as in TileMapDef::rows; '.' outside.
+char tileOf(const World& world, TileMapId map, int column, int row);
+
+/// True if the tile at (column, row) is solid ('#'; a ramp is not). Outside the map: false, as if
+/// the map went on empty forever, so a game can look at the neighbours of an edge tile freely.
 bool isSolid(const World& world, TileMapId map, int column, int row);
 
 /// A tile's place in its map.

@@ -15,6 +15,9 @@ namespace jostle {
 
 namespace {
 
+/// The friction of a character's foot on a sloped floor: enough for any walk.
+constexpr float kFirmFooting = 1e3f;
+
 /// Two normals this close (the cosine of their angle) are one contact's, from step to step.
 constexpr float kSameNormal = 0.995f;
 
@@ -76,7 +79,9 @@ bool staysApart(const Body& a, const Body& b, Vec2 normal, float gap, float dt) 
 ///   path across the step first touches it, and not at all if the path clears it: a box
 ///   rising past a ledge does not hit the ledge's side.
 /// - If the corner is a seam between two static bodies, the face the contact would push
-///   on is inside the level, and the other axis is the one; if both are, no contact.
+///   on is inside the level, and the other axis is the one. In a world with ramps, any
+///   face the level covers where the body is (seams.hpp's pushingFaces) is inside it; if
+///   both are, no contact.
 std::optional<Facing> chooseNormal(const StepContext& step, const Body& a, const Body& b) {
     const Vec2 d = a.position - b.position;
     const float gapX = std::abs(d.x) - (a.half.x + b.half.x);
@@ -98,18 +103,29 @@ std::optional<Facing> chooseNormal(const StepContext& step, const Body& a, const
             return std::nullopt;
         alongX = path->axis == 0;
     }
-    if (gapX >= -skinX && gapY >= -skinY && a.type != b.type &&
-        (a.type == BodyType::Static || b.type == BodyType::Static)) {
+    const bool oneStatic =
+        a.type != b.type && (a.type == BodyType::Static || b.type == BodyType::Static);
+    if (oneStatic && step.world.shapedBodies > 0) {
+        // Among ramps, a box's face may be covered anywhere along it (a ramp sitting on a
+        // floor): the faces that push are those the level leaves bare where the body is,
+        // and a box with none is inside the level, which the bodies around it stand for.
         const bool aStatic = a.type == BodyType::Static;
         const Body& wall = aStatic ? a : b;
         const Body& other = aStatic ? b : a;
-        if (isSeam(step.world, wall, other, alongX ? 0 : 1)) {
+        const std::uint8_t pushing = pushingFaces(step.world, wall, other);
+        auto pushes = [&](bool x) {
+            const float side = (x ? d.x : d.y) * (aStatic ? -1.0f : 1.0f);
+            return (pushing & faceBit(x ? 0 : 1, side < 0.0f ? -1.0f : 1.0f)) != 0;
+        };
+        if (!pushes(alongX)) {
             alongX = !alongX;
-            // Seams on both faces: a box inside the level, under a ramp say, which the
-            // bodies around it stand for. (Only ramps make such boxes touchable.)
-            if (step.world.shapedBodies > 0 && isSeam(step.world, wall, other, alongX ? 0 : 1))
+            if (!pushes(alongX))
                 return std::nullopt;
         }
+    } else if (gapX >= -skinX && gapY >= -skinY && oneStatic) {
+        const bool aStatic = a.type == BodyType::Static;
+        if (isSeam(step.world, aStatic ? a : b, aStatic ? b : a, alongX ? 0 : 1))
+            alongX = !alongX;
     }
     const Facing facing = alongX ? Facing{normalX, gapX, skinX} : Facing{normalY, gapY, skinY};
     if (staysApart(a, b, facing.normal, facing.gap, step.dt))
@@ -161,8 +177,12 @@ std::optional<ShapedFacing> chooseShapedNormal(const StepContext& step, std::uin
     const Outline outline = outlineOf(mover.half - Vec2{r, r}, r, obstacle.half, obstacleShape);
     const std::uint8_t pushing = pushingFaces(w, obstacle, mover);
     float apart = 0.0f;
-    const std::optional<Touch> touch =
-        touchOf(outline, mover.position - obstacle.position, pushing, true, apart);
+    const Vec2 offset = mover.position - obstacle.position;
+    std::optional<Touch> touch = touchOf(outline, offset, pushing, true, apart);
+    if (!touch)
+        return std::nullopt;
+    touch =
+        atImpact(*touch, offset, (mover.velocity - obstacle.velocity) * step.dt, outline.radius);
     if (!touch)
         return std::nullopt;
     const float size = std::min(reachAlong(mover, moverShape, touch->normal),
@@ -200,8 +220,17 @@ Contact shapedContactOf(const StepContext& step, const Body& a, const Body& b,
     const Vec2 down = step.world.events.down;
     c.friction = combineFriction(step.options.frictionMix, frictionAgainst(a, n, down),
                                  frictionAgainst(b, -n, down));
-    if (a.character || b.character)
-        c.tangentTarget = dot(walkOver(a, b, n, down), c.tangent());
+    if (a.character || b.character) {
+        const float walk = walkAlongSlope(a, b, n, down);
+        if (std::isnan(walk)) {
+            c.tangentTarget = dot(walkOver(a, b, n, down), c.tangent());
+        } else {
+            // A character walks up and down a slope as on flat ground: at its walk speed
+            // across gravity, and standing where it stops, whatever its friction.
+            c.tangentTarget = walk;
+            c.friction = kFirmFooting;
+        }
+    }
     return c;
 }
 

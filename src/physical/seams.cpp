@@ -21,9 +21,47 @@ bool coversWith(const WorldState& world, const Body& cover, int axis, float side
            world.shapes[&cover - world.slots.data()].slope[axis] == side;
 }
 
+/// A ramp's tip at the end of its face along `axis` (the face its slope has a side on).
+Vec2 tipOf(const Body& ramp, Vec2 slope, int axis) {
+    Vec2 tip;
+    tip[axis] = ramp.position[axis] + slope[axis] * ramp.half[axis];
+    tip[1 - axis] = ramp.position[1 - axis] - slope[1 - axis] * ramp.half[1 - axis];
+    return tip;
+}
+
+/// Whether another static ramp of the same slope and steepness goes on from `wall`'s tip
+/// on its face along `axis`: two ramp tiles in a line, whose shared tip is no corner.
+bool rampGoesOn(const WorldState& world, const Body& wall, Vec2 slope, int axis) {
+    const Vec2 tip = tipOf(wall, slope, axis);
+    const float tolerance = std::max(1e-4f * std::min(wall.half.x, wall.half.y),
+                                     4.0f * ulpOf(std::max(std::abs(tip.x), std::abs(tip.y))));
+    const Box probe{tip - Vec2{tolerance, tolerance}, tip + Vec2{tolerance, tolerance}};
+    bool goesOn = false;
+    world.restingGrid.query(probe, [&](std::uint32_t k) {
+        const std::uint32_t slot = world.restingSlots[k];
+        const Body& next = world.slots[slot];
+        if (goesOn || &next == &wall || next.type != BodyType::Static ||
+            next.shape != ShapeKind::Ramp || world.shapes[slot].slope != slope)
+            return;
+        const float steepness = wall.half.y * next.half.x - wall.half.x * next.half.y;
+        if (std::abs(steepness) > 1e-4f * wall.half.x * next.half.x)
+            return;
+        const Vec2 otherTip = tipOf(next, slope, 1 - axis);
+        goesOn =
+            std::abs(otherTip.x - tip.x) <= tolerance && std::abs(otherTip.y - tip.y) <= tolerance;
+    });
+    return goesOn;
+}
+
 /// Whether the face of static `wall` on `side` along `axis` is covered by another static
-/// body where `other` spans it (the whole stretch of the face beside `other`).
+/// body where `other` spans it (the whole stretch of the face beside `other`). A ramp's
+/// face that ends in a tip is covered where the next ramp of a line goes on from the tip.
 bool isCovered(const WorldState& world, const Body& wall, const Body& other, int axis, float side) {
+    if (wall.shape == ShapeKind::Ramp) {
+        const Vec2 slope = world.shapes[std::size_t(&wall - world.slots.data())].slope;
+        if (slope[axis] == side && rampGoesOn(world, wall, slope, axis))
+            return true;
+    }
     const int along = 1 - axis;
     const float face = wall.position[axis] + side * wall.half[axis];
     const float tolerance =

@@ -351,7 +351,7 @@ TEST_F(Cli, BadTileMapNamesFileAndPlace) {
     const Result r = run("run " + quote(scene) + " --steps 1");
     EXPECT_EQ(r.status, 2);
     EXPECT_EQ(r.err,
-              "jostle: error: " + scene + ": tilemap.rows[2][5]: expected '#' or '.', got 'x'\n");
+              "jostle: error: " + scene + ": tilemap.rows[2][5]: expected '#', '.' or a ramp, got 'x'\n");
     EXPECT_EQ(r.out, "");
 }
 

@@ -646,9 +646,9 @@ TEST(SceneErrors, TileMaps) {
     EXPECT_EQ(map(R"("tile": 16, "rows": ["#.", "..", "#.#..."])"),
               "tilemap.rows[2]: has 6 columns, rows[0] has 2");
     EXPECT_EQ(map(R"("tile": 16, "rows": ["....", "####", "##.#.x"])"),
-              "tilemap.rows[2][5]: expected '#' or '.', got 'x'");
+              "tilemap.rows[2][5]: expected '#', '.' or a ramp, got 'x'");
     EXPECT_EQ(map(R"("tile": 16, "rows": ["# "])"),
-              "tilemap.rows[0][1]: expected '#' or '.', got ' '");
+              "tilemap.rows[0][1]: expected '#', '.' or a ramp, got ' '");
     EXPECT_EQ(map(R"("tile": 16, "rows": [])"), "tilemap.rows: must have at least one row");
     EXPECT_EQ(map(R"("tile": 16, "rows": [""])"), "tilemap.rows[0]: must have at least one column");
     EXPECT_EQ(map(R"("tile": 16, "rows": "##")"), "tilemap.rows: expected an array, got string");
@@ -682,7 +682,7 @@ TEST(SceneErrors, TileMaps) {
     EXPECT_EQ(errorOf(withTop(R"("tilemaps": {})")), "tilemaps: expected an array, got object");
     EXPECT_EQ(errorOf(withTop(R"("tilemaps": [{"tile": 1, "rows": ["#"]},
                                               {"tile": 1, "rows": ["#", "?"]}])")),
-              "tilemaps[1].rows[1][0]: expected '#' or '.', got '?'");
+              "tilemaps[1].rows[1][0]: expected '#', '.' or a ramp, got '?'");
     EXPECT_EQ(errorOf(withTop(R"("tilemap": {"tile": 1, "rows": ["#"]},
                                  "tilemaps": [])")),
               R"(give "tilemap" or "tilemaps", not both)");
@@ -838,7 +838,7 @@ TEST(AddTileMaps, ABadMapLeavesTheWorldUntouched) {
         FAIL() << "no jostle::Error";
     } catch (const Error& error) {
         EXPECT_EQ(std::string(error.what()),
-                  "addTileMaps: tileMaps[1].rows[1][0]: expected '#' or '.', got 'x'");
+                  "addTileMaps: tileMaps[1].rows[1][0]: expected '#', '.' or a ramp, got 'x'");
     }
     EXPECT_EQ(world.bodyCount(), 0u);
 }
