@@ -36,11 +36,21 @@ Vec2 contactPoint(const World& world, const TouchingPair& pair) {
             middleOfShared(ca.y - ha.y, ca.y + ha.y, cb.y - hb.y, cb.y + hb.y)};
 }
 
+DrawnContact drawnContact(const World& world, const TouchingPair& pair) {
+    if (pair.normal.x == 0.0f || pair.normal.y == 0.0f)
+        return {contactPoint(world, pair), pair.normal};
+    for (const ContactInfo& contact : world.contacts(pair.a))
+        if (contact.other == pair.b)
+            return {contact.point, contact.normal};
+    return {contactPoint(world, pair), pair.normal}; // apart since the events were read
+}
+
 void drawContacts(SDL_Renderer* renderer, const World& world, const ContactSet& contacts,
                   const View& view) {
     setColour(renderer, kContact);
     contacts.forEach(world, [&](const TouchingPair& pair) {
-        const SDL_Point at = view.toScreen(contactPoint(world, pair));
+        const DrawnContact contact = drawnContact(world, pair);
+        const SDL_Point at = view.toScreen(contact.point);
         const SDL_Rect dot{at.x - kDotRadius, at.y - kDotRadius, 2 * kDotRadius + 1,
                            2 * kDotRadius + 1};
         SDL_RenderFillRect(renderer, &dot);
@@ -49,9 +59,12 @@ void drawContacts(SDL_Renderer* renderer, const World& world, const ContactSet& 
         // the other way, into b.
         const bool intoA = world.type(pair.a) == BodyType::Dynamic;
         const BodyId pushed = intoA ? pair.a : pair.b;
-        const Vec2 direction = intoA ? pair.normal : -pair.normal;
+        const Vec2 direction = intoA ? contact.normal : -contact.normal;
         const Vec2 half = world.halfExtents(pushed);
-        const float extent = (direction.x != 0.0f ? half.x : half.y) * view.scale();
+        const float along = direction.y == 0.0f   ? half.x
+                            : direction.x == 0.0f ? half.y
+                                                  : std::min(half.x, half.y);
+        const float extent = along * view.scale();
         const float pixels = std::clamp(extent, kShortestNormalPixels, kNormalPixels);
         SDL_RenderDrawLine(renderer, at.x, at.y, at.x + static_cast<int>(direction.x * pixels),
                            at.y + static_cast<int>(direction.y * pixels));

@@ -6,6 +6,10 @@
 #include "grid_picture.hpp"
 #include "palette.hpp"
 
+#include "shared/drawn_shape.hpp"
+
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <string>
 #include <utility>
@@ -26,6 +30,65 @@ constexpr float kVelocitySeconds = 0.1f;
 constexpr int kLegendScale = 1;
 constexpr int kLegendTop = kTitleHeight + 4;
 constexpr int kLegendLineHeight = kGlyphHeight + 4;
+/// The most points a quarter of a rounded body's edge is drawn with.
+constexpr int kMostArcPoints = 24;
+
+/// The points of a shape's perimeter on the screen, the first again at the end when it
+/// is closed (all but a segment).
+std::vector<SDL_FPoint> screenPerimeter(const shared::DrawnShape& shape, const View& view) {
+    // Arcs of a point every 2 pixels or so, 3 to 24 points a quarter.
+    const int arcPoints =
+        std::clamp(static_cast<int>(shape.radius * view.scale() / 2.0f) + 2, 3, kMostArcPoints);
+    std::vector<SDL_FPoint> points;
+    for (const Vec2 point : shape.perimeter(arcPoints))
+        points.push_back(view.toScreenExact(point));
+    if (shape.kind != shared::DrawnKind::Segment)
+        points.push_back(points.front());
+    return points;
+}
+
+/// A rounded body or a ramp, filled (a fan of triangles from the middle of its convex
+/// perimeter) unless it is a sensor, and outlined; a segment as a line, with a tick from
+/// its middle towards the side it blocks.
+void drawShape(SDL_Renderer* renderer, const shared::DrawnShape& shape, const View& view,
+               SDL_Color fill, SDL_Color outline, bool sensor) {
+    const std::vector<SDL_FPoint> points = screenPerimeter(shape, view);
+    const int count = static_cast<int>(points.size());
+    if (shape.kind == shared::DrawnKind::Segment) {
+        const SDL_FPoint a = points[0];
+        const SDL_FPoint b = points[1];
+        const SDL_FPoint middle{(a.x + b.x) / 2.0f, (a.y + b.y) / 2.0f};
+        const float tick = std::clamp(std::hypot(b.x - a.x, b.y - a.y) / 6.0f, 3.0f, 8.0f);
+        const Vec2 normal = shape.faceNormal();
+        setColour(renderer, sensor ? outline : fill);
+        SDL_RenderDrawLineF(renderer, a.x, a.y, b.x, b.y);
+        SDL_RenderDrawLineF(renderer, middle.x, middle.y, middle.x + normal.x * tick,
+                            middle.y + normal.y * tick);
+        return;
+    }
+    if (!sensor) {
+        const SDL_FPoint centre = view.toScreenExact(shape.centre);
+        std::vector<SDL_Vertex> fan;
+        fan.reserve(static_cast<std::size_t>(3 * (count - 1)));
+        for (int i = 0; i + 1 < count; ++i)
+            for (const SDL_FPoint& p : {centre, points[i], points[i + 1]})
+                fan.push_back({p, fill, {0.0f, 0.0f}});
+        SDL_RenderGeometry(renderer, nullptr, fan.data(), static_cast<int>(fan.size()), nullptr, 0);
+    }
+    setColour(renderer, outline);
+    SDL_RenderDrawLinesF(renderer, points.data(), count);
+}
+
+/// An awake body's velocity, as a line from its centre: a tenth of a second of its motion.
+void drawVelocity(SDL_Renderer* renderer, const World& world, BodyId body, const View& view) {
+    if (!world.isAwake(body))
+        return;
+    const Vec2 centre = world.position(body);
+    const SDL_Point from = view.toScreen(centre);
+    const SDL_Point to = view.toScreen(centre + world.velocity(body) * kVelocitySeconds);
+    setColour(renderer, kVelocity);
+    SDL_RenderDrawLine(renderer, from.x, from.y, to.x, to.y);
+}
 
 void drawBody(SDL_Renderer* renderer, const World& world, BodyId body, const View& view,
               bool debug) {
@@ -36,6 +99,18 @@ void drawBody(SDL_Renderer* renderer, const World& world, BodyId body, const Vie
     SDL_Color colour = kTypeColours[static_cast<std::size_t>(type)];
     if (debug && type != BodyType::Static && !world.isAwake(body))
         colour = scaled(colour, kSleepingPercent);
+    const SDL_Color outline =
+        world.isBullet(body) ? kBulletOutline : scaled(colour, kOutlinePercent);
+
+    // Rounded bodies, ramps and segments in their shape (World::bodyDef has it).
+    const shared::DrawnShape shape = shared::DrawnShape::of(world, body);
+    if (shape.kind != shared::DrawnKind::Box) {
+        const bool sensor = world.isSensor(body);
+        drawShape(renderer, shape, view, colour, sensor ? colour : outline, sensor);
+        if (debug && !sensor && type == BodyType::Dynamic)
+            drawVelocity(renderer, world, body, view);
+        return;
+    }
 
     if (world.isSensor(body)) {
         setColour(renderer, colour);
@@ -44,7 +119,7 @@ void drawBody(SDL_Renderer* renderer, const World& world, BodyId body, const Vie
     }
     setColour(renderer, colour);
     SDL_RenderFillRect(renderer, &rect);
-    setColour(renderer, world.isBullet(body) ? kBulletOutline : scaled(colour, kOutlinePercent));
+    setColour(renderer, outline);
     SDL_RenderDrawRect(renderer, &rect);
     // A one-way platform: its blocking face drawn bright, so one can see which it is.
     const Vec2 normal = world.oneWay(body);
@@ -75,12 +150,7 @@ void drawBody(SDL_Renderer* renderer, const World& world, BodyId body, const Vie
         SDL_RenderDrawLine(renderer, left, top, left, bottom);
     if (touching.wallRight)
         SDL_RenderDrawLine(renderer, right, top, right, bottom);
-    if (world.isAwake(body)) {
-        const SDL_Point from = view.toScreen(centre);
-        const SDL_Point to = view.toScreen(centre + world.velocity(body) * kVelocitySeconds);
-        setColour(renderer, kVelocity);
-        SDL_RenderDrawLine(renderer, from.x, from.y, to.x, to.y);
-    }
+    drawVelocity(renderer, world, body, view);
 }
 
 /// The background under a line of legend text at (x, y), `width` pixels long, so that

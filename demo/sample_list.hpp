@@ -1,4 +1,4 @@
-// The demo's samples, in the order of the keys 1 to 6; each is defined in its own file.
+// The demo's samples, in the order of the keys 1 to 7; each is defined in its own file.
 #pragma once
 
 #include "sample.hpp"
@@ -14,6 +14,7 @@ std::unique_ptr<Sample> makePyramidSample();    // sample_pyramid.cpp
 std::unique_ptr<Sample> makeRainSample();       // sample_rain.cpp
 std::unique_ptr<Sample> makeBulletsSample();    // sample_bullets.cpp
 std::unique_ptr<Sample> makeCratesSample();     // sample_crates.cpp
+std::unique_ptr<Sample> makeSlopesSample();     // sample_slopes.cpp
 
 inline std::vector<std::unique_ptr<Sample>> makeSamples() {
     std::vector<std::unique_ptr<Sample>> samples;
@@ -23,6 +24,7 @@ inline std::vector<std::unique_ptr<Sample>> makeSamples() {
     samples.push_back(makeRainSample());
     samples.push_back(makeBulletsSample());
     samples.push_back(makeCratesSample());
+    samples.push_back(makeSlopesSample());
     return samples;
 }
 

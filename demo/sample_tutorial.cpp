@@ -1,14 +1,14 @@
 // Sample 1: the tutorial's demo (examples/scenes/tutorial.json), boxes of different
 // bounce and friction falling on platforms, in the classic model on the left and the
 // physical model on the right: the same bodies, two worlds side by side.
+#include "example_scenes.hpp" // generated (demo/CMakeLists.txt)
 #include "sample_list.hpp"
-#include "tutorial_scene.hpp" // generated (demo/CMakeLists.txt)
 
 namespace jostle::demo {
 
 namespace {
 
-/// examples/scenes/tutorial.json, built into the program (tutorial_scene.hpp), in the
+/// examples/scenes/tutorial.json, built into the program (example_scenes.hpp), in the
 /// model `solver`.
 Scene tutorialScene(Solver solver) {
     Scene scene = parseScene(kTutorialSceneJson);

@@ -49,6 +49,10 @@ SDL_Point View::toScreen(Vec2 point) const {
     return {toPixel(point.x * scale_ + offsetX_), toPixel(point.y * scale_ + offsetY_)};
 }
 
+SDL_FPoint View::toScreenExact(Vec2 point) const {
+    return {point.x * scale_ + offsetX_, point.y * scale_ + offsetY_};
+}
+
 Vec2 View::toWorld(int x, int y) const {
     return {(static_cast<float>(x) - offsetX_) / scale_,
             (static_cast<float>(y) - offsetY_) / scale_};

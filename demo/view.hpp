@@ -24,6 +24,9 @@ public:
     /// body still shows.
     SDL_Rect toScreen(Vec2 centre, Vec2 half) const;
     SDL_Point toScreen(Vec2 point) const;
+    /// Where a point falls on the screen, not rounded to a pixel: for shapes drawn with
+    /// SDL's float functions.
+    SDL_FPoint toScreenExact(Vec2 point) const;
     Vec2 toWorld(int x, int y) const;
     bool contains(int x, int y) const;
 

@@ -7,4 +7,5 @@ scripts/build.sh
 ./build/jostle render examples/scenes/tutorial.json --solver physical --out docs/tutorial.gif \
   --steps 240 --every 3
 ./build/jostle render examples/scenes/pyramid.json --out docs/pyramid.png --steps 240
-echo "pictures: wrote docs/tutorial.gif and docs/pyramid.png"
+./build/jostle render examples/scenes/slopes.json --out docs/slopes.gif --steps 300 --every 3
+echo "pictures: wrote docs/tutorial.gif, docs/pyramid.png and docs/slopes.gif"

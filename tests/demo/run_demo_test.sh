@@ -12,7 +12,7 @@ if [ "${1:-}" = "--under-xvfb" ]; then
   shift
   demo=$1 checker=$2 out=$3
   failed=0
-  for sample in 1 2 3 4 5 6; do
+  for sample in 1 2 3 4 5 6 7; do
     # Plain, and with debug drawing on from frame 2 (its blended tints and many marks
     # drawn by the display's own renderer).
     for debug in "" debug; do
@@ -41,6 +41,6 @@ if ! command -v xvfb-run >/dev/null 2>&1; then
   exit 77
 fi
 mkdir -p "$3"
-# One X server for all twelve runs: starting one per run costs about a second each. The
+# One X server for all fourteen runs: starting one per run costs about a second each. The
 # screen is as large as the demo's window.
 exec xvfb-run -a -s "-screen 0 1280x720x24" "$0" --under-xvfb "$@"

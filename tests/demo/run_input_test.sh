@@ -68,7 +68,7 @@ expect slow 1 "S turns slow motion on"
 
 # The debug key is the same everywhere: Tab in every sample; D as well in the samples
 # where it steers nothing (all but 2 and 6, where it runs right).
-for sample in 1 2 3 4 5 6; do
+for sample in 1 2 3 4 5 6 7; do
   run --sample "$sample" --frames 6 --input "3 key-press Tab"
   expect debug 1 "Tab turns debug drawing on in sample $sample"
   run --sample "$sample" --frames 6 --input "3 key-press d"
@@ -117,9 +117,9 @@ run --sample 6 --frames 90 --input "20 mouse-down left 154 468; 21 mouse-move 15
 expect dragging 0 "releasing the button lets go"
 near player_y 478 0.01 "let go, the player falls back to the floor"
 
-# --- Keys 1 to 6 switch samples.
-names=(tutorial platformer pyramid rain bullets crates)
-for key in 1 2 3 4 5 6; do
+# --- Keys 1 to 7 switch samples.
+names=(tutorial platformer pyramid rain bullets crates slopes)
+for key in 1 2 3 4 5 6 7; do
   run --sample 3 --frames 3 --input "2 key-press $key"
   expect sample "${names[key - 1]}" "key $key"
 done

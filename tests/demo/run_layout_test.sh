@@ -41,7 +41,7 @@ no_bodies() {
     pixels "$1 (no $colour)" "$2" "$colour" "$3" "$4" "$5" "$6" 0
   done
 }
-for sample in 1 2 3 4 5 6; do
+for sample in 1 2 3 4 5 6 7; do
   panes="4:1272"
   [ "$sample" = 1 ] && panes="4:634 642:634"
   for debug in "" debug; do

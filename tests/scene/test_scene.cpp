@@ -896,5 +896,82 @@ TEST(ExampleScenes, TutorialIsTheClassicDemo) {
     }
 }
 
+/// The body of `scene` whose id is `id` (the test fails without one).
+const BodyDef& bodyNamed(const Scene& scene, const std::string& id) {
+    const auto found = std::find_if(scene.bodies.begin(), scene.bodies.end(),
+                                    [&](const SceneBody& body) { return body.id == id; });
+    EXPECT_NE(found, scene.bodies.end()) << id;
+    static const BodyDef none;
+    return found == scene.bodies.end() ? none : found->def;
+}
+
+TEST(ExampleScenes, SlopesHasRampsASegmentAndRoundBodies) {
+    const Scene scene = loadScene(JOSTLE_SCENES_DIR "/slopes.json");
+    EXPECT_EQ(scene.world.solver, Solver::Physical);
+    EXPECT_GT(scene.world.gravity.y, 0.0f); // y grows downward
+    // A 2:1 ramp falling to the right, a hill (a ramp up, a flat top, a ramp down, side
+    // by side) and a 2:1 ramp rising to the right, all static.
+    const BodyDef& slide = bodyNamed(scene, "slide");
+    EXPECT_EQ(slide.slope, (Vec2{1, -1}));
+    EXPECT_EQ(slide.hw, 2.0f * slide.hh);
+    const BodyDef& up = bodyNamed(scene, "hillUp");
+    const BodyDef& top = bodyNamed(scene, "hillTop");
+    const BodyDef& down = bodyNamed(scene, "hillDown");
+    EXPECT_EQ(up.slope, (Vec2{-1, -1}));
+    EXPECT_EQ(top.slope, Vec2{});
+    EXPECT_EQ(down.slope, (Vec2{1, -1}));
+    EXPECT_EQ(up.x + up.hw, top.x - top.hw);
+    EXPECT_EQ(top.x + top.hw, down.x - down.hw);
+    EXPECT_EQ(up.y - up.hh, top.y - top.hh); // the ramps reach the flat top's height
+    const BodyDef& bank = bodyNamed(scene, "bank");
+    EXPECT_EQ(bank.slope, (Vec2{-1, -1}));
+    EXPECT_EQ(bank.hw, 2.0f * bank.hh);
+    const BodyDef& chute = bodyNamed(scene, "chute");
+    EXPECT_TRUE(chute.segment);
+    for (const BodyDef* ramp : {&slide, &up, &down, &bank, &chute})
+        EXPECT_EQ(ramp->type, BodyType::Static);
+    // A ball, a capsule, and crates whose friction with the bank (0.8) holds them.
+    const BodyDef& ball = bodyNamed(scene, "ball");
+    EXPECT_EQ(ball.type, BodyType::Dynamic);
+    EXPECT_TRUE(ball.hw == ball.radius && ball.hh == ball.radius);
+    const BodyDef& capsule = bodyNamed(scene, "capsule");
+    EXPECT_TRUE(capsule.hw == capsule.radius && capsule.hh > capsule.radius);
+    EXPECT_EQ(bank.friction, 0.8f);
+    for (const char* crate : {"crate1", "crate2", "crate3"})
+        EXPECT_EQ(bodyNamed(scene, crate).friction, 0.8f) << crate;
+
+    World world(scene.world);
+    const std::vector<BodyId> ids = addBodies(world, scene);
+    EXPECT_EQ(ids.size(), scene.bodies.size());
+    for (int i = 0; i < 60; ++i)
+        world.step(scene.dt);
+    for (BodyId id : ids)
+        EXPECT_TRUE(isFinite(world.position(id)));
+}
+
+// Ten seconds of the slopes scene: the round bodies end on the floor or the ramps, none
+// through them, and friction holds the crates on the bank where they were put.
+TEST(ExampleScenes, SlopesKeepsEveryBodyInTheLevel) {
+    const Scene scene = loadScene(JOSTLE_SCENES_DIR "/slopes.json");
+    World world(scene.world);
+    const std::vector<BodyId> ids = addBodies(world, scene);
+    for (int i = 0; i < 600; ++i)
+        world.step(scene.dt);
+    const BodyDef& floor = bodyNamed(scene, "floor");
+    for (std::size_t i = 0; i < ids.size(); ++i) {
+        const BodyDef& def = scene.bodies[i].def;
+        if (def.type != BodyType::Dynamic)
+            continue;
+        SCOPED_TRACE(scene.bodies[i].id);
+        const Vec2 p = world.position(ids[i]);
+        EXPECT_LE(p.y + def.hh, floor.y - floor.hh + 0.5f); // on the floor or above it
+        EXPECT_GT(p.x, bodyNamed(scene, "leftWall").x);
+        EXPECT_LT(p.x, bodyNamed(scene, "rightWall").x);
+        if (scene.bodies[i].id.starts_with("crate")) { // friction holds them where they are
+            EXPECT_LT(length(p - Vec2{def.x, def.y}), 5.0f);
+        }
+    }
+}
+
 } // namespace
 } // namespace jostle

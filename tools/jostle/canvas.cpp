@@ -36,16 +36,18 @@ void Canvas::outline(PixelRect rect, std::uint8_t value) {
     fill({rect.x1 - 1, rect.y0, rect.x1, rect.y1}, value); // right
 }
 
-void Canvas::line(double fromX, double fromY, double toX, double toY, std::uint8_t value) {
-    const double dx = toX - fromX;
-    const double dy = toY - fromY;
+void Canvas::line(float fromX, float fromY, float toX, float toY, std::uint8_t value) {
+    const double x0 = static_cast<double>(fromX);
+    const double y0 = static_cast<double>(fromY);
+    const double dx = static_cast<double>(toX) - x0;
+    const double dy = static_cast<double>(toY) - y0;
     // Far beyond the canvas (a body flung away), a line is not worth a point a pixel.
     const double length = std::max(std::abs(dx), std::abs(dy));
     const int steps = static_cast<int>(std::ceil(std::min(length, 1e5)));
     for (int i = 0; i <= steps; ++i) {
         const double t = steps == 0 ? 0.0 : double(i) / double(steps);
-        const double x = std::floor(fromX + dx * t);
-        const double y = std::floor(fromY + dy * t);
+        const double x = std::floor(x0 + dx * t);
+        const double y = std::floor(y0 + dy * t);
         if (x >= 0 && y >= 0 && x < width_ && y < height_)
             pixels_[index(static_cast<int>(x), static_cast<int>(y))] = value;
     }

@@ -50,7 +50,7 @@ public:
     /// A 1-pixel line from `from` to `to`, in image coordinates (pixel (x, y) covers
     /// [x, x + 1) × [y, y + 1)): the pixel under each of evenly spaced points, one a pixel
     /// along its longer axis, both ends included.
-    void line(double fromX, double fromY, double toX, double toY, std::uint8_t index);
+    void line(float fromX, float fromY, float toX, float toY, std::uint8_t index);
 
     std::uint8_t at(int x, int y) const { return pixels_[index(x, y)]; }
     /// Row y, left to right.
