@@ -50,8 +50,10 @@ struct Crossing {
 };
 
 /// Whether the point `p`, on the line of edge `k` (grown), lies beyond one of the edge's
-/// ends where the corner is rounded: both edges there stop the mover and the radius left
-/// after the skin is positive. Gives the corner and that radius.
+/// ends where the corner is rounded: both edges there stop the mover and keep a positive
+/// radius after their skins. Gives the corner and its radius: the larger of the two
+/// edges', so that the circle holds the ends of both edges' grown lines (a line that
+/// misses it misses the outline there).
 bool roundedCornerAt(const CastOutline& cast, bool skinned, int k, Vec2 p, Vec2& corner,
                      float& radius) {
     const Outline& o = cast.outline;
@@ -66,18 +68,21 @@ bool roundedCornerAt(const CastOutline& cast, bool skinned, int k, Vec2 p, Vec2&
     if (!stops(cast, k) || !stops(cast, next))
         return false;
     corner = atFrom ? e.from : e.to;
-    radius = o.radius - (skinned ? std::max(cast.skin[k], cast.skin[next]) : 0.0f);
-    return radius > 0.0f;
+    const float thin = skinned ? std::min(cast.skin[k], cast.skin[next]) : 0.0f;
+    const float thick = skinned ? std::max(cast.skin[k], cast.skin[next]) : 0.0f;
+    radius = o.radius - thin;
+    return o.radius - thick > 0.0f;
 }
 
 /// The line from `start` along `motion` (t any real) against the outline, grown by its
 /// radius and, if `skinned`, shrunk by each edge's skin: the closed region's stretch of
-/// the line, or nothing if the line misses it. The polygon first (Cyrus-Beck: each edge a
-/// half-plane, grown by the radius), then, where the line comes in or goes out past the
-/// end of an edge at a rounded corner, the circle around that corner: a line that enters
-/// the grown polygon there and misses the circle misses the region.
-std::optional<Crossing> crossOutline(const CastOutline& cast, bool skinned, Vec2 start,
-                                     Vec2 motion) {
+/// the line, or nothing if the line misses it (by more than `slack`, in fractions of the
+/// motion). The polygon first (Cyrus-Beck: each edge a half-plane, grown by the radius),
+/// then, where the line comes in or goes out past the end of an edge at a rounded corner,
+/// the circle around that corner: a line that enters the grown polygon there and misses
+/// the circle misses the region.
+std::optional<Crossing> crossOutline(const CastOutline& cast, bool skinned, Vec2 start, Vec2 motion,
+                                     float slack = 0.0f) {
     const Outline& o = cast.outline;
     float enter = -kInfinity, leave = kInfinity;
     int in = -1, out = -1;
@@ -104,7 +109,10 @@ std::optional<Crossing> crossOutline(const CastOutline& cast, bool skinned, Vec2
             out = k;
         }
     }
-    if (in < 0 || out < 0 || enter > leave)
+    auto misses = [&](float from, float to) {
+        return from > to + slack * std::max(std::abs(from), std::abs(to));
+    };
+    if (in < 0 || out < 0 || misses(enter, leave))
         return std::nullopt;
     Crossing crossing{enter, leave, in, false, {}, o.edges[in].normal};
     Vec2 corner;
@@ -112,20 +120,23 @@ std::optional<Crossing> crossOutline(const CastOutline& cast, bool skinned, Vec2
     if (roundedCornerAt(cast, skinned, in, start + motion * enter, corner, radius)) {
         if (!throughCircle(start - corner, motion, radius, first, second))
             return std::nullopt;
-        crossing.enter = first;
-        crossing.rounded = true;
-        crossing.corner = corner;
-        const Vec2 outward = start + motion * first - corner;
-        const float distance = length(outward);
-        if (distance > 0.0f)
-            crossing.normal = outward * (1.0f / distance);
+        // The circle may reach past the other edge's grown line: in where both hold.
+        if (first >= enter) {
+            crossing.enter = first;
+            crossing.rounded = true;
+            crossing.corner = corner;
+            const Vec2 outward = start + motion * first - corner;
+            const float distance = length(outward);
+            if (distance > 0.0f)
+                crossing.normal = outward * (1.0f / distance);
+        }
     }
     if (roundedCornerAt(cast, skinned, out, start + motion * leave, corner, radius)) {
         if (!throughCircle(start - corner, motion, radius, first, second))
             return std::nullopt;
-        crossing.leave = second;
+        crossing.leave = std::min(leave, second);
     }
-    if (crossing.enter > crossing.leave)
+    if (misses(crossing.enter, crossing.leave))
         return std::nullopt;
     return crossing;
 }
@@ -148,7 +159,8 @@ int axisOf(const Crossing& crossing) {
 }
 
 ShapeHit hitOf(const CastOutline& cast, const Crossing& crossing, float time) {
-    return {time, crossing.normal, axisOf(crossing), touchingExtent(cast, crossing)};
+    return {time, crossing.normal, axisOf(crossing), crossing.normal,
+            touchingExtent(cast, crossing)};
 }
 
 /// The largest separation of `p` from the outline's edges (without its radius): > 0
@@ -234,15 +246,21 @@ std::optional<ShapeHit> castShape(const CastOutline& cast, Vec2 offset, Vec2 mot
     if (time > 1.0f)
         return std::nullopt;
     if (time <= 0.0f)
-        return ShapeHit{0.0f, deep->normal, -1, touchingExtent(cast, *deep)};
-    return hitOf(cast, *deep, time);
+        return ShapeHit{0.0f, deep->normal, -1, deep->normal, touchingExtent(cast, *deep)};
+    // The normal of the edge it goes into; around a rounded corner, where it touches it.
+    ShapeHit hit = hitOf(cast, *touch, time);
+    if (!(deep->rounded && touch->rounded && deep->corner == touch->corner))
+        hit.normal = deep->normal;
+    return hit;
 }
 
 std::optional<ShapeHit> rayShape(Vec2 from, Vec2 delta, Vec2 half, const Shape& shape) {
     if (delta.x == 0.0f && delta.y == 0.0f)
         return std::nullopt; // no direction: nothing to meet
     const CastOutline cast = castOutlineOf({}, 0.0f, half, shape, kAllFaces, 0.0f);
-    const std::optional<Crossing> crossing = crossOutline(cast, false, from, delta);
+    // A ray that grazes a corner touches it: rounding must not make it miss (a few float
+    // steps of the fractions).
+    const std::optional<Crossing> crossing = crossOutline(cast, false, from, delta, 1e-6f);
     // leave <= 0: the ray starts on the shape's far side, heading away.
     if (!crossing || crossing->enter > 1.0f || crossing->leave <= 0.0f)
         return std::nullopt;
@@ -257,7 +275,7 @@ std::optional<ShapeHit> rayShape(Vec2 from, Vec2 delta, Vec2 half, const Shape& 
     const int heading = std::abs(delta.y) >= std::abs(delta.x) ? 1 : 0;
     Vec2 normal{0.0f, 0.0f};
     normal[heading] = delta[heading] > 0.0f ? -1.0f : 1.0f;
-    return ShapeHit{0.0f, normal, -1, 0.0f};
+    return ShapeHit{0.0f, normal, -1, normal, 0.0f};
 }
 
 bool shapeHolds(Vec2 half, const Shape& shape, Vec2 point) {

@@ -44,15 +44,19 @@ struct CastOutline {
 CastOutline castOutlineOf(Vec2 moverHalf, float moverRadius, Vec2 half, const Shape& shape,
                           std::uint8_t stopping, float skinFactor);
 
-/// Where a mover meets a shape: geometry.hpp's Hit, and the extent of the contact there.
+/// Where a mover meets a shape: geometry.hpp's Hit, and where exactly the two touch.
 struct ShapeHit {
     float time;  ///< fraction of the motion, in [0, 1]
     Vec2 normal; ///< unit, from the obstacle towards the mover
-    /// 0 or 1: met on a flat face along x or y, which lies on the obstacle's box face; 2:
-    /// any other normal (a slope, a rounded corner); -1: touching or inside from the start.
+    /// Where the mover touches the outline at `time`: 0 or 1, on a flat face along x or y,
+    /// which lies on the obstacle's box face; 2, along any other normal (a slope, a
+    /// rounded corner); -1: touching or inside from the start.
     int axis;
-    /// The value of dot(offset, normal) at which the two touch along the normal (offset:
-    /// the mover's centre less the obstacle's). An overlap is extent - dot(offset, normal).
+    /// The outline's normal where the mover touches it: `normal`, but for a cast that
+    /// touches one edge and goes deeper through the next (as castBox's touch axis).
+    Vec2 touching;
+    /// The value of dot(offset, touching) at which the two touch along it (offset: the
+    /// mover's centre less the obstacle's). An overlap is extent - dot(offset, normal).
     float extent;
 };
 
@@ -64,7 +68,8 @@ std::optional<ShapeHit> sweepShape(const CastOutline& cast, Vec2 offset, Vec2 mo
 /// The queries' cast (castBox for a shape): the mover runs into the outline when the motion
 /// carries it deeper than the skin through an edge that stops it, having not been that deep
 /// at the start; the hit is where the two first touch (time 0, axis -1, if they touch
-/// already).
+/// already), with the normal of the edge it goes deeper through (around a rounded corner
+/// it touches, the corner's where it touches).
 std::optional<ShapeHit> castShape(const CastOutline& cast, Vec2 offset, Vec2 motion);
 
 /// The segment from `from` to `from + delta` (relative to the shape's centre) against the

@@ -4,7 +4,6 @@
 // the solver (docs/continuous-collision.md).
 #include "continuous.hpp"
 
-#include "../characters.hpp"
 #include "../shape_casts.hpp"
 #include "contacts.hpp"
 #include "seams.hpp"
@@ -119,27 +118,6 @@ std::optional<FirstHit> firstHit(const StepContext& step, std::uint32_t slot, Ve
     return first;
 }
 
-/// The contact of `a` and `b` along `normal` (from b towards a) when it is not an axis (a
-/// slope, a rounded corner): as the step's contacts make one (contacts.cpp), with the
-/// extent and size of the hit.
-Contact slopedContact(const StepContext& step, const Body& a, const Body& b, Vec2 normal,
-                      float extent, float size) {
-    Contact c;
-    c.axis = Contact::kSloped;
-    c.sign = c.tangentSign = 1.0f;
-    c.sloped = normal;
-    c.extent = extent;
-    c.size = size;
-    c.slop = step.options.slop * size;
-    const Vec2 down = step.world.events.down;
-    const float fa = frictionAgainst(a, normal, down), fb = frictionAgainst(b, -normal, down);
-    c.friction = step.options.frictionMix == FrictionMix::GeometricMean ? std::sqrt(fa * fb)
-                                                                        : std::min(fa, fb);
-    if (a.character || b.character)
-        c.tangentTarget = dot(walkOver(a, b, normal, down), c.tangent());
-    return c;
-}
-
 /// A contact for hit `first` of the sweep of `slot` (its normal from the obstacle towards
 /// the body), met at `speed`: it holds the body on the obstacle's side when position
 /// correction pushes it there from the other side, and reports the touch. Unless a contact
@@ -164,9 +142,9 @@ void addFoundContact(StepContext& step, std::uint32_t slot, const FirstHit& firs
     const Body& a = w.slots[slotA];
     const Body& b = w.slots[slotB];
     const Vec2 fromB = bodyFirst ? normal : -normal;
-    Contact c = normal.x == 0.0f || normal.y == 0.0f
+    Contact c = a.isBox() && b.isBox()
                     ? contactAlong(step, a, b, fromB)
-                    : slopedContact(step, a, b, fromB, first.extent, first.size);
+                    : contactAlongShape(step, a, b, fromB, first.extent, first.size);
     c.ia = ia;
     c.ib = ib;
     c.invMassA = a.invMass;
