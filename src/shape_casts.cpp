@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <limits>
 
 namespace jostle {
@@ -11,9 +12,17 @@ namespace {
 
 constexpr float kInfinity = std::numeric_limits<float>::infinity();
 
+const Outline::Edge& edgeOf(const Outline& o, int k) {
+    return o.edges[std::size_t(k)];
+}
+
+float skinOf(const CastOutline& cast, int k) {
+    return cast.skin[std::size_t(k)];
+}
+
 /// Whether edge `k` of the outline stops the mover.
 bool stops(const CastOutline& cast, int k) {
-    const std::uint8_t face = cast.outline.edges[k].face;
+    const std::uint8_t face = edgeOf(cast.outline, k).face;
     return face == Outline::kSloped || (cast.stopping & face) != 0;
 }
 
@@ -57,7 +66,7 @@ struct Crossing {
 bool roundedCornerAt(const CastOutline& cast, bool skinned, int k, Vec2 p, Vec2& corner,
                      float& radius) {
     const Outline& o = cast.outline;
-    const Outline::Edge& e = o.edges[k];
+    const Outline::Edge& e = edgeOf(o, k);
     const Vec2 along = e.to - e.from;
     const float t = dot(p - e.from, along);
     const float lengthSquared = dot(along, along);
@@ -68,8 +77,8 @@ bool roundedCornerAt(const CastOutline& cast, bool skinned, int k, Vec2 p, Vec2&
     if (!stops(cast, k) || !stops(cast, next))
         return false;
     corner = atFrom ? e.from : e.to;
-    const float thin = skinned ? std::min(cast.skin[k], cast.skin[next]) : 0.0f;
-    const float thick = skinned ? std::max(cast.skin[k], cast.skin[next]) : 0.0f;
+    const float thin = skinned ? std::min(skinOf(cast, k), skinOf(cast, next)) : 0.0f;
+    const float thick = skinned ? std::max(skinOf(cast, k), skinOf(cast, next)) : 0.0f;
     radius = o.radius - thin;
     return o.radius - thick > 0.0f;
 }
@@ -87,8 +96,8 @@ std::optional<Crossing> crossOutline(const CastOutline& cast, bool skinned, Vec2
     float enter = -kInfinity, leave = kInfinity;
     int in = -1, out = -1;
     for (int k = 0; k < o.count; ++k) {
-        const Outline::Edge& e = o.edges[k];
-        const float bound = e.offset + o.radius - (skinned ? cast.skin[k] : 0.0f);
+        const Outline::Edge& e = edgeOf(o, k);
+        const float bound = e.offset + o.radius - (skinned ? skinOf(cast, k) : 0.0f);
         const float toward = dot(motion, e.normal);
         const float outside = dot(start, e.normal) - bound;
         if (toward == 0.0f) {
@@ -100,7 +109,7 @@ std::optional<Crossing> crossOutline(const CastOutline& cast, bool skinned, Vec2
         if (toward < 0.0f) {
             // Into a corner exactly: the face nearer y, as for boxes.
             if (in < 0 || t > enter ||
-                (t == enter && std::abs(e.normal.y) > std::abs(o.edges[in].normal.y))) {
+                (t == enter && std::abs(e.normal.y) > std::abs(edgeOf(o, in).normal.y))) {
                 enter = t;
                 in = k;
             }
@@ -114,7 +123,7 @@ std::optional<Crossing> crossOutline(const CastOutline& cast, bool skinned, Vec2
     };
     if (in < 0 || out < 0 || misses(enter, leave))
         return std::nullopt;
-    Crossing crossing{enter, leave, in, false, {}, o.edges[in].normal};
+    Crossing crossing{enter, leave, in, false, {}, edgeOf(o, in).normal};
     Vec2 corner;
     float radius = 0.0f, first = 0.0f, second = 0.0f;
     if (roundedCornerAt(cast, skinned, in, start + motion * enter, corner, radius)) {
@@ -147,7 +156,7 @@ float touchingExtent(const CastOutline& cast, const Crossing& crossing) {
     const Outline& o = cast.outline;
     if (crossing.rounded)
         return dot(crossing.corner, crossing.normal) + o.radius;
-    return o.edges[crossing.edge].offset + o.radius;
+    return edgeOf(o, crossing.edge).offset + o.radius;
 }
 
 /// ShapeHit::axis of a crossing met at a time > 0.
@@ -168,7 +177,7 @@ ShapeHit hitOf(const CastOutline& cast, const Crossing& crossing, float time) {
 float largestSeparation(const Outline& o, Vec2 p) {
     float largest = -kInfinity;
     for (int k = 0; k < o.count; ++k)
-        largest = std::max(largest, dot(p, o.edges[k].normal) - o.edges[k].offset);
+        largest = std::max(largest, dot(p, edgeOf(o, k).normal) - edgeOf(o, k).offset);
     return largest;
 }
 
@@ -178,7 +187,7 @@ float distanceFrom(const Outline& o, Vec2 p) {
         return 0.0f;
     float nearest = kInfinity;
     for (int k = 0; k < o.count; ++k) {
-        const Outline::Edge& e = o.edges[k];
+        const Outline::Edge& e = edgeOf(o, k);
         const Vec2 along = e.to - e.from;
         const float lengthSquared = dot(along, along);
         const float t = lengthSquared > 0.0f
@@ -192,8 +201,8 @@ float distanceFrom(const Outline& o, Vec2 p) {
 /// The sloped edge of a ramp's or segment's outline.
 const Outline::Edge& slopedEdge(const Outline& o) {
     for (int k = 0; k < o.count; ++k)
-        if (o.edges[k].face == Outline::kSloped)
-            return o.edges[k];
+        if (edgeOf(o, k).face == Outline::kSloped)
+            return edgeOf(o, k);
     return o.edges[0]; // not reached: only asked of ramps and segments
 }
 
@@ -213,7 +222,7 @@ CastOutline castOutlineOf(Vec2 moverHalf, float moverRadius, Vec2 half, const Sh
     cast.outline = outlineOf(moverHalf - Vec2{moverRadius, moverRadius}, moverRadius, half, shape);
     cast.stopping = shape.kind() == ShapeKind::Segment ? std::uint8_t{0} : stopping;
     const Shape mover{moverRadius};
-    for (int k = 0; k < cast.outline.count; ++k) {
+    for (std::size_t k = 0; k < std::size_t(cast.outline.count); ++k) {
         const Vec2 n = cast.outline.edges[k].normal;
         cast.skin[k] = skinFactor * std::min(reachOf(moverHalf, mover, n), reachOf(half, shape, n));
     }
