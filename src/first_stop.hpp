@@ -1,14 +1,17 @@
 // Where a box moving through the world first stops: the core of boxCast, moveAndSlide and
-// move (jostle/query.hpp states their rules).
+// move (jostle/query.hpp states their rules). Between boxes, geometry.hpp's castBox; where
+// the mover is rounded or the body is not a sharp box, shape_casts.hpp's castShape.
 #pragma once
 
-#include "geometry.hpp"
 #include "candidates.hpp"
+#include "geometry.hpp"
+#include "shape_casts.hpp"
 #include "world_state.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <optional>
 #include <vector>
 
@@ -18,7 +21,12 @@ namespace jostle {
 struct Met {
     std::uint32_t slot;
     std::uint64_t created; ///< when its body was created: results follow it
+    /// Its axis is 2 for a normal along neither axis (a slope, a rounded corner).
     Hit contact;
+    /// Of a body that is not a sharp box, or met by a rounded box: where the two touch,
+    /// dot(centre - body's centre, touching) == extent (shape_casts.hpp's ShapeHit).
+    Vec2 touching{};
+    float extent = 0.0f;
 };
 
 /// What stops a moving box first: the time, and every body met then, in creation order.
@@ -28,11 +36,29 @@ struct FirstStop {
     Vec2 centre; ///< where the box stops
 };
 
-/// Sweeps the box of `centre` and `half` along `motion` through the bodies that
-/// accept(slot) lets stop it, by the rules of boxCast.
+/// Where a box of half extents `half` rounded by `radius` (0: a sharp box) moving from
+/// `centre` by `motion` runs into the body in `slot`, which is not a sharp box or is met by
+/// a rounded one (shape_casts.hpp's castShape): the hit and its extent.
+inline std::optional<Met> castAgainstShape(const WorldState& w, std::uint32_t slot, Vec2 centre,
+                                           Vec2 half, float radius, Vec2 motion) {
+    const Body& body = w.slots[slot];
+    // A one-way box stops only with its blocking face.
+    const std::uint8_t stopping =
+        body.isOneWay() ? faceBit(body.oneWay.x != 0.0f ? 0 : 1, body.oneWay.x + body.oneWay.y)
+                        : std::uint8_t{kAllFaces};
+    const CastOutline cast = castOutlineOf(half, radius, body.half, w.shapes[slot], stopping,
+                                           std::max(2.0f * w.def.physical.slop, kMinimumSkin));
+    const std::optional<ShapeHit> hit = castShape(cast, centre - body.position, motion);
+    if (!hit)
+        return std::nullopt;
+    return Met{slot, 0, Hit{hit->time, hit->normal, hit->axis}, hit->touching, hit->extent};
+}
+
+/// Sweeps the box of `centre` and `half`, rounded by `radius` (0: sharp), along `motion`
+/// through the bodies that accept(slot) lets stop it, by the rules of boxCast.
 template <class Accept>
 void firstStop(const WorldState& w, const Candidates& candidates, Vec2 centre, Vec2 half,
-               Vec2 motion, Accept&& accept, FirstStop& stop) {
+               float radius, Vec2 motion, Accept&& accept, FirstStop& stop) {
     stop.time = 2.0f;
     stop.met.clear();
     const float slop = w.def.physical.slop;
@@ -40,10 +66,19 @@ void firstStop(const WorldState& w, const Candidates& candidates, Vec2 centre, V
         if (!accept(slot))
             return;
         const Body& body = w.slots[slot];
-        const Vec2 skin{contactSkin(slop, half.x, body.half.x),
-                        contactSkin(slop, half.y, body.half.y)};
-        const std::optional<Hit> contact =
-            castBox(centre - body.position, half + body.half, motion, skin);
+        std::optional<Hit> contact;
+        Vec2 touching{};
+        float extent = 0.0f;
+        if (radius == 0.0f && body.isBox()) {
+            const Vec2 skin{contactSkin(slop, half.x, body.half.x),
+                            contactSkin(slop, half.y, body.half.y)};
+            contact = castBox(centre - body.position, half + body.half, motion, skin);
+        } else if (const std::optional<Met> met =
+                       castAgainstShape(w, slot, centre, half, radius, motion)) {
+            contact = met->contact;
+            touching = met->touching;
+            extent = met->extent;
+        }
         if (!contact || contact->time > stop.time)
             return;
         // castBox finds only what the box runs into from outside.
@@ -53,7 +88,7 @@ void firstStop(const WorldState& w, const Candidates& candidates, Vec2 centre, V
             stop.time = contact->time;
             stop.met.clear();
         }
-        stop.met.push_back({slot, candidates.created(slot), *contact});
+        stop.met.push_back({slot, candidates.created(slot), *contact, touching, extent});
     };
     candidates.outsideGrid(consider);
     candidates.walkPath(centre, motion, half, consider, [&](float end) { return stop.time < end; });
@@ -66,15 +101,58 @@ void firstStop(const WorldState& w, const Candidates& candidates, Vec2 centre, V
                                [](const Met& p, const Met& q) { return p.slot == q.slot; }),
                    stop.met.end());
     stop.centre = centre + motion * stop.time;
-    // Exactly touching along the axis they came into contact on, whatever the rounding.
+    // Exactly touching along the axis they came into contact on, whatever the rounding;
+    // along a normal on neither axis, moved along it to touching.
     for (const Met& m : stop.met) {
         const int axis = m.contact.axis;
         if (axis < 0)
             continue;
         const Body& body = w.slots[m.slot];
-        stop.centre[axis] =
-            body.position[axis] - std::copysign(half[axis] + body.half[axis], motion[axis]);
+        const Vec2 n = m.touching;
+        if (axis == 2)
+            stop.centre += n * (m.extent - dot(stop.centre - body.position, n));
+        else if (radius == 0.0f && body.isBox())
+            stop.centre[axis] =
+                body.position[axis] - std::copysign(half[axis] + body.half[axis], motion[axis]);
+        else
+            stop.centre[axis] = body.position[axis] + n[axis] * m.extent;
     }
+}
+
+/// What is left of `motion` when it may not go into any of `normals`, those of the bodies
+/// a box stopped against where it is (unit, from each body towards the box). Along
+/// axis-aligned faces alone, the axis of each is dropped (bump.lua's slide). With a slope
+/// or a rounded corner among them, the nearest motion that goes into none: the motion
+/// itself, or its slide along one of them, or none at all (into a crease).
+inline Vec2 slideAlong(Vec2 motion, const std::vector<Vec2>& normals) {
+    const bool alongAxes = std::all_of(normals.begin(), normals.end(),
+                                       [](Vec2 n) { return n.x == 0.0f || n.y == 0.0f; });
+    if (alongAxes) {
+        for (Vec2 n : normals)
+            (n.x != 0.0f ? motion.x : motion.y) = 0.0f;
+        return motion;
+    }
+    // Rounding leaves a slide a hair into the face it slides along.
+    const float tolerance = 1e-5f * length(motion);
+    auto goesIntoNone = [&](Vec2 m) {
+        return std::all_of(normals.begin(), normals.end(),
+                           [&](Vec2 n) { return dot(m, n) >= -tolerance; });
+    };
+    if (goesIntoNone(motion))
+        return motion;
+    Vec2 best{};
+    float bestLost = std::numeric_limits<float>::infinity();
+    for (Vec2 n : normals) {
+        const float into = dot(motion, n);
+        if (!(into < 0.0f) || -into >= bestLost)
+            continue;
+        const Vec2 slid = motion - n * into;
+        if (goesIntoNone(slid)) {
+            best = slid;
+            bestLost = -into;
+        }
+    }
+    return best;
 }
 
 } // namespace jostle

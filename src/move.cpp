@@ -45,6 +45,8 @@ MoveOutcome move(World& world, BodyId id, Vec2 delta, const MoveFilter& filter) 
     if (!inRange(self.position + delta))
         fail("move", "position + delta must be of magnitude <= 1e9 (math.hpp)");
     const Vec2 half = self.half;
+    // A rounded body moves as its shape; a ramp or a segment as its box.
+    const float radius = self.shape == ShapeKind::Round ? w.shapes[id.index].radius : 0.0f;
     MoveOutcome out{self.position, {}};
     Responses responses(w, filter);
     std::vector<std::uint32_t> crossed;
@@ -57,8 +59,10 @@ MoveOutcome move(World& world, BodyId id, Vec2 delta, const MoveFilter& filter) 
     Vec2 left = delta;    // what is left of the move, from out.centre
     float elapsed = 0.0f; // the part of the move's time already used
     FirstStop stop;
+    // The normals of the bodies it slid against where it is now; those of one stop.
+    std::vector<Vec2> against, slides, bounces;
     for (int stops = 0; stops < kMaxStops && (left.x != 0.0f || left.y != 0.0f); ++stops) {
-        firstStop(w, candidates, out.centre, half, left, meets, stop);
+        firstStop(w, candidates, out.centre, half, radius, left, meets, stop);
         if (stop.met.empty()) {
             out.centre += left;
             break;
@@ -66,6 +70,8 @@ MoveOutcome move(World& world, BodyId id, Vec2 delta, const MoveFilter& filter) 
         const float at = elapsed + (1.0f - elapsed) * stop.time;
         bool stopped = false, touched = false;
         bool slide[2] = {false, false}, bounce[2] = {false, false};
+        slides.clear();
+        bounces.clear();
         for (const Met& m : stop.met) {
             const Body& other = w.slots[m.slot];
             const Response response = responses.of(m.slot);
@@ -81,9 +87,11 @@ MoveOutcome move(World& world, BodyId id, Vec2 delta, const MoveFilter& filter) 
                 break;
             case Response::Slide:
                 slide[axis] = stopped = true;
+                slides.push_back(m.contact.normal);
                 break;
             case Response::Bounce:
                 bounce[axis] = stopped = true;
+                bounces.push_back(m.contact.normal);
                 break;
             case Response::Ignore:
                 break;
@@ -97,12 +105,26 @@ MoveOutcome move(World& world, BodyId id, Vec2 delta, const MoveFilter& filter) 
         left = left * (1.0f - stop.time);
         if (touched)
             break;
-        for (int axis = 0; axis < 2; ++axis) {
-            if (slide[axis])
-                left[axis] = 0.0f;
-            else if (bounce[axis])
-                left[axis] = -left[axis];
+        if (stop.time > 0.0f)
+            against.clear(); // it moved: what it slid against before is behind it
+        against.insert(against.end(), slides.begin(), slides.end());
+        const auto alongAxis = [](Vec2 n) { return n.x == 0.0f || n.y == 0.0f; };
+        if (std::all_of(against.begin(), against.end(), alongAxis) &&
+            std::all_of(bounces.begin(), bounces.end(), alongAxis)) {
+            for (int axis = 0; axis < 2; ++axis) {
+                if (slide[axis])
+                    left[axis] = 0.0f;
+                else if (bounce[axis])
+                    left[axis] = -left[axis];
+            }
+            continue;
         }
+        // A slope or a rounded corner: off each face it bounces from (each face once: after
+        // the first, it no longer goes into it), then along those it slides against.
+        for (Vec2 n : bounces)
+            if (const float into = dot(left, n); into < 0.0f)
+                left -= n * (2.0f * into);
+        left = slideAlong(left, against);
     }
     world.setPosition(id, out.centre);
     return out;

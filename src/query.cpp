@@ -3,9 +3,10 @@
 // applies the filters and the rules of each query (jostle/query.hpp).
 #include "jostle/query.hpp"
 
+#include "candidates.hpp"
 #include "first_stop.hpp"
 #include "geometry.hpp"
-#include "candidates.hpp"
+#include "shape_casts.hpp"
 #include "world_access.hpp"
 
 #include <algorithm>
@@ -14,6 +15,10 @@
 namespace jostle {
 
 namespace {
+
+/// moveAndSlide gives up after this many stops (bump.lua's items stop at most twice among
+/// boxes; slopes and rounded corners may take more, into a crease).
+constexpr int kMaxSlides = 32;
 
 bool passes(const WorldState& w, std::uint32_t slot, const QueryFilter& filter) {
     const Body& body = w.slots[slot];
@@ -54,7 +59,7 @@ void checkCast(const WorldState& w, const char* function, Vec2 centre, Vec2 half
 
 // --- What is here? -----------------------------------------------------------------------
 
-/// Fills `out` with the bodies that pass the filter and for which inside(body) holds,
+/// Fills `out` with the bodies that pass the filter and for which inside(slot) holds,
 /// among those touching `region`, in creation order.
 template <class Inside>
 void collect(const WorldState& w, const Box& region, const QueryFilter& filter, Inside&& inside,
@@ -62,7 +67,7 @@ void collect(const WorldState& w, const Box& region, const QueryFilter& filter, 
     out.clear();
     const Candidates candidates(w);
     auto consider = [&](std::uint32_t slot) {
-        if (inside(w.slots[slot].box()) && passes(w, slot, filter))
+        if (inside(slot) && passes(w, slot, filter))
             out.push_back(w.idOf(slot));
     };
     candidates.inGrid(region, consider);
@@ -74,9 +79,18 @@ void collect(const WorldState& w, const Box& region, const QueryFilter& filter, 
 
 void overlapping(const WorldState& w, Box box, const QueryFilter& filter,
                  std::vector<BodyId>& out) {
-    // Sharing area: touching edge to edge is not overlapping.
+    // Sharing area: touching edge to edge is not overlapping. A shape shares area with
+    // the box within its own box.
+    const Vec2 centre = (box.min + box.max) * 0.5f, half = (box.max - box.min) * 0.5f;
     collect(
-        w, box, filter, [&](const Box& body) { return overlaps(body, box); }, out);
+        w, box, filter,
+        [&](std::uint32_t slot) {
+            const Body& body = w.slots[slot];
+            return overlaps(body.box(), box) &&
+                   (body.isBox() ||
+                    shapeOverlaps(body.half, w.shapes[slot], centre - body.position, half));
+        },
+        out);
 }
 
 // --- Rays --------------------------------------------------------------------------------
@@ -100,7 +114,13 @@ std::optional<RayFound> rayMeets(const WorldState& w, const Candidates& candidat
     if (!passes(w, slot, filter))
         return std::nullopt;
     const Body& body = w.slots[slot];
-    const std::optional<Hit> contact = castRay(from, delta, body.box());
+    std::optional<Hit> contact;
+    if (body.isBox()) {
+        contact = castRay(from, delta, body.box());
+    } else if (const std::optional<ShapeHit> hit =
+                   rayShape(from - body.position, delta, body.half, w.shapes[slot])) {
+        contact = Hit{hit->time, hit->normal, hit->axis};
+    }
     if (!contact || !body.blocks(contact->normal, contact->axis >= 0, 0.0f))
         return std::nullopt;
     return RayFound{slot, candidates.created(slot), *contact};
@@ -109,8 +129,9 @@ std::optional<RayFound> rayMeets(const WorldState& w, const Candidates& candidat
 RayHit toRayHit(const WorldState& w, const RayFound& found, Vec2 from, Vec2 delta) {
     const Hit& contact = found.contact;
     Vec2 point = from + delta * contact.time;
-    if (contact.axis >= 0 && contact.time > 0.0f) {
-        // Exactly on the face, whatever the rounding of the fraction.
+    if ((contact.axis == 0 || contact.axis == 1) && contact.time > 0.0f) {
+        // Exactly on the face, whatever the rounding of the fraction (a flat face of a
+        // shape lies on its box's face too).
         const Box box = w.slots[found.slot].box();
         if (contact.axis == 0)
             point.x = contact.normal.x < 0.0f ? box.min.x : box.max.x;
@@ -138,10 +159,16 @@ void queryPoint(const World& world, Vec2 point, const QueryFilter& filter,
     const WorldState& w = WorldAccess::state(world);
     requireFinite("queryPoint", "point", point);
     checkFilter(w, filter, "queryPoint");
-    // On the edge is on the box.
+    // On the edge is on the box; a shape holds it within its own box.
     const Box at{point, point};
     collect(
-        w, at, filter, [&](const Box& body) { return touches(body, at); }, out);
+        w, at, filter,
+        [&](std::uint32_t slot) {
+            const Body& body = w.slots[slot];
+            return touches(body.box(), at) &&
+                   (body.isBox() || shapeHolds(body.half, w.shapes[slot], point - body.position));
+        },
+        out);
 }
 
 std::vector<BodyId> queryPoint(const World& world, Vec2 point, const QueryFilter& filter) {
@@ -241,7 +268,7 @@ std::optional<BoxCastHit> boxCast(const World& world, Vec2 centre, Vec2 half, Ve
     const Candidates candidates(w);
     FirstStop stop;
     firstStop(
-        w, candidates, centre, half, translation,
+        w, candidates, centre, half, 0.0f, translation,
         [&](std::uint32_t slot) { return passes(w, slot, filter); }, stop);
     if (stop.met.empty())
         return std::nullopt;
@@ -261,20 +288,26 @@ MoveResult moveAndSlide(const World& world, Vec2 centre, Vec2 half, Vec2 transla
     MoveResult result{centre, {}};
     Vec2 left = translation;
     FirstStop stop;
-    // Every stop drops the part of what is left along the normal of each body met, and a
-    // normal is along an axis the box is moving along: after two stops nothing is left.
-    while (left.x != 0.0f || left.y != 0.0f) {
-        firstStop(w, candidates, result.centre, half, left, stopsMovingBox, stop);
+    // The normals of the bodies the box stopped against where it is now.
+    std::vector<Vec2> against;
+    // Every stop drops the part of what is left that goes into the bodies met. Among
+    // boxes a normal is along an axis the box is moving along: after two stops nothing
+    // is left.
+    for (int stops = 0; stops < kMaxSlides && (left.x != 0.0f || left.y != 0.0f); ++stops) {
+        firstStop(w, candidates, result.centre, half, 0.0f, left, stopsMovingBox, stop);
         if (stop.met.empty()) {
             result.centre += left;
             break;
         }
+        if (stop.time > 0.0f)
+            against.clear(); // it moved: what it stopped against before is behind it
         result.centre = stop.centre;
         left = left * (1.0f - stop.time);
         for (const Met& m : stop.met) {
             result.hits.push_back({w.idOf(m.slot), m.contact.normal});
-            (m.contact.normal.x != 0.0f ? left.x : left.y) = 0.0f;
+            against.push_back(m.contact.normal);
         }
+        left = slideAlong(left, against);
     }
     return result;
 }

@@ -13,7 +13,9 @@
 //
 // Queries look at every body where it is now: after step(), after setPosition, while
 // asleep. They change nothing in the world, and they filter bodies as collisions do
-// (QueryFilter). docs/queries.md is the guide; this header is the reference.
+// (QueryFilter). They see each body's true shape (BodyDef::radius, slope, segment): a ray
+// meets a circle at the circle, a ramp on its slope; the box a cast or a move carries is a
+// box. docs/queries.md is the guide; this header is the reference.
 //
 // Results come in a fixed order, the same run after run: bodies in creation order, hits
 // by distance along the query and, at equal distance, in creation order.
@@ -73,14 +75,17 @@ struct QueryFilter {
 
 // --- What is here? ---------------------------------------------------------------------
 
-/// The bodies whose box contains `point`, in creation order. A point on an edge is on the
-/// box (a click on the seam between two tiles picks both).
+/// The bodies that contain `point`, in creation order. A point on an edge is on the body
+/// (a click on the seam between two tiles picks both). A body is its shape: a point in a
+/// circle's box but outside the circle, or in the half of a ramp's box cut away, is not in
+/// it; a segment, a line, holds the points on it (within float rounding).
 std::vector<BodyId> queryPoint(const World& world, Vec2 point, const QueryFilter& filter = {});
 
 /// The bodies that overlap the box of centre `centre` and half extents `half` (each >= 0),
 /// in creation order. Overlap means sharing some area: a body merely touching the box
 /// edge to edge is not reported, so a box resting on a floor does not overlap the floor,
-/// and "is there room to stand up here?" is answered with the standing box.
+/// and "is there room to stand up here?" is answered with the standing box. A body is its
+/// shape (a ramp's slope, a circle's curve); a segment overlaps the boxes it crosses.
 std::vector<BodyId> queryBox(const World& world, Vec2 centre, Vec2 half,
                              const QueryFilter& filter = {});
 
@@ -104,7 +109,8 @@ struct RayHit {
     BodyId body;
     /// from + (to - from) × fraction, placed exactly on the face it meets.
     Vec2 point;
-    /// The outward normal of the face the ray meets: unit, along x or y, against the ray.
+    /// The outward normal of the surface the ray meets, unit, against the ray: along x or y
+    /// for a box's face, a ramp's slope's normal, or a rounded body's normal there.
     Vec2 normal;
     /// How far along from → to, in [0, 1].
     float fraction = 0.0f;
@@ -122,7 +128,10 @@ struct RayHit {
 ///   equal). A ground probe that starts a little inside the floor reports the floor.
 /// - A ray that starts on a box's edge and heads away from it does not hit it.
 /// - A one-way platform (BodyDef::oneWay) is hit only through its blocking face, from
-///   outside; a ray starting inside it passes.
+///   outside; a ray starting inside it passes. So is a segment (BodyDef::segment): only
+///   from the side it faces, never from behind.
+/// - A point on an axis-aligned face (a box's, a ramp's legs, a rounded box's flat sides)
+///   lies exactly on it; on a slope or a curve, it is from + (to - from) × fraction.
 /// - A zero-length ray (from == to) hits nothing: use queryPoint.
 /// - Equal fractions: the body created first wins.
 std::optional<RayHit> rayCast(const World& world, Vec2 from, Vec2 to,
@@ -141,9 +150,11 @@ void rayCastAll(const World& world, Vec2 from, Vec2 to, const QueryFilter& filte
 struct BoxCastHit {
     BodyId body;
     /// Where the box's centre stops: touching the body. Along the normal's axis it is
-    /// placed exactly so (centre = the body's face + the half extent).
+    /// placed exactly so (centre = the body's face + the half extent); against a slope or
+    /// a curve, moved along the normal to touching, within float rounding.
     Vec2 centre;
-    /// Unit, along x or y, pointing from the body towards the box.
+    /// Unit, pointing from the body towards the box: along x or y for a box's face, the
+    /// slope's normal for a ramp's slope, the normal there for a rounded body's curve.
     Vec2 normal;
     /// The time of impact: the fraction of the translation travelled, in [0, 1].
     float fraction = 0.0f;
@@ -164,7 +175,11 @@ struct BoxCastHit {
 /// - A body that the box already overlaps by more than the skin on both axes does not
 ///   stop it: the box is inside and free to leave (queryBox tells that it is there).
 /// - A one-way platform stops the box only on its blocking face, and only if the box
-///   starts wholly on that side of it (within the skin), as in the physical model.
+///   starts wholly on that side of it (within the skin), as in the physical model. So does
+///   a segment, on the side it faces.
+/// - The moving box is a sharp box; the bodies are their shapes: a box meets a ramp on its
+///   slope, a circle where the curve is (the skin there is twice the slop of the smaller
+///   reach of the two along the normal).
 /// - A zero translation hits nothing. Equal fractions: the body created first wins.
 std::optional<BoxCastHit> boxCast(const World& world, Vec2 centre, Vec2 half, Vec2 translation,
                                   const QueryFilter& filter = {});
@@ -172,7 +187,7 @@ std::optional<BoxCastHit> boxCast(const World& world, Vec2 centre, Vec2 half, Ve
 /// A body met by moveAndSlide.
 struct MoveHit {
     BodyId body;
-    Vec2 normal; ///< unit, along x or y, pointing from the body towards the box
+    Vec2 normal; ///< unit, pointing from the body towards the box (as BoxCastHit's)
 };
 
 /// Where moveAndSlide left the box, and what it met on the way.
@@ -186,8 +201,12 @@ struct MoveResult {
 /// runs into a body (the rules of boxCast), then slides along it for the rest of the
 /// translation (the part into the body is dropped), and so on. Every body met at the
 /// moment of a stop is reported; one met on its side along x and one on its top along y
-/// together stop the box. Axis-aligned faces take away one axis each, so the box stops at
-/// most twice.
+/// together stop the box. Axis-aligned faces take away one axis each, so among boxes the
+/// box stops at most twice. A slope or a curve takes away the part of the motion along its
+/// normal: the box slides along a ramp's slope. Where what is left would go into another
+/// body the box touches there (a slope meeting a wall), it slides along whichever keeps
+/// the most of the motion and goes into neither, or stops in the crease; after 32 stops it
+/// stays where the last one left it.
 ///
 /// This is the tool to move a character by hand. Nothing in the world moves: use the
 /// result (setPosition of the character's own body, which `filter.ignore` should name,
@@ -216,7 +235,7 @@ using MoveFilter = std::function<Response(BodyId other)>;
 struct MoveCollision {
     BodyId other;
     Response response;
-    /// Unit, along x or y, pointing from `other` towards the moved body.
+    /// Unit, pointing from `other` towards the moved body (as BoxCastHit's).
     Vec2 normal;
     /// The moved body's centre when it touched `other` (placed exactly against its face).
     Vec2 touch;
@@ -243,8 +262,11 @@ struct MoveOutcome {
 /// or Ignore. Bodies its category and mask leave out, and the body itself, are never
 /// met. The body is put where the move ends (World::setPosition: it wakes what it
 /// leaves and what it reaches); its velocity is left alone. After 32 stops the body stays
-/// where the last one left it. Throws jostle::Error for a stale `id` or a delta that is not
-/// finite, or that carries the body out of the range of math.hpp.
+/// where the last one left it. A rounded body (BodyDef::radius) moves as its shape: a
+/// circle rolls round a corner that its box would have caught on; a ramp or a segment
+/// moves as its box. Against a slope or a curve, Slide goes on along it (as moveAndSlide)
+/// and Bounce is reflected off it. Throws jostle::Error for a stale `id` or a delta that is
+/// not finite, or that carries the body out of the range of math.hpp.
 MoveOutcome move(World& world, BodyId id, Vec2 delta, const MoveFilter& filter = {});
 
 } // namespace jostle

@@ -391,4 +391,9 @@ bool isVetoed(const StepContext& step, std::uint32_t slotA, std::uint32_t slotB)
     return std::binary_search(vetoed.begin(), vetoed.end(), pairKey(slotA, slotB));
 }
 
+Contact contactAlongShape(const StepContext& step, const Body& a, const Body& b, Vec2 normal,
+                          float extent, float size) {
+    return shapedContactOf(step, a, b, ShapedFacing{normal, 0.0f, 0.0f, extent, size});
+}
+
 } // namespace jostle

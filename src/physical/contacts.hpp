@@ -30,4 +30,11 @@ Contact contactAlong(const StepContext& step, const Body& a, const Body& b, Vec2
 /// Whether the pre-solve callback vetoed the contact of these two bodies this step.
 bool isVetoed(const StepContext& step, std::uint32_t slotA, std::uint32_t slotB);
 
+/// A contact of `a` and `b`, one of them not a sharp box, along unit `normal` (from b
+/// towards a, along an axis or not) where the two touch when (a - b) · normal is `extent`,
+/// `size` the smaller reach of the two along it: as the step makes one for such a pair,
+/// the rest left to the caller. For the continuous sweep's hits on shapes.
+Contact contactAlongShape(const StepContext& step, const Body& a, const Body& b, Vec2 normal,
+                          float extent, float size);
+
 } // namespace jostle

@@ -4,7 +4,9 @@
 // the solver (docs/continuous-collision.md).
 #include "continuous.hpp"
 
+#include "../shape_casts.hpp"
 #include "contacts.hpp"
+#include "seams.hpp"
 #include "step_context.hpp"
 #include "support.hpp"
 
@@ -34,7 +36,38 @@ bool movesUnforeseen(const StepContext& step, const Body& body, Vec2 before, Vec
 struct FirstHit {
     Hit hit;
     std::uint32_t slot;
+    /// A hit on a shape (a pair where one is not a sharp box): the contact's extent along
+    /// the normal, and the smaller reach of the two along it (shape_casts.hpp).
+    float extent = 0.0f;
+    float size = 0.0f;
 };
+
+/// The sweep of `body` by `motion` (relative to `obstacle`), where one of the two is not a
+/// sharp box: the body's centre against the obstacle's outline, through the faces that
+/// stop it (a static obstacle's faces that the level covers do not, a segment stops only
+/// with its slope, a one-way box only with its blocking face).
+std::optional<FirstHit> sweepShaped(const StepContext& step, std::uint32_t slot,
+                                    std::uint32_t other, Vec2 motion) {
+    const WorldState& w = step.world;
+    const Body& body = w.slots[slot];
+    const Body& obstacle = w.slots[other];
+    const Shape& bodyShape = w.shapes[slot];
+    const Shape& obstacleShape = w.shapes[other];
+    const float radius = body.shape == ShapeKind::Round ? bodyShape.radius : 0.0f;
+    std::uint8_t stopping = pushingFaces(w, obstacle, body);
+    if (obstacle.isOneWay())
+        stopping &=
+            faceBit(obstacle.oneWay.x != 0.0f ? 0 : 1, obstacle.oneWay.x + obstacle.oneWay.y);
+    const CastOutline cast =
+        castOutlineOf(body.half, radius, obstacle.half, obstacleShape, stopping,
+                      std::max(2.0f * step.options.slop, kMinimumSkin));
+    const std::optional<ShapeHit> hit = sweepShape(cast, body.position - obstacle.position, motion);
+    if (!hit)
+        return std::nullopt;
+    const float size = std::min(reachOf(body.half, bodyShape, hit->normal),
+                                reachOf(obstacle.half, obstacleShape, hit->normal));
+    return FirstHit{Hit{hit->time, hit->normal, hit->axis}, other, hit->extent, size};
+}
 
 /// The first body `slot` meets moving by `motion` this step: static and kinematic ones,
 /// and dynamic ones too if it is a bullet.
@@ -51,22 +84,31 @@ std::optional<FirstHit> firstHit(const StepContext& step, std::uint32_t slot, Ve
             !canCollide(body, obstacle))
             return;
         const Vec2 relative = motion - obstacle.velocity * step.dt;
-        const Vec2 skin{step.skinOf(body.half.x, obstacle.half.x),
-                        step.skinOf(body.half.y, obstacle.half.y)};
-        const std::optional<Hit> hit =
-            sweepBox(body.position - obstacle.position, body.half + obstacle.half, relative, skin);
+        std::optional<FirstHit> found;
+        if (body.isBox() && obstacle.isBox()) {
+            const Vec2 skin{step.skinOf(body.half.x, obstacle.half.x),
+                            step.skinOf(body.half.y, obstacle.half.y)};
+            const std::optional<Hit> hit = sweepBox(body.position - obstacle.position,
+                                                    body.half + obstacle.half, relative, skin);
+            if (hit)
+                found = FirstHit{*hit, other};
+        } else {
+            found = sweepShaped(step, slot, other, relative);
+        }
         // Only what the body runs into: a kinematic body coming at it from behind is the
         // contacts' business (they push it), not a reason to stop it.
-        if (!hit || dot(motion, hit->normal) >= 0.0f)
+        if (!found || dot(motion, found->hit.normal) >= 0.0f)
             return;
-        // The sweep finds only what the body enters from outside.
-        if (!obstacle.blocks(hit->normal, true, body.dropThroughTime))
+        // The sweep finds only what the body enters from outside; a segment lets through
+        // what drops through it on purpose, as a one-way platform does.
+        if (!obstacle.blocks(found->hit.normal, true, body.dropThroughTime) ||
+            (obstacle.shape == ShapeKind::Segment && body.dropThroughTime > 0.0f))
             return;
         // Nor does what the pre-solve callback let the body through in this step.
         if (isVetoed(step, slot, other))
             return;
-        if (!first || hit->time < first->hit.time)
-            first = FirstHit{*hit, other};
+        if (!first || found->hit.time < first->hit.time)
+            first = found;
     };
     w.restingGrid.query(swept, [&](std::uint32_t i) {
         if (w.slots[w.restingSlots[i]].type == BodyType::Static)
@@ -76,12 +118,13 @@ std::optional<FirstHit> firstHit(const StepContext& step, std::uint32_t slot, Ve
     return first;
 }
 
-/// A contact for a hit of the sweep of `slot` on `obstacle`, along `normal` (from the
-/// obstacle towards the body), met at `speed`: it holds the body on the obstacle's side
-/// when position correction pushes it there from the other side, and reports the touch.
-/// Unless a contact of the pair is in the step already.
-void addFoundContact(StepContext& step, std::uint32_t slot, std::uint32_t obstacle, Vec2 normal,
-                     float speed) {
+/// A contact for hit `first` of the sweep of `slot` (its normal from the obstacle towards
+/// the body), met at `speed`: it holds the body on the obstacle's side when position
+/// correction pushes it there from the other side, and reports the touch. Unless a contact
+/// of the pair is in the step already.
+void addFoundContact(StepContext& step, std::uint32_t slot, const FirstHit& first, float speed) {
+    const std::uint32_t obstacle = first.slot;
+    const Vec2 normal = first.hit.normal;
     WorldState& w = step.world;
     ContinuousScratch& s = step.scratch.continuous;
     const bool bodyFirst = w.createdBefore(slot, obstacle);
@@ -98,7 +141,10 @@ void addFoundContact(StepContext& step, std::uint32_t slot, std::uint32_t obstac
             return;
     const Body& a = w.slots[slotA];
     const Body& b = w.slots[slotB];
-    Contact c = contactAlong(step, a, b, bodyFirst ? normal : -normal);
+    const Vec2 fromB = bodyFirst ? normal : -normal;
+    Contact c = a.isBox() && b.isBox()
+                    ? contactAlong(step, a, b, fromB)
+                    : contactAlongShape(step, a, b, fromB, first.extent, first.size);
     c.ia = ia;
     c.ib = ib;
     c.invMassA = a.invMass;
@@ -120,7 +166,8 @@ void sweep(StepContext& step, std::uint32_t slot, Vec2 motion) {
         const std::optional<FirstHit> first = firstHit(step, slot, motion);
         if (!first)
             return;
-        const auto [hit, hitSlot] = *first;
+        const Hit& hit = first->hit;
+        const std::uint32_t hitSlot = first->slot;
         // Where it touches the obstacle as the obstacle is now: the integration that
         // follows moves both by their velocities, which the hit has made equal along the
         // normal.
@@ -129,7 +176,7 @@ void sweep(StepContext& step, std::uint32_t slot, Vec2 motion) {
         const float into = dot(body.velocity - obstacle.velocity, hit.normal);
         if (into < 0.0f)
             body.velocity -= hit.normal * into;
-        addFoundContact(step, slot, hitSlot, hit.normal, std::max(0.0f, -into));
+        addFoundContact(step, slot, *first, std::max(0.0f, -into));
         motion = body.velocity * step.dt;
     }
     if (firstHit(step, slot, motion))
