@@ -21,6 +21,37 @@ bool coversWith(const WorldState& world, const Body& cover, int axis, float side
            world.shapes[std::size_t(&cover - world.slots.data())].slope[axis] == side;
 }
 
+/// Whether the face of static `wall` on `side` along `axis` is covered from `from` to `to`
+/// along it by one other static body flush against it: on the other side of the face
+/// within a hair, and spanning that stretch. A hair is a small fraction of the sizes, or
+/// a few float steps at the face's coordinate (metre-sized tiles far from the origin round
+/// coarser than that fraction).
+bool coveredBetween(const WorldState& world, const Body& wall, const Body& other, int axis,
+                    float side, float from, float to) {
+    const int along = 1 - axis;
+    const float face = wall.position[axis] + side * wall.half[axis];
+    const float tolerance =
+        std::max(1e-4f * std::max(wall.half[axis], other.half[axis]), 4.0f * ulpOf(face));
+    Box probe;
+    probe.min[axis] = probe.max[axis] = face + side * tolerance;
+    probe.min[along] = from;
+    probe.max[along] = to;
+    bool covered = false;
+    world.restingGrid.query(probe, [&](std::uint32_t k) {
+        const Body& cover = world.slots[world.restingSlots[k]];
+        if (covered || cover.type != BodyType::Static || &cover == &wall ||
+            !coversWith(world, cover, axis, side))
+            return;
+        const Box coverBounds = cover.box();
+        const float near = side > 0.0f ? coverBounds.min[axis] : coverBounds.max[axis];
+        if (std::abs(near - face) > tolerance)
+            return;
+        covered =
+            coverBounds.min[along] <= from + tolerance && coverBounds.max[along] >= to - tolerance;
+    });
+    return covered;
+}
+
 /// A ramp's tip at the end of its face along `axis` (the face its slope has a side on).
 Vec2 tipOf(const Body& ramp, Vec2 slope, int axis) {
     Vec2 tip;
@@ -63,32 +94,12 @@ bool isCovered(const WorldState& world, const Body& wall, const Body& other, int
             return true;
     }
     const int along = 1 - axis;
-    const float face = wall.position[axis] + side * wall.half[axis];
-    const float tolerance =
-        std::max(1e-4f * std::max(wall.half[axis], other.half[axis]), 4.0f * ulpOf(face));
     const Box wallBox = wall.box(), otherBox = other.box();
     float from = std::max(wallBox.min[along], otherBox.min[along]);
     float to = std::min(wallBox.max[along], otherBox.max[along]);
     if (from > to)
         from = to = std::clamp(other.position[along], wallBox.min[along], wallBox.max[along]);
-    Box probe;
-    probe.min[axis] = probe.max[axis] = face + side * tolerance;
-    probe.min[along] = from;
-    probe.max[along] = to;
-    bool covered = false;
-    world.restingGrid.query(probe, [&](std::uint32_t k) {
-        const Body& cover = world.slots[world.restingSlots[k]];
-        if (covered || cover.type != BodyType::Static || &cover == &wall ||
-            !coversWith(world, cover, axis, side))
-            return;
-        const Box coverBounds = cover.box();
-        const float near = side > 0.0f ? coverBounds.min[axis] : coverBounds.max[axis];
-        if (std::abs(near - face) > tolerance)
-            return;
-        covered =
-            coverBounds.min[along] <= from + tolerance && coverBounds.max[along] >= to - tolerance;
-    });
-    return covered;
+    return coveredBetween(world, wall, other, axis, side, from, to);
 }
 
 } // namespace
@@ -108,40 +119,16 @@ std::uint8_t pushingFaces(const WorldState& world, const Body& wall, const Body&
 
 bool isSeam(const WorldState& world, const Body& wall, const Body& other, int axis) {
     const int along = 1 - axis; // the axis the face runs along
-    // The face, and the corner of it nearest `other`; `inward` runs from that corner
+    // The face on the side of `other`, and its corner nearest `other`; `inward` runs from it
     // along the face.
     const float side = other.position[axis] < wall.position[axis] ? -1.0f : 1.0f;
-    const float face = wall.position[axis] + side * wall.half[axis];
     const float end = other.position[along] < wall.position[along] ? -1.0f : 1.0f;
     const float corner = wall.position[along] + end * wall.half[along];
     const float inward = -end;
-    // Flush: within a hair of the face, on the far side of it from the wall. A hair is a
-    // small fraction of the sizes, or a few float steps at the face's coordinate (metre-
-    // sized tiles far from the origin round coarser than that fraction).
-    const float tolerance =
-        std::max(1e-4f * std::max(wall.half[axis], other.half[axis]), 4.0f * ulpOf(face));
     // It must cover the face from the corner inward, a good part of the way.
     const float reach = 0.25f * std::min(wall.half[along], other.half[along]);
-    Box probe;
-    probe.min[axis] = probe.max[axis] = face + side * tolerance;
-    probe.min[along] = std::min(corner, corner + inward * reach);
-    probe.max[along] = std::max(corner, corner + inward * reach);
-    bool covered = false;
-    world.restingGrid.query(probe, [&](std::uint32_t k) {
-        const Body& cover = world.slots[world.restingSlots[k]];
-        if (covered || cover.type != BodyType::Static || &cover == &wall ||
-            !coversWith(world, cover, axis, side))
-            return;
-        const Box coverBounds = cover.box();
-        // On the other side of the face, touching it...
-        const float near = side > 0.0f ? coverBounds.min[axis] : coverBounds.max[axis];
-        if (std::abs(near - face) > tolerance)
-            return;
-        // ... and spanning the probe along it.
-        covered = coverBounds.min[along] <= probe.min[along] + tolerance &&
-                  coverBounds.max[along] >= probe.max[along] - tolerance;
-    });
-    return covered;
+    return coveredBetween(world, wall, other, axis, side, std::min(corner, corner + inward * reach),
+                          std::max(corner, corner + inward * reach));
 }
 
 } // namespace jostle
