@@ -4,6 +4,7 @@
 #include "tilemap.hpp"
 
 #include "body_properties.hpp"
+#include "tile_chars.hpp"
 #include "world_access.hpp"
 
 #include <algorithm>
@@ -15,32 +16,6 @@ namespace jostle {
 
 namespace {
 
-/// What a ramp character stands for. Rows read top first in a y-down world: "down" below
-/// is the next row. A 2:1 ramp takes two tiles, its low half and its high half.
-struct RampTile {
-    char tile;
-    Vec2 slope;   ///< BodyDef::slope of its triangle
-    int height;   ///< 0: a 45° tile; 1: the low half of a 2:1 ramp; 2: its high half
-    char partner; ///< the 2:1 half that merges with it on its right, or 0
-};
-
-constexpr RampTile kRampTiles[] = {
-    {'/', {-1, -1}, 0, 0},   {'\\', {1, -1}, 0, 0}, {'7', {-1, 1}, 0, 0},   {'F', {1, 1}, 0, 0},
-    {'r', {-1, -1}, 1, 'R'}, {'R', {-1, -1}, 2, 0}, {'L', {1, -1}, 2, 'l'}, {'l', {1, -1}, 1, 0},
-    {'c', {-1, 1}, 1, 'C'},  {'C', {-1, 1}, 2, 0},  {'D', {1, 1}, 2, 'd'},  {'d', {1, 1}, 1, 0},
-};
-
-const RampTile* rampTile(char tile) {
-    for (const RampTile& r : kRampTiles)
-        if (r.tile == tile)
-            return &r;
-    return nullptr;
-}
-
-bool isTileChar(char tile) {
-    return tile == '#' || tile == '.' || rampTile(tile) != nullptr;
-}
-
 /// Columns [begin, end) of one row.
 struct Run {
     int begin;
@@ -50,16 +25,6 @@ struct Run {
 
 std::string describe(int column, int row) {
     return "column " + std::to_string(column) + ", row " + std::to_string(row);
-}
-
-/// A character as a message shows it: 'x' if printable ASCII, else its byte in hex (a
-/// tab, or the first byte of a UTF-8 sequence).
-std::string describeChar(char c) {
-    const auto byte = static_cast<unsigned char>(c);
-    if (byte >= 0x20 && byte < 0x7F)
-        return std::string("'") + c + "'";
-    const char* digits = "0123456789ABCDEF";
-    return std::string("byte 0x") + digits[byte >> 4] + digits[byte & 0xF];
 }
 
 TileMapData& lookUp(WorldState& world, TileMapId id, const char* function) {
@@ -285,68 +250,6 @@ void buildAll(World& world, TileMapId id) {
 
 } // namespace
 
-// --- Definitions -------------------------------------------------------------------------
-
-std::optional<FieldError> checkTileMapDef(const TileMapDef& def) {
-    if (auto problem = properties::formProblem(def, properties::kTileMapFields))
-        return problem;
-    if (!(def.tile > 0.0f))
-        return FieldError{"tile", "must be > 0"};
-    // Half a tile is the smallest half extent a box gets: a body's smallest size.
-    if (def.tile / 2.0f < kMinMagnitude)
-        return FieldError{"tile", "must be >= 2e-9"};
-
-    if (def.rows.empty())
-        return FieldError{"rows", "must have at least one row"};
-    if (def.rows.size() > static_cast<std::size_t>(std::numeric_limits<int>::max()))
-        return FieldError{"rows", "too many rows"};
-    const std::size_t columns = def.rows[0].size();
-    if (columns == 0)
-        return FieldError{"rows[0]", "must have at least one column"};
-    if (columns > static_cast<std::size_t>(std::numeric_limits<int>::max()))
-        return FieldError{"rows[0]", "too many columns"};
-    for (std::size_t row = 0; row < def.rows.size(); ++row) {
-        const std::string& text = def.rows[row];
-        const std::string place = "rows[" + std::to_string(row) + "]";
-        for (std::size_t column = 0; column < text.size(); ++column)
-            if (!isTileChar(text[column]))
-                return FieldError{place + "[" + std::to_string(column) + "]",
-                                  "expected '#', '.' or a ramp, got " + describeChar(text[column])};
-        if (text.size() != columns)
-            return FieldError{place, "has " + std::to_string(text.size()) +
-                                         " columns, rows[0] has " + std::to_string(columns)};
-    }
-
-    // The far corner must be in the range jostle works in (math.hpp), like every body.
-    const double width = static_cast<double>(columns) * static_cast<double>(def.tile);
-    const double height = static_cast<double>(def.rows.size()) * static_cast<double>(def.tile);
-    constexpr double kLargest = static_cast<double>(kMaxMagnitude);
-    if (!(std::fabs(static_cast<double>(def.x) + width) <= kLargest &&
-          std::fabs(static_cast<double>(def.y) + height) <= kLargest))
-        return FieldError{"tile", "puts the map's far corner beyond 1e9 (math.hpp)"};
-    // Each box's half extent, worked out as createTileMap does (edges in double, then a
-    // float), must be a size createBody accepts: away from the origin the edges of a small
-    // tile round towards each other. A box of one tile is the narrowest; every column and
-    // every row is looked at, since the rounding differs from one to the next.
-    auto narrowest = [&](float origin, std::size_t count) {
-        const double tile = static_cast<double>(def.tile);
-        float smallest = std::numeric_limits<float>::infinity();
-        for (std::size_t i = 0; i < count; ++i) {
-            const double low = static_cast<double>(origin) + static_cast<double>(i) * tile;
-            const double high = static_cast<double>(origin) + static_cast<double>(i + 1) * tile;
-            smallest = std::min(smallest, static_cast<float>((high - low) / 2));
-        }
-        return smallest;
-    };
-    if (narrowest(def.x, columns) < kMinMagnitude ||
-        narrowest(def.y, def.rows.size()) < kMinMagnitude)
-        return FieldError{"tile", "is too small for the map's position: its boxes would be "
-                                  "narrower than 2e-9 (math.hpp)"};
-
-    // The rules the map shares with bodies (friction, bounce, oneWay).
-    return properties::ruleProblem(def, properties::kTileMapFields);
-}
-
 // --- Maps --------------------------------------------------------------------------------
 
 TileMapId createTileMap(World& world, const TileMapDef& def) {
@@ -397,37 +300,9 @@ bool World::isValid(TileMapId id) const {
 // --- Tiles -------------------------------------------------------------------------------
 
 namespace {
+
 /// Makes (column, row) solid or not in the box decomposition, rebuilding the boxes
 /// around it.
-void setSolid(World& world, TileMapId id, int column, int row, bool solid);
-} // namespace
-
-void setTile(World& world, TileMapId id, int column, int row, bool solid) {
-    setTile(world, id, column, row, solid ? '#' : '.');
-}
-
-void setTile(World& world, TileMapId id, int column, int row, char tile) {
-    TileMapData& map = lookUp(WorldAccess::state(world), id, "setTile");
-    if (column < 0 || column >= map.columns || row < 0 || row >= map.rows)
-        fail("setTile", describe(column, row) + " is outside the map (" +
-                            std::to_string(map.columns) + " columns, " + std::to_string(map.rows) +
-                            " rows)");
-    if (!isTileChar(tile))
-        fail("setTile", "expected '#', '.' or a ramp, got " + describeChar(tile));
-    char& here = map.tiles[map.at(column, row)];
-    if (here == tile)
-        return;
-    const bool rampsChange = rampTile(here) || rampTile(tile);
-    const bool solid = tile == '#';
-    here = tile;
-    if (map.isSolid(column, row) != solid)
-        setSolid(world, id, column, row, solid);
-    if (rampsChange)
-        buildRamps(world, id, row);
-}
-
-namespace {
-
 void setSolid(World& world, TileMapId id, int column, int row, bool solid) {
     TileMapData& map = WorldAccess::state(world).tileMaps.maps[id.index];
 
@@ -483,6 +358,30 @@ void setSolid(World& world, TileMapId id, int column, int row, bool solid) {
 }
 
 } // namespace
+
+void setTile(World& world, TileMapId id, int column, int row, bool solid) {
+    setTile(world, id, column, row, solid ? '#' : '.');
+}
+
+void setTile(World& world, TileMapId id, int column, int row, char tile) {
+    TileMapData& map = lookUp(WorldAccess::state(world), id, "setTile");
+    if (column < 0 || column >= map.columns || row < 0 || row >= map.rows)
+        fail("setTile", describe(column, row) + " is outside the map (" +
+                            std::to_string(map.columns) + " columns, " + std::to_string(map.rows) +
+                            " rows)");
+    if (!isTileChar(tile))
+        fail("setTile", "expected '#', '.' or a ramp, got " + describeChar(tile));
+    char& here = map.tiles[map.at(column, row)];
+    if (here == tile)
+        return;
+    const bool rampsChange = rampTile(here) || rampTile(tile);
+    const bool solid = tile == '#';
+    here = tile;
+    if (map.isSolid(column, row) != solid)
+        setSolid(world, id, column, row, solid);
+    if (rampsChange)
+        buildRamps(world, id, row);
+}
 
 char tileOf(const World& world, TileMapId id, int column, int row) {
     const TileMapData& map = lookUp(WorldAccess::state(world), id, "tileOf");
