@@ -43,9 +43,7 @@ inline std::optional<Met> castAgainstShape(const WorldState& w, std::uint32_t sl
                                            Vec2 half, float radius, Vec2 motion) {
     const Body& body = w.slots[slot];
     // A one-way box stops only with its blocking face.
-    const std::uint8_t stopping =
-        body.isOneWay() ? faceBit(body.oneWay.x != 0.0f ? 0 : 1, body.oneWay.x + body.oneWay.y)
-                        : std::uint8_t{kAllFaces};
+    const std::uint8_t stopping = body.blockingFaces();
     const CastOutline cast = castOutlineOf(half, radius, body.half, w.shapes[slot], stopping,
                                            std::max(2.0f * w.def.physical.slop, kMinimumSkin));
     const std::optional<ShapeHit> hit = castShape(cast, centre - body.position, motion);

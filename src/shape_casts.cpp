@@ -208,14 +208,6 @@ const Outline::Edge& slopedEdge(const Outline& o) {
 
 } // namespace
 
-float reachOf(Vec2 half, const Shape& shape, Vec2 normal) {
-    const ShapeKind kind = shape.kind();
-    if (kind == ShapeKind::Ramp || kind == ShapeKind::Segment)
-        return std::min(half.x, half.y);
-    const float r = shape.radius;
-    return std::abs(normal.x) * (half.x - r) + std::abs(normal.y) * (half.y - r) + r;
-}
-
 CastOutline castOutlineOf(Vec2 moverHalf, float moverRadius, Vec2 half, const Shape& shape,
                           std::uint8_t stopping, float skinFactor) {
     CastOutline cast;

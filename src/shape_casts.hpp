@@ -17,12 +17,6 @@
 
 namespace jostle {
 
-/// How far a body of half extents `half` and shape `shape` reaches from its centre along
-/// unit `normal`, for the skin of a pair: a rounded box (a sharp one has radius 0) its
-/// core's reach plus its radius; a ramp or segment its smaller half extent. The contacts
-/// measure a pair's slop the same way (contacts.cpp).
-float reachOf(Vec2 half, const Shape& shape, Vec2 normal);
-
 /// The outline of an obstacle for a mover, and what of it stops the mover.
 struct CastOutline {
     Outline outline;

@@ -1,6 +1,7 @@
 // The outline of an obstacle for a moving body, and where the body touches it.
 #include "shapes.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -19,6 +20,14 @@ Vec2 scaled(Vec2 signs, Vec2 h) {
 }
 
 } // namespace
+
+float reachOf(Vec2 half, const Shape& shape, Vec2 normal) {
+    const ShapeKind kind = shape.kind();
+    if (kind == ShapeKind::Ramp || kind == ShapeKind::Segment)
+        return std::min(half.x, half.y);
+    const float r = shape.radius;
+    return std::abs(normal.x) * (half.x - r) + std::abs(normal.y) * (half.y - r) + r;
+}
 
 Outline outlineOf(Vec2 core, float radius, Vec2 half, const Shape& shape) {
     Outline o;

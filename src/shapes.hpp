@@ -58,6 +58,11 @@ inline Vec2 slopeNormal(Vec2 half, Vec2 slope) {
     return normalize(Vec2{slope.x * half.y, slope.y * half.x});
 }
 
+/// How far a body of half extents `half` and shape `shape` reaches from its centre along
+/// unit `normal`, for the slop and skin of a pair: a rounded box (a sharp one has radius
+/// 0) its core's reach plus its radius; a ramp or segment its smaller half extent.
+float reachOf(Vec2 half, const Shape& shape, Vec2 normal);
+
 /// The region a body's centre must stay out of to stay clear of an obstacle: the obstacle
 /// grown by the body's core (Minkowski sum), a convex polygon of up to five edges, and
 /// the sum of the radii around it. Each edge comes from one face of the obstacle's box

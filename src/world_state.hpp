@@ -81,6 +81,12 @@ struct alignas(64) Body {
     /// A sharp box: the pair rules of geometry.hpp, not those of shapes.hpp.
     bool isBox() const { return shape == ShapeKind::Box; }
     bool isOneWay() const { return oneWay.x != 0.0f || oneWay.y != 0.0f; }
+    /// The faces that stop what meets it (shapes.hpp's FaceBit): a one-way platform's
+    /// blocking face, or all four.
+    std::uint8_t blockingFaces() const {
+        return isOneWay() ? faceBit(oneWay.x != 0.0f ? 0 : 1, oneWay.x + oneWay.y)
+                          : std::uint8_t{kAllFaces};
+    }
     /// Whether this body stops another that meets it along `normal` (from this body
     /// towards the other). A one-way platform stops only what meets its blocking face,
     /// having been wholly outside it when the motion began (`fromOutside`), and not while

@@ -133,15 +133,6 @@ std::optional<Facing> chooseNormal(const StepContext& step, const Body& a, const
     return facing;
 }
 
-/// How far a body reaches from its centre along unit `normal`, for its slop and skin: a
-/// ramp or segment counts its smaller half extent.
-float reachAlong(const Body& body, const Shape& shape, Vec2 normal) {
-    if (body.shape == ShapeKind::Ramp || body.shape == ShapeKind::Segment)
-        return std::min(body.half.x, body.half.y);
-    const float r = shape.radius;
-    return std::abs(normal.x) * (body.half.x - r) + std::abs(normal.y) * (body.half.y - r) + r;
-}
-
 /// A pair where one body is not a sharp box (shapes.hpp), as chooseNormal for boxes.
 struct ShapedFacing {
     Vec2 normal; ///< from b towards a
@@ -185,8 +176,8 @@ std::optional<ShapedFacing> chooseShapedNormal(const StepContext& step, std::uin
         atImpact(*touch, offset, (mover.velocity - obstacle.velocity) * step.dt, outline.radius);
     if (!touch)
         return std::nullopt;
-    const float size = std::min(reachAlong(mover, moverShape, touch->normal),
-                                reachAlong(obstacle, obstacleShape, touch->normal));
+    const float size = std::min(reachOf(mover.half, moverShape, touch->normal),
+                                reachOf(obstacle.half, obstacleShape, touch->normal));
     const float skin = std::max(2.0f * step.options.slop, kMinimumSkin) * size;
     const float reachable = (length(mover.velocity) + length(obstacle.velocity)) * step.dt;
     if ((apart > skin && apart > reachable) ||

@@ -54,10 +54,7 @@ std::optional<FirstHit> sweepShaped(const StepContext& step, std::uint32_t slot,
     const Shape& bodyShape = w.shapes[slot];
     const Shape& obstacleShape = w.shapes[other];
     const float radius = body.shape == ShapeKind::Round ? bodyShape.radius : 0.0f;
-    std::uint8_t stopping = pushingFaces(w, obstacle, body);
-    if (obstacle.isOneWay())
-        stopping &=
-            faceBit(obstacle.oneWay.x != 0.0f ? 0 : 1, obstacle.oneWay.x + obstacle.oneWay.y);
+    const std::uint8_t stopping = pushingFaces(w, obstacle, body) & obstacle.blockingFaces();
     const CastOutline cast =
         castOutlineOf(body.half, radius, obstacle.half, obstacleShape, stopping,
                       std::max(2.0f * step.options.slop, kMinimumSkin));
