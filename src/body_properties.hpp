@@ -35,6 +35,7 @@ enum class Rule : std::uint8_t {
     MassOrZero,  ///< in range, >= 0, and 0 (the mass comes from density) or >= 1e-9
     Direction,   ///< a vector: {0, 0} or a unit vector along x or y (oneWay)
     Corner,      ///< a vector: {0, 0} or each component -1 or +1 (slope)
+    FloorAngle,  ///< degrees in [0, 90)
 };
 
 namespace checks {
@@ -55,6 +56,9 @@ inline const char* nonNegative(float v) {
 }
 inline const char* massNonNegative(float v) {
     return v >= 0.0f ? nullptr : "must be >= 0 (0: from density)";
+}
+inline const char* floorAngle(float v) {
+    return v >= 0.0f && v < 90.0f ? nullptr : "must be in [0, 90)";
 }
 inline const char* massZeroOrNotTiny(float v) {
     return v == 0.0f || v >= kMinMagnitude ? nullptr : "must be 0 (from density) or >= 1e-9";
@@ -78,6 +82,8 @@ constexpr std::array<NumberCheck, kMaxSteps> stepsOf(Rule rule) {
         return {inRange, nonNegative};
     case Rule::MassOrZero:
         return {inRange, massNonNegative, massZeroOrNotTiny};
+    case Rule::FloorAngle:
+        return {floorAngle}; // which no NaN passes
     case Rule::Any:
     case Rule::Direction:
     case Rule::Corner:
@@ -166,6 +172,8 @@ inline constexpr Property kSensor{"sensor", Rule::Any, false};
 inline constexpr Property kUserData{"userData", Rule::Any, static_cast<void*>(nullptr)};
 inline constexpr Property kCharacter{"character", Rule::Any, false};
 inline constexpr Property kWallFriction{"wallFriction", Rule::Unit, 0.0f};
+inline constexpr Property kFloorAngle{"floorAngle", Rule::FloorAngle, 60.0f};
+inline constexpr Property kSnapDown{"snapDown", Rule::NonNegative, 0.0f};
 inline constexpr Property kRadius{"radius", Rule::NonNegative, 0.0f};
 inline constexpr Property kSlope{"slope", Rule::Corner, Vec2{}};
 inline constexpr Property kSegment{"segment", Rule::Any, false};
@@ -243,6 +251,8 @@ inline constexpr BodyField kBodyFields[] = {
     {kUserData, &BodyDef::userData, &jostle_body_def::user_data},
     {kCharacter, &BodyDef::character, &jostle_body_def::character},
     {kWallFriction, &BodyDef::wallFriction, &jostle_body_def::wall_friction},
+    {kFloorAngle, &BodyDef::floorAngle, &jostle_body_def::floor_angle},
+    {kSnapDown, &BodyDef::snapDown, &jostle_body_def::snap_down},
     {kRadius, &BodyDef::radius, &jostle_body_def::radius},
     {kSlope, &BodyDef::slope, &jostle_body_def::slope},
     {kSegment, &BodyDef::segment, &jostle_body_def::segment},

@@ -19,7 +19,7 @@ Vec2 rightOf(Vec2 down) {
 
 /// Whether a surface pushing `body` along `push` is a floor the character stands on.
 bool isCharacterFloor(const Body& body, Vec2 push, Vec2 down) {
-    return body.isCharacter() && surfaceOf(push, down) == kFloor;
+    return body.isCharacter() && surfaceOf(push, down, body.floorCos) == kFloor;
 }
 
 } // namespace
@@ -38,7 +38,7 @@ void walkCharacters(WorldState& world) {
 }
 
 float frictionAgainst(const Body& body, Vec2 push, Vec2 down) {
-    if (!body.isCharacter() || surfaceOf(push, down) == kFloor)
+    if (!body.isCharacter() || surfaceOf(push, down, body.floorCos) == kFloor)
         return body.friction;
     return body.wallFriction;
 }
@@ -52,16 +52,19 @@ Vec2 walkOver(const Body& a, const Body& b, Vec2 normal, Vec2 down) {
     return {};
 }
 
-float walkAlongSlope(const Body& a, const Body& b, Vec2 normal, Vec2 down) {
+float walkAlongSlope(const Body& a, const Body& b, Vec2 normal, Vec2 down, float normalSpeed) {
     const Vec2 right = rightOf(down);
     const Vec2 tangent{-normal.y, normal.x};
     const float across = dot(tangent, right);
     if (across == 0.0f || std::abs(dot(normal, down)) >= 1.0f)
         return std::numeric_limits<float>::quiet_NaN();
+    // Along the tangent, what is left of the walk across gravity once the normal speed
+    // has taken its part.
+    const float closing = normalSpeed * dot(normal, right);
     if (isCharacterFloor(a, normal, down))
-        return a.walkSpeed / across;
+        return (a.walkSpeed - closing) / across;
     if (isCharacterFloor(b, -normal, down))
-        return -b.walkSpeed / across;
+        return (-b.walkSpeed - closing) / across;
     return std::numeric_limits<float>::quiet_NaN();
 }
 

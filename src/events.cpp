@@ -77,8 +77,8 @@ void recordContact(WorldState& world, std::uint32_t body, std::uint32_t other, V
                    float approachSpeed, float impulse) {
     StepEvents& events = world.events;
     // The surface pushes each body away from the other.
-    events.touching[body] |= surfaceOf(normal, events.down);
-    events.touching[other] |= surfaceOf(-normal, events.down);
+    events.touching[body] |= surfaceOf(normal, events.down, world.slots[body].floorCos);
+    events.touching[other] |= surfaceOf(-normal, events.down, world.slots[other].floorCos);
     // Listed with the body created first as `a`, the normal pointing towards it.
     if (world.createdBefore(body, other))
         events.contactsNow.push_back(
@@ -97,7 +97,7 @@ GroundRecord groundOf(const WorldState& world, BodyId id) {
     GroundRecord ground;
     float hardest = 0.0f;
     world.forEachContactOf(id, [&](BodyId other, Vec2 push, const TouchRecord& r) {
-        if (surfaceOf(push, world.events.down) != kFloor ||
+        if (surfaceOf(push, world.events.down, world.slots[id.index].floorCos) != kFloor ||
             (!ground.body.isNull() && !(r.impulse > hardest)))
             return;
         ground = {other, push};

@@ -33,11 +33,12 @@ enum TouchingBit : std::uint8_t {
 };
 
 /// What a surface that pushes a body along `push` is to it, with gravity along `down`
-/// (both unit): a floor pushes against gravity (within 60 degrees), a ceiling with it,
-/// a wall sideways.
-inline TouchingBit surfaceOf(Vec2 push, Vec2 down) {
+/// (both unit): a floor pushes against gravity, at least `floorCos` of it (Body::floorCos:
+/// within its floor angle of straight up), a ceiling with it (within 60 degrees), a wall
+/// sideways.
+inline TouchingBit surfaceOf(Vec2 push, Vec2 down, float floorCos) {
     const float vertical = dot(push, down);
-    if (vertical < -0.5f)
+    if (-vertical >= floorCos)
         return kFloor;
     if (vertical > 0.5f)
         return kCeiling;

@@ -52,6 +52,42 @@ inline std::optional<Met> castAgainstShape(const WorldState& w, std::uint32_t sl
     return Met{slot, 0, Hit{hit->time, hit->normal, hit->axis}, hit->touching, hit->extent};
 }
 
+/// Where a box of half extents `half` rounded by `radius` (0: sharp) moving from `centre`
+/// by `motion` runs into the body in `slot`, by the rules of boxCast: castBox between sharp
+/// boxes, castAgainstShape otherwise. `created` is left 0.
+inline std::optional<Met> castAgainst(const WorldState& w, std::uint32_t slot, Vec2 centre,
+                                      Vec2 half, float radius, Vec2 motion) {
+    const Body& body = w.slots[slot];
+    if (radius != 0.0f || !body.isBox())
+        return castAgainstShape(w, slot, centre, half, radius, motion);
+    const float slop = w.def.physical.slop;
+    const Vec2 skin{contactSkin(slop, half.x, body.half.x), contactSkin(slop, half.y, body.half.y)};
+    const std::optional<Hit> hit = castBox(centre - body.position, half + body.half, motion, skin);
+    if (!hit)
+        return std::nullopt;
+    return Met{slot, 0, *hit};
+}
+
+/// Where a box of `half` rounded by `radius`, at `centre` where its cast along `motion`
+/// met `m`, exactly touches it, whatever the rounding: along the axis they came into contact
+/// on, or, along a normal on neither axis, moved along it to touching.
+inline Vec2 touchingAt(const WorldState& w, Vec2 centre, Vec2 half, float radius, Vec2 motion,
+                       const Met& m) {
+    const int axis = m.contact.axis;
+    if (axis < 0)
+        return centre;
+    const Body& body = w.slots[m.slot];
+    const Vec2 n = m.touching;
+    if (axis == 2)
+        centre += n * (m.extent - dot(centre - body.position, n));
+    else if (radius == 0.0f && body.isBox())
+        centre[axis] =
+            body.position[axis] - std::copysign(half[axis] + body.half[axis], motion[axis]);
+    else
+        centre[axis] = body.position[axis] + n[axis] * m.extent;
+    return centre;
+}
+
 /// Sweeps the box of `centre` and `half`, rounded by `radius` (0: sharp), along `motion`
 /// through the bodies that accept(slot) lets stop it, by the rules of boxCast.
 template <class Accept>
@@ -59,34 +95,21 @@ void firstStop(const WorldState& w, const Candidates& candidates, Vec2 centre, V
                float radius, Vec2 motion, Accept&& accept, FirstStop& stop) {
     stop.time = 2.0f;
     stop.met.clear();
-    const float slop = w.def.physical.slop;
     auto consider = [&](std::uint32_t slot) {
         if (!accept(slot))
             return;
-        const Body& body = w.slots[slot];
-        std::optional<Hit> contact;
-        Vec2 touching{};
-        float extent = 0.0f;
-        if (radius == 0.0f && body.isBox()) {
-            const Vec2 skin{contactSkin(slop, half.x, body.half.x),
-                            contactSkin(slop, half.y, body.half.y)};
-            contact = castBox(centre - body.position, half + body.half, motion, skin);
-        } else if (const std::optional<Met> met =
-                       castAgainstShape(w, slot, centre, half, radius, motion)) {
-            contact = met->contact;
-            touching = met->touching;
-            extent = met->extent;
-        }
-        if (!contact || contact->time > stop.time)
+        std::optional<Met> met = castAgainst(w, slot, centre, half, radius, motion);
+        if (!met || met->contact.time > stop.time)
             return;
         // castBox finds only what the box runs into from outside.
-        if (!body.blocks(contact->normal, true, 0.0f))
+        if (!w.slots[slot].blocks(met->contact.normal, true, 0.0f))
             return;
-        if (contact->time < stop.time) {
-            stop.time = contact->time;
+        if (met->contact.time < stop.time) {
+            stop.time = met->contact.time;
             stop.met.clear();
         }
-        stop.met.push_back({slot, candidates.created(slot), *contact, touching, extent});
+        met->created = candidates.created(slot);
+        stop.met.push_back(*met);
     };
     candidates.outsideGrid(consider);
     candidates.walkPath(centre, motion, half, consider, [&](float end) { return stop.time < end; });
@@ -99,22 +122,8 @@ void firstStop(const WorldState& w, const Candidates& candidates, Vec2 centre, V
                                [](const Met& p, const Met& q) { return p.slot == q.slot; }),
                    stop.met.end());
     stop.centre = centre + motion * stop.time;
-    // Exactly touching along the axis they came into contact on, whatever the rounding;
-    // along a normal on neither axis, moved along it to touching.
-    for (const Met& m : stop.met) {
-        const int axis = m.contact.axis;
-        if (axis < 0)
-            continue;
-        const Body& body = w.slots[m.slot];
-        const Vec2 n = m.touching;
-        if (axis == 2)
-            stop.centre += n * (m.extent - dot(stop.centre - body.position, n));
-        else if (radius == 0.0f && body.isBox())
-            stop.centre[axis] =
-                body.position[axis] - std::copysign(half[axis] + body.half[axis], motion[axis]);
-        else
-            stop.centre[axis] = body.position[axis] + n[axis] * m.extent;
-    }
+    for (const Met& m : stop.met)
+        stop.centre = touchingAt(w, stop.centre, half, radius, motion, m);
 }
 
 /// What is left of `motion` when it may not go into any of `normals`, those of the bodies

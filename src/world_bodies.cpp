@@ -35,9 +35,9 @@ template <class F> void forEachKeptSetting(F&& f) {
     f(&BodyDef::category, &Body::category);
     f(&BodyDef::mask, &Body::mask);
     f(&BodyDef::sensor, &Body::sensor);
-    f(&BodyDef::userData, &Body::userData);
     f(&BodyDef::character, &Body::character);
     f(&BodyDef::wallFriction, &Body::wallFriction);
+    f(&BodyDef::snapDown, &Body::snapDown);
 }
 
 } // namespace
@@ -59,6 +59,8 @@ BodyId World::createBody(const BodyDef& def) {
     w.created[slot] = w.bodiesCreated++;
     w.shapes.resize(w.slots.size());
     w.shapes[slot] = shape;
+    w.asGiven.resize(w.slots.size());
+    w.asGiven[slot] = {def.userData, def.floorAngle};
     Body& body = w.slots[slot];
     const std::uint32_t generation = body.generation;
     body = Body{};
@@ -70,8 +72,11 @@ BodyId World::createBody(const BodyDef& def) {
     forEachKeptSetting([&](auto given, auto kept) { body.*kept = def.*given; });
     body.lastStepVelocity = body.velocity;
     body.shape = shape.kind();
+    body.floorCos = floorCosOf(def.floorAngle);
     if (!body.isBox())
         ++w.shapedBodies;
+    if (body.snapDown > 0.0f)
+        ++w.snappingBodies;
     body.updateMass();
 
     if (slot < w.events.touching.size())
@@ -92,6 +97,8 @@ void World::destroyBody(BodyId id) {
     body.alive = false;
     if (!body.isBox())
         --w.shapedBodies;
+    if (body.snapDown > 0.0f)
+        --w.snappingBodies;
     body.generation = nextGeneration(body.generation);
     (w.stepping ? w.pendingFree : w.freeSlots).push_back(id.index);
     w.order.erase(std::find(w.order.begin(), w.order.end(), id));
@@ -137,6 +144,8 @@ BodyDef World::bodyDef(BodyId id) const {
     def.radius = shape.radius;
     def.slope = shape.slope;
     def.segment = shape.segment;
+    def.userData = state_->asGiven[id.index].userData;
+    def.floorAngle = state_->asGiven[id.index].floorAngle;
     return def;
 }
 
@@ -339,6 +348,30 @@ void World::setWallFriction(BodyId id, float friction) {
             &Body::wallFriction, friction);
 }
 
+float World::floorAngle(BodyId id) const {
+    lookUp(*state_, id, "floorAngle");
+    return state_->asGiven[id.index].floorAngle;
+}
+
+void World::setFloorAngle(BodyId id, float degrees) {
+    Body& b = lookUp(*state_, id, "setFloorAngle");
+    require("setFloorAngle", "degrees", properties::kFloorAngle.rule, degrees);
+    state_->asGiven[id.index].floorAngle = degrees;
+    b.floorCos = floorCosOf(degrees);
+    disturb(*state_, id.index);
+}
+
+float World::snapDown(BodyId id) const {
+    return lookUp(*state_, id, "snapDown").snapDown;
+}
+
+void World::setSnapDown(BodyId id, float distance) {
+    const bool was = lookUp(*state_, id, "setSnapDown").snapDown > 0.0f;
+    setKept(*state_, id, "setSnapDown", "distance", properties::kSnapDown, &Body::snapDown,
+            distance);
+    state_->snappingBodies += std::uint32_t(distance > 0.0f) - std::uint32_t(was);
+}
+
 float World::walkSpeed(BodyId id) const {
     return lookUp(*state_, id, "walkSpeed").walkSpeed;
 }
@@ -409,11 +442,13 @@ void World::setSensor(BodyId id, bool sensor) {
 }
 
 void* World::userData(BodyId id) const {
-    return lookUp(*state_, id, "userData").userData;
+    lookUp(*state_, id, "userData");
+    return state_->asGiven[id.index].userData;
 }
 
 void World::setUserData(BodyId id, void* data) {
-    lookUp(*state_, id, "setUserData").userData = data;
+    lookUp(*state_, id, "setUserData");
+    state_->asGiven[id.index].userData = data;
 }
 
 Vec2 World::separation(BodyId id) const {

@@ -13,6 +13,7 @@
 #include "shapes.hpp"
 #include "tilemap.hpp"
 
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <utility>
@@ -49,7 +50,11 @@ struct alignas(64) Body {
     ShapeKind shape = ShapeKind::Box;
 
     // --- Read once a step, or less ---
-    void* userData = nullptr;
+    /// BodyDef::floorAngle's cosine: a surface pushing it at least this much against
+    /// gravity is its floor (events.hpp's surfaceOf).
+    float floorCos = 0.5f;
+    /// BodyDef::snapDown: how far it is moved down onto the ground (physical/snap.hpp).
+    float snapDown = 0.0f;
     /// Sum of the separation vectors applied to this body during the last step.
     Vec2 separation;
     /// Kinematic bodies: the velocity they moved with in the last step, to hand what
@@ -102,6 +107,17 @@ struct alignas(64) Body {
 static_assert(offsetof(Body, shape) < 64, "the hot part of Body fits one cache line");
 static_assert(sizeof(Body) == 128, "a Body is two cache lines");
 
+/// A body's settings that the steps never read, as the user gave them.
+struct KeptAsGiven {
+    void* userData = nullptr;
+    float floorAngle = 60.0f; ///< degrees; Body::floorCos is what the steps read
+};
+
+/// The cosine of an angle in degrees: the floorCos of a floorAngle (60 gives 0.5 exactly).
+inline float floorCosOf(float degrees) {
+    return float(std::cos(double(degrees) * (3.14159265358979323846 / 180.0)));
+}
+
 /// The filter rule: each one's category shares a bit with the other's mask.
 inline bool canCollide(const Body& a, const Body& b) {
     return (a.category & b.mask) != 0 && (b.category & a.mask) != 0;
@@ -147,6 +163,10 @@ struct WorldState {
     std::vector<Shape> shapes;
     /// How many live bodies are not sharp boxes: the classic model refuses them.
     std::uint32_t shapedBodies = 0;
+    /// Each slot's settings as the user gave them, which no step reads.
+    std::vector<KeptAsGiven> asGiven;
+    /// How many live bodies have a snapDown: the step looks for ground under them.
+    std::uint32_t snappingBodies = 0;
 
     /// The broadphase of bodies at rest: static and sleeping bodies, rebuilt only when
     /// one of them changes (restingDirty), so a still level costs nothing per step.

@@ -105,6 +105,19 @@ struct BodyDef {
     /// A character's friction against walls and ceilings, in [0, 1]. 0 (the default):
     /// it slides along a wall it is pressed into as in open air.
     float wallFriction = 0.0f;
+    /// The steepest surface, in degrees from level, that is a floor to this body: what
+    /// World::touching calls floor and World::ground returns, where a character walks and
+    /// rubs with its friction. Steeper, it is a wall (or a ceiling, past 120 degrees). In
+    /// [0, 90); 60 by default. A character on a slope steeper than this slides down it.
+    float floorAngle = 60.0f;
+    /// Sticks to the ground, for characters walking down slopes and over crests: a body
+    /// that stood on a floor at the end of the last step, and does not move away from it,
+    /// is moved down (along gravity) onto the floor below at the end of the step, by at
+    /// most this distance, instead of flying off; its velocity then runs along that floor
+    /// (a character keeps its speed across gravity, any other body its speed). Jumping
+    /// (moving away from the floor) and falling further than this are left alone.
+    /// >= 0; 0 (the default): off. The physical model only: the classic one ignores it.
+    float snapDown = 0.0f;
     /// Rounds the box's corners with this radius, in [0, min(hw, hh)]: hw = hh = radius is
     /// a circle, hw = radius < hh an upright capsule. 0 (the default): a sharp box. Mass
     /// still comes from the box's area, 4 × hw × hh. The physical model only.
@@ -132,10 +145,10 @@ struct FieldError {
 
 /// The first problem with `def`, or nothing if World::createBody will accept it.
 /// The rules: every number finite; hw, hh, density > 0; mass, damping, radius >= 0;
-/// bounce, friction and wallFriction in [0, 1]; oneWay {0, 0} or a unit vector along x
-/// or y; radius at most hw and hh; slope {0, 0} or each component -1 or +1, and then the
-/// body static or kinematic, with no radius and no oneWay; segment only with a slope; a
-/// rounded body not one-way.
+/// bounce, friction and wallFriction in [0, 1]; floorAngle in [0, 90); snapDown >= 0; oneWay {0, 0}
+/// or a unit vector along x or y; radius at most hw and hh; slope {0, 0} or each component -1 or
+/// +1, and then the body static or kinematic, with no radius and no oneWay; segment only with a
+/// slope; a rounded body not one-way.
 std::optional<FieldError> checkBodyDef(const BodyDef& def);
 
 /// True if `normal` is acceptable as BodyDef::oneWay.

@@ -301,6 +301,12 @@ typedef struct jostle_body_def {
     /// jostle_body_set_walk_speed along its ground, rubs only on floors.
     bool character;
     float wall_friction; ///< a character's friction on walls and ceilings, default 0
+    /// The steepest floor, in degrees from level, in [0, 90); default 60
+    /// (jostle::BodyDef::floorAngle).
+    float floor_angle;
+    /// Sticks to the ground walking down slopes and over crests, by at most this distance;
+    /// >= 0, default 0: off (jostle::BodyDef::snapDown).
+    float snap_down;
     /// Rounds the corners (jostle::BodyDef::radius): in [0, min(hw, hh)]; hw = hh = radius
     /// is a circle. Default 0. docs/slopes-and-shapes.md.
     float radius;
@@ -433,6 +439,16 @@ bool jostle_body_set_character(jostle_world* world, jostle_body_id body, bool ch
 float jostle_body_get_wall_friction(const jostle_world* world, jostle_body_id body);
 /// In [0, 1].
 bool jostle_body_set_wall_friction(jostle_world* world, jostle_body_id body, float friction);
+
+/// See jostle_body_def.floor_angle.
+float jostle_body_get_floor_angle(const jostle_world* world, jostle_body_id body);
+/// Degrees in [0, 90).
+bool jostle_body_set_floor_angle(jostle_world* world, jostle_body_id body, float degrees);
+
+/// See jostle_body_def.snap_down.
+float jostle_body_get_snap_down(const jostle_world* world, jostle_body_id body);
+/// >= 0; 0 is off.
+bool jostle_body_set_snap_down(jostle_world* world, jostle_body_id body, float distance);
 
 /// The speed a character walks at, default 0: along what it stands on and relative to it,
 /// so that it keeps pace with a lift; positive to the right of gravity's "down" (+x in a

@@ -296,6 +296,12 @@ public:
     /// See BodyDef::wallFriction: in [0, 1].
     float wallFriction(BodyId id) const;
     void setWallFriction(BodyId id, float friction);
+    /// See BodyDef::floorAngle: degrees in [0, 90). Counts from the next step's contacts.
+    float floorAngle(BodyId id) const;
+    void setFloorAngle(BodyId id, float degrees);
+    /// See BodyDef::snapDown: >= 0, 0 is off.
+    float snapDown(BodyId id) const;
+    void setSnapDown(BodyId id, float distance);
     /// The speed a character walks at (finite): along what it stands on and relative to
     /// it, so that it keeps pace with a lift; positive to the right of gravity's "down"
     /// (+x in a y-down world); in the air, relative to the world. It holds until changed:

@@ -227,6 +227,22 @@ bool jostle_body_set_wall_friction(jostle_world* world, jostle_body_id body, flo
     return set(__func__, world, [&](World& w) { w.setWallFriction(toCpp(body), friction); });
 }
 
+float jostle_body_get_floor_angle(const jostle_world* world, jostle_body_id body) {
+    return get<float>(__func__, world, [&](const World& w) { return w.floorAngle(toCpp(body)); });
+}
+
+bool jostle_body_set_floor_angle(jostle_world* world, jostle_body_id body, float degrees) {
+    return set(__func__, world, [&](World& w) { w.setFloorAngle(toCpp(body), degrees); });
+}
+
+float jostle_body_get_snap_down(const jostle_world* world, jostle_body_id body) {
+    return get<float>(__func__, world, [&](const World& w) { return w.snapDown(toCpp(body)); });
+}
+
+bool jostle_body_set_snap_down(jostle_world* world, jostle_body_id body, float distance) {
+    return set(__func__, world, [&](World& w) { w.setSnapDown(toCpp(body), distance); });
+}
+
 float jostle_body_get_walk_speed(const jostle_world* world, jostle_body_id body) {
     return get<float>(__func__, world, [&](const World& w) { return w.walkSpeed(toCpp(body)); });
 }

@@ -212,7 +212,9 @@ Contact shapedContactOf(const StepContext& step, const Body& a, const Body& b,
     c.friction = combineFriction(step.options.frictionMix, frictionAgainst(a, n, down),
                                  frictionAgainst(b, -n, down));
     if (a.character || b.character) {
-        const float walk = walkAlongSlope(a, b, n, down);
+        // A gap the contact lets close within the step (setTarget) takes its part of it.
+        const float closing = facing.gap > 0.0f ? -facing.gap / step.dt : 0.0f;
+        const float walk = walkAlongSlope(a, b, n, down, closing);
         if (std::isnan(walk)) {
             c.tangentTarget = dot(walkOver(a, b, n, down), c.tangent());
         } else {

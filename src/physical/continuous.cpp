@@ -33,15 +33,6 @@ bool movesUnforeseen(const StepContext& step, const Body& body, Vec2 before, Vec
     return beyond(before.x, after.x, body.half.x) || beyond(before.y, after.y, body.half.y);
 }
 
-struct FirstHit {
-    Hit hit;
-    std::uint32_t slot;
-    /// A hit on a shape (a pair where one is not a sharp box): the contact's extent along
-    /// the normal, and the smaller reach of the two along it (shape_casts.hpp).
-    float extent = 0.0f;
-    float size = 0.0f;
-};
-
 /// The sweep of `body` by `motion` (relative to `obstacle`), where one of the two is not a
 /// sharp box: the body's centre against the obstacle's outline, through the faces that
 /// stop it (a static obstacle's faces that the level covers do not, a segment stops only
@@ -115,10 +106,8 @@ std::optional<FirstHit> firstHit(const StepContext& step, std::uint32_t slot, Ve
     return first;
 }
 
-/// A contact for hit `first` of the sweep of `slot` (its normal from the obstacle towards
-/// the body), met at `speed`: it holds the body on the obstacle's side when position
-/// correction pushes it there from the other side, and reports the touch. Unless a contact
-/// of the pair is in the step already.
+} // namespace
+
 void addFoundContact(StepContext& step, std::uint32_t slot, const FirstHit& first, float speed) {
     const std::uint32_t obstacle = first.slot;
     const Vec2 normal = first.hit.normal;
@@ -151,6 +140,8 @@ void addFoundContact(StepContext& step, std::uint32_t slot, const FirstHit& firs
     c.approachSpeed = speed;
     s.found.push_back(c);
 }
+
+namespace {
 
 /// Sweeps the body along `motion`; at the first hit, moves it there and takes away its
 /// velocity into the obstacle, then sweeps again along what is left of its velocity

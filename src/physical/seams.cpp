@@ -84,13 +84,27 @@ bool rampGoesOn(const WorldState& world, const Body& wall, Vec2 slope, int axis)
     return goesOn;
 }
 
+/// Whether the ground a ramp stands on (what covers its leg along `along`) goes on beyond
+/// its tip at the end of the face along `axis`, for as far as `other` is wide: what comes
+/// along that ground meets the tip on its slope.
+bool groundGoesOn(const WorldState& world, const Body& wall, const Body& other, Vec2 slope,
+                  int axis) {
+    const int along = 1 - axis;
+    const float tip = wall.position[axis] + slope[axis] * wall.half[axis];
+    const float beyond = tip + slope[axis] * 2.0f * other.half[axis];
+    return coveredBetween(world, wall, other, along, -slope[along], std::min(tip, beyond),
+                          std::max(tip, beyond));
+}
+
 /// Whether the face of static `wall` on `side` along `axis` is covered by another static
 /// body where `other` spans it (the whole stretch of the face beside `other`). A ramp's
-/// face that ends in a tip is covered where the next ramp of a line goes on from the tip.
+/// face that ends in a tip is covered where the next ramp of a line goes on from the tip,
+/// or the ground under the ramp goes on beyond it.
 bool isCovered(const WorldState& world, const Body& wall, const Body& other, int axis, float side) {
     if (wall.shape == ShapeKind::Ramp) {
         const Vec2 slope = world.shapes[std::size_t(&wall - world.slots.data())].slope;
-        if (slope[axis] == side && rampGoesOn(world, wall, slope, axis))
+        if (slope[axis] == side &&
+            (rampGoesOn(world, wall, slope, axis) || groundGoesOn(world, wall, other, slope, axis)))
             return true;
     }
     const int along = 1 - axis;

@@ -12,6 +12,7 @@
 #include "platforms.hpp"
 #include "positions.hpp"
 #include "report.hpp"
+#include "snap.hpp"
 #include "sleep.hpp"
 #include "step_context.hpp"
 #include "support.hpp"
@@ -33,6 +34,7 @@ void stepPhysical(WorldState& world, float dt) {
     sweepFastBodies(step);
     integratePositions(step);
     correctPositions(step);
+    snapToGround(step);
     storeImpulses(step);
     reportEvents(step);
     rememberPlatformVelocities(step);

@@ -520,6 +520,9 @@ constexpr Setting<float> kNumberSettings[] = {
     {"getWallFriction", "setWallFriction", {"friction"}, &World::wallFriction,
         &World::setWallFriction},
     {"getWalkSpeed", "setWalkSpeed", {"speed"}, &World::walkSpeed, &World::setWalkSpeed},
+    {"getFloorAngle", "setFloorAngle", {"degrees"}, &World::floorAngle,
+        &World::setFloorAngle},
+    {"getSnapDown", "setSnapDown", {"distance"}, &World::snapDown, &World::setSnapDown},
 };
 constexpr Setting<bool> kFlagSettings[] = {
     {"isBullet", "setBullet", {"bullet"}, &World::isBullet, &World::setBullet},
