@@ -17,9 +17,27 @@ Vec2 rightOf(Vec2 down) {
     return {down.y, -down.x};
 }
 
+/// A push less than this along gravity is level: a wall's, not a slope's.
+constexpr float kLevel = 1e-3f;
+
 /// Whether a surface pushing `body` along `push` is a floor the character stands on.
 bool isCharacterFloor(const Body& body, Vec2 push, Vec2 down) {
     return body.isCharacter() && surfaceOf(push, down, body.floorCos) == kFloor;
+}
+
+/// Whether character `id` lay against a slope too steep to stand on at the end of the last
+/// step (one that pushed it up, but not as a floor) and does not walk away from it: it
+/// slides down as the physics has it.
+bool slidesDown(const WorldState& world, BodyId id, Vec2 right) {
+    const Body& body = world.slots[id.index];
+    const Vec2 down = world.events.down;
+    bool slides = false;
+    world.forEachContactOf(id, [&](BodyId, Vec2 push, const TouchRecord&) {
+        const bool steep =
+            dot(push, down) < -kLevel && surfaceOf(push, down, body.floorCos) != kFloor;
+        slides = slides || (steep && body.walkSpeed * dot(push, right) <= 0.0f);
+    });
+    return slides;
 }
 
 } // namespace
@@ -31,6 +49,8 @@ void walkCharacters(WorldState& world) {
         if (!body.isCharacter() || body.asleep)
             continue;
         const BodyId ground = groundOf(world, id).body;
+        if (ground.isNull() && slidesDown(world, id, right))
+            continue;
         const float under = ground.isNull() ? 0.0f : dot(world.slots[ground.index].velocity, right);
         body.velocity = withinRange(body.velocity +
                                     right * (under + body.walkSpeed - dot(body.velocity, right)));

@@ -12,7 +12,8 @@ struct WorldState;
 
 /// Each awake character's velocity along its ground (across gravity) becomes its ground's
 /// plus its walk speed; in the air, its walk speed. The ground is the one of the last
-/// step, moving as it moves now.
+/// step, moving as it moves now. Against a slope too steep to stand on (past its floor
+/// angle), not walking away from it, the velocity is left alone: it slides down.
 void walkCharacters(WorldState& world);
 
 /// The friction `body` brings to a contact whose surface pushes it along `push`: a

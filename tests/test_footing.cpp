@@ -135,6 +135,24 @@ TEST(FloorAngle, A45DegreeSlopeIsAFloorWithin60AndAWallWithin40) {
     }
 }
 
+TEST(FloorAngle, ACharacterSlidesDownASlopeSteeperThanItsFloorAngle) {
+    // Against a 45° slope steeper than its 30°, a character rubs with its wall friction (0):
+    // it slides as on a frictionless incline, at g sin 45° t after t, standing still or
+    // walking into the slope.
+    for (float walk : {0.0f, 2.0f}) { // the slope is on its right
+        World world(WorldDef{.gravity = {0, kG}});
+        const BodyId hero = boxOnRamp(world, 30.0f, true);
+        world.step(kDt); // on the slope, at rest
+        world.setWalkSpeed(hero, walk);
+        for (int i = 1; i < 60; ++i)
+            world.step(kDt);
+        const float k = std::numbers::sqrt2_v<float> / 2.0f;
+        const Vec2 downhill{-k, k};
+        EXPECT_NEAR(dot(world.velocity(hero), downhill), kG * k * 1.0f, 0.01f * kG * k) << walk;
+        EXPECT_FALSE(world.ground(hero).has_value());
+    }
+}
+
 TEST(FloorAngle, ItIsCheckedAndKept) {
     World world(WorldDef{.gravity = {0, kG}});
     const BodyId box = world.createBody({.hw = 1, .hh = 1, .floorAngle = 45, .snapDown = 2});
