@@ -175,6 +175,42 @@ TEST(Slopes, AStackOfCratesOnATwoToOneRampStands) {
         EXPECT_LT(length(world.position(crates[i]) - start[i]), 0.05f) << "crate " << i;
 }
 
+TEST(RampTiles, ABoxSlidingIntoARampsFootGoesUpItToVSquaredOverTwoG) {
+    // A frictionless box meeting a 45° ramp at 100 units/s keeps the part of its velocity
+    // along the slope, 100 cos 45°, and rises to (100 cos 45°)² / 2g = 25 above the floor.
+    World world(WorldDef{.gravity = {0, 100}});
+    createTileMap(world, {.tile = 16,
+                          .rows = {".......#####", "....../#####", "...../######", "..../#######",
+                                   "############"},
+                          .friction = 0});
+    const BodyId box =
+        world.createBody({.x = 20, .y = 60, .hw = 4, .hh = 4, .vx = 100, .friction = 0});
+    float highest = 60.0f;
+    for (int i = 0; i < 120; ++i) {
+        world.step(kDt);
+        highest = std::min(highest, world.position(box).y);
+    }
+    EXPECT_NEAR(60.0f - highest, 25.0f, 0.75f);
+}
+
+TEST(Slopes, AFastBoxOntoARampOnAWideFloorIsNotThrownAlongTheFloor) {
+    // At 7000 units/s onto a 45° ramp (friction 0.5): the slope takes the normal half of its
+    // speed, friction as much again of the other, leaving 7000 sin 45° / 2 along the slope,
+    // 1750 across: it slides off the ramp's foot at that speed, not hundreds of units away.
+    World world(WorldDef{.gravity = {0, 800}});
+    world.createBody(
+        {.type = BodyType::Static, .x = 1000, .y = 0, .hw = 50, .hh = 50, .slope = {-1, -1}});
+    world.createBody({.type = BodyType::Static, .x = 1000, .y = 60, .hw = 1000, .hh = 10});
+    const BodyId box = world.createBody({.x = 1019, .y = -60, .hw = 2, .hh = 2, .vy = 7000});
+    for (int i = 0; i < 3; ++i)
+        world.step(kDt);
+    EXPECT_LT(world.position(box).x, 1019.0f);
+    // Three steps at 1750 go 87.5 across; the step of the impact goes faster along the
+    // slope before friction has done its part: within twice that.
+    EXPECT_GT(world.position(box).x, 1019.0f - 2.0f * 3.0f * 1750.0f * kDt);
+    EXPECT_NEAR(world.velocity(box).x, -1750.0f, 0.02f * 1750.0f);
+}
+
 } // namespace
 } // namespace jostle
 

@@ -80,8 +80,9 @@ bool staysApart(const Body& a, const Body& b, Vec2 normal, float gap, float dt) 
 ///   rising past a ledge does not hit the ledge's side.
 /// - If the corner is a seam between two static bodies, the face the contact would push
 ///   on is inside the level, and the other axis is the one. In a world with ramps, any
-///   face the level covers where the body is (seams.hpp's pushingFaces) is inside it; if
-///   both are, no contact.
+///   face the level covers where the body is (seams.hpp's pushingFaces) is inside it, and
+///   the other face is the one if the body is at it and it is bare; else no contact. A
+///   pair overlapping deeper than the skin goes the shallower way out, covered or not.
 std::optional<Facing> chooseNormal(const StepContext& step, const Body& a, const Body& b) {
     const Vec2 d = a.position - b.position;
     const float gapX = std::abs(d.x) - (a.half.x + b.half.x);
@@ -105,7 +106,8 @@ std::optional<Facing> chooseNormal(const StepContext& step, const Body& a, const
     }
     const bool oneStatic =
         a.type != b.type && (a.type == BodyType::Static || b.type == BodyType::Static);
-    if (oneStatic && step.world.shapedBodies > 0) {
+    const bool deep = gapX < -skinX && gapY < -skinY; // overlapping beyond the skin
+    if (oneStatic && !deep && step.world.shapedBodies > 0) {
         // Among ramps, a box's face may be covered anywhere along it (a ramp sitting on a
         // floor): the faces that push are those the level leaves bare where the body is,
         // and a box with none is inside the level, which the bodies around it stand for.
@@ -118,8 +120,9 @@ std::optional<Facing> chooseNormal(const StepContext& step, const Body& a, const
             return (pushing & faceBit(x ? 0 : 1, side < 0.0f ? -1.0f : 1.0f)) != 0;
         };
         if (!pushes(alongX)) {
+            // The other face, if the body is at it (not across it) and it is bare.
             alongX = !alongX;
-            if (!pushes(alongX))
+            if ((alongX ? gapX < -skinX : gapY < -skinY) || !pushes(alongX))
                 return std::nullopt;
         }
     } else if (gapX >= -skinX && gapY >= -skinY && oneStatic) {
