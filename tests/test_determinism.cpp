@@ -27,6 +27,8 @@
 //               and not closing that gap within the step, makes no contact (a character
 //               climbing over the top of a wall it pressed into caught on it for a step,
 //               issue 14). Classic unchanged.
+//   2026-11-23  a second world, of slopes and round shapes (issue 15), first recorded.
+//               The busy world's hashes unchanged by issue 15.
 
 #include "jostle/query.hpp"
 #include "jostle/tilemap.hpp"
@@ -204,7 +206,67 @@ BusyRun runBusyWorld(Solver solver, int steps) {
     return run;
 }
 
+// Hills of 45° and 2:1 ramp tiles, a one-sided segment, a kinematic ramp going up and
+// down, a character with snapDown walking to and fro, and circles, capsules and rounded
+// boxes raining in: the shapes of docs/slopes-and-shapes.md, for `steps` steps.
+std::uint64_t runSlopesWorld(int steps) {
+    World world(WorldDef{.gravity = {0.0f, 600.0f}, .maxVelocity = 2000.0f});
+    Lcg random;
+    createTileMap(world, {.x = -400,
+                          .tile = 20,
+                          .rows = {"#......................................#",
+                                   "#......................................#",
+                                   "#....../##\\.........rR##Ll.......7####F#",
+                                   "#...../####\\.....rR######Ll............#",
+                                   "########################################"}});
+    world.createBody({.type = BodyType::Static,
+                      .x = 200,
+                      .y = -120,
+                      .hw = 60,
+                      .hh = 20,
+                      .slope = {1, -1},
+                      .segment = true});
+    const BodyId lift = world.createBody({.type = BodyType::Kinematic,
+                                          .x = -250,
+                                          .y = -60,
+                                          .hw = 40,
+                                          .hh = 20,
+                                          .vy = -30,
+                                          .slope = {-1, -1}});
+    const BodyId hero = world.createBody(
+        {.x = -300, .y = 30, .hw = 6, .hh = 9, .character = true, .snapDown = 6, .radius = 3});
+    Hash hash;
+    std::vector<BodyId> rain;
+    for (int step = 0; step < steps; ++step) {
+        if (step % 4 == 0) {
+            const float hw = random.range(3, 10);
+            const float hh = random.next() % 2 == 0 ? hw : random.range(3, 10);
+            rain.push_back(world.createBody({.x = random.range(-360, 360),
+                                             .y = random.range(-500, -300),
+                                             .hw = hw,
+                                             .hh = hh,
+                                             .vx = random.range(-100, 100),
+                                             .bounce = random.range(0, 0.5f),
+                                             .friction = random.range(0, 1),
+                                             .radius = random.range(0, std::min(hw, hh))}));
+        }
+        if (step % 5 == 0 && rain.size() > 80) {
+            const std::size_t victim = random.next() % rain.size();
+            world.destroyBody(rain[victim]);
+            rain.erase(rain.begin() + static_cast<std::ptrdiff_t>(victim));
+        }
+        if (step % 120 == 60)
+            world.setVelocity(lift, {0, -world.velocity(lift).y});
+        if (step % 240 == 0)
+            world.setWalkSpeed(hero, step % 480 == 0 ? 90.0f : -90.0f);
+        world.step(1.0f / 60.0f);
+        hashStep(world, hash);
+    }
+    return hash.value();
+}
+
 // The recorded hashes (see the history at the top of the file).
+constexpr std::uint64_t kSlopesHash = 3239414516222282330ULL;
 constexpr std::uint64_t kPhysicalHash = 11979134183305726195ULL;
 constexpr std::uint64_t kClassicHash = 11721795189068454326ULL;
 constexpr int kSteps = 3000; // 50 seconds of a busy world
@@ -225,6 +287,12 @@ TEST(Determinism, PhysicalModelGivesTheRecordedHash) {
     EXPECT_GT(run.bodies, 150u);
     EXPECT_GT(run.contactBegins, 2000u);
     EXPECT_EQ(run.hash, kPhysicalHash);
+}
+
+TEST(Determinism, SlopesAndRoundShapesRepeatThemselvesAndGiveTheRecordedHash) {
+    const std::uint64_t hash = runSlopesWorld(1200);
+    EXPECT_EQ(hash, runSlopesWorld(1200));
+    EXPECT_EQ(hash, kSlopesHash);
 }
 
 TEST(Determinism, ClassicModelGivesTheRecordedHash) {
