@@ -167,8 +167,11 @@ struct CrushEvent {
 /// What a body touched during the last step, relative to gravity: the floor is below,
 /// the direction gravity pulls (with no gravity: y grows downward, as on screen).
 struct Touching {
+    /// Pushed up by a surface within the body's floorAngle of level (BodyDef::floorAngle).
     bool floor = false;
+    /// Pushed down by a surface within 60 degrees of level.
     bool ceiling = false;
+    /// Anything else pushes it sideways: a wall, or a slope too steep to be its floor.
     bool wallLeft = false;  ///< on the body's left, looking along gravity's "down"
     bool wallRight = false; ///< on the body's right
 };
