@@ -193,6 +193,20 @@ TEST(RampTiles, ABoxSlidingIntoARampsFootGoesUpItToVSquaredOverTwoG) {
     EXPECT_NEAR(60.0f - highest, 25.0f, 0.75f);
 }
 
+TEST(Slopes, ABoxFallingPastARampsTopTipFallsFreely) {
+    // The ramp's top tip is at (100, 0); the box falls beside its leg, half a unit clear:
+    // nothing slows it, v = v0 + g t after every step, and nothing pushes it sideways.
+    World world(WorldDef{.gravity = {0, 800}});
+    world.createBody(
+        {.type = BodyType::Static, .x = 50, .y = 50, .hw = 50, .hh = 50, .slope = {-1, -1}});
+    const BodyId box = world.createBody({.x = 104.5f, .y = -40, .hw = 4, .hh = 4, .vy = 1200});
+    for (int i = 1; i <= 8; ++i) {
+        world.step(kDt);
+        EXPECT_NEAR(world.velocity(box).y, 1200.0f + 800.0f * kDt * float(i), 1e-2f) << i;
+        EXPECT_EQ(world.velocity(box).x, 0.0f) << i;
+    }
+}
+
 TEST(Slopes, AFastBoxOntoARampOnAWideFloorIsNotThrownAlongTheFloor) {
     // At 7000 units/s onto a 45° ramp (friction 0.5): the slope takes the normal half of its
     // speed, friction as much again of the other, leaving 7000 sin 45° / 2 along the slope,
