@@ -22,7 +22,13 @@ void Runner::steer(World& world, const Controls& controls) const {
         return;
     Vec2 velocity = world.velocity(body_);
     const float direction = (controls.right ? 1.0f : 0.0f) - (controls.left ? 1.0f : 0.0f);
-    velocity.x = direction * runSpeed_;
+    // A character walks (along slopes, with what it stands on); another body is moved.
+    if (world.isCharacter(body_)) {
+        if (world.walkSpeed(body_) != direction * runSpeed_)
+            world.setWalkSpeed(body_, direction * runSpeed_);
+    } else {
+        velocity.x = direction * runSpeed_;
+    }
     const bool standing = world.touching(body_).floor;
     if (controls.jumpPressed && standing) {
         if (controls.down)

@@ -25,8 +25,8 @@ public:
         : body_(body), runSpeed_(runSpeed), jump_(jump) {}
 
     BodyId body() const { return body_; }
-    /// Sets the horizontal velocity from the keys, jumps when standing, drops through
-    /// one-way platforms on down + jump.
+    /// Sets the horizontal velocity from the keys (a character's walk speed, for a
+    /// character), jumps when standing, drops through one-way platforms on down + jump.
     void steer(World& world, const Controls& controls) const;
 
 private:

@@ -67,13 +67,13 @@ expect debug 1 "D turns debug drawing on in the tutorial"
 expect slow 1 "S turns slow motion on"
 
 # The debug key is the same everywhere: Tab in every sample; D as well in the samples
-# where it steers nothing (all but 2 and 6, where it runs right).
+# where it steers nothing (all but 2, 6 and 7, where it runs right).
 for sample in 1 2 3 4 5 6 7; do
   run --sample "$sample" --frames 6 --input "3 key-press Tab"
   expect debug 1 "Tab turns debug drawing on in sample $sample"
   run --sample "$sample" --frames 6 --input "3 key-press d"
   case $sample in
-    2 | 6) expect debug 0 "D runs, and leaves debug drawing off, in sample $sample" ;;
+    2 | 6 | 7) expect debug 0 "D runs, and leaves debug drawing off, in sample $sample" ;;
     *) expect debug 1 "D turns debug drawing on in sample $sample" ;;
   esac
 done
@@ -116,6 +116,24 @@ near player_x 80 1 "and stays under it"
 run --sample 6 --frames 90 --input "20 mouse-down left 154 468; 21 mouse-move 154 300; 60 mouse-up left 154 300"
 expect dragging 0 "releasing the button lets go"
 near player_y 478 0.01 "let go, the player falls back to the floor"
+
+# --- Slopes (sample 7): a character (14 x 24 px, snapDown 6) walks at 160 px/s from
+# x 260 on the floor (top y 480) over the hill: a 2:1 ramp up from (310, 480) to
+# (390, 440), a flat top to x 470, a 2:1 ramp down to (550, 480). On a ramp it stands on
+# the corner nearest the top: y = surface there - 12. Right held from frame 30.
+run --sample 7 --frames 60 --input "30 key-down Right"
+near player_vx 160 0.01 "the character walks up the hill at its walk speed"
+near player_y "$(awk -v x="$(value player_x)" 'BEGIN { print 480 - (x + 7 - 310) / 2 - 12 }')" 0.05 \
+  "its right corner on the ramp up"
+expect player_floor 1 "on the ground going up"
+run --sample 7 --frames 90 --input "30 key-down Right"
+near player_y 428 0.01 "on the flat top (440 - 12), not flown off the crest"
+expect player_floor 1 "on the ground at the top"
+run --sample 7 --frames 120 --input "30 key-down Right"
+near player_vx 160 0.01 "and down the other side at its walk speed"
+near player_y "$(awk -v x="$(value player_x)" 'BEGIN { print 440 + (x - 7 - 470) / 2 - 12 }')" 0.05 \
+  "its left corner on the ramp down: snapped to it"
+expect player_floor 1 "on the ground going down"
 
 # --- Keys 1 to 7 switch samples.
 names=(tutorial platformer pyramid rain bullets crates slopes)
