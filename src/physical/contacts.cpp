@@ -25,6 +25,14 @@ float combineFriction(FrictionMix mix, float a, float b) {
     return mix == FrictionMix::GeometricMean ? std::sqrt(a * b) : std::min(a, b);
 }
 
+/// The friction of a pair touching along `normal` (from b towards a): each body's against
+/// the surface it meets (a character's wallFriction off its floor), combined.
+float frictionOfPair(const StepContext& step, const Body& a, const Body& b, Vec2 normal) {
+    const Vec2 down = step.world.events.down;
+    return combineFriction(step.options.frictionMix, frictionAgainst(a, normal, down),
+                           frictionAgainst(b, -normal, down));
+}
+
 /// The two slots as one number, the same in either order.
 std::uint64_t pairKey(std::uint32_t slotA, std::uint32_t slotB) {
     return std::uint64_t{std::min(slotA, slotB)} << 32 | std::max(slotA, slotB);
@@ -212,8 +220,7 @@ Contact shapedContactOf(const StepContext& step, const Body& a, const Body& b,
     c.size = facing.size;
     c.slop = step.options.slop * facing.size;
     const Vec2 down = step.world.events.down;
-    c.friction = combineFriction(step.options.frictionMix, frictionAgainst(a, n, down),
-                                 frictionAgainst(b, -n, down));
+    c.friction = frictionOfPair(step, a, b, n);
     if (a.character || b.character) {
         // A gap the contact lets close within the step (setTarget) takes its part of it.
         const float closing = facing.gap > 0.0f ? -facing.gap / step.dt : 0.0f;
@@ -276,8 +283,7 @@ Contact contactOf(const StepContext& step, const Body& a, const Body& b, Vec2 no
     if (a.character || b.character) {
         // Characters rub only on floors, and walk over them (characters.hpp).
         const Vec2 down = step.world.events.down;
-        c.friction = combineFriction(step.options.frictionMix, frictionAgainst(a, normal, down),
-                                     frictionAgainst(b, -normal, down));
+        c.friction = frictionOfPair(step, a, b, normal);
         Vec2 tangent;
         tangent[1 - c.axis] = c.tangentSign;
         c.tangentTarget = dot(walkOver(a, b, normal, down), tangent);
