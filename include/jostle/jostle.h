@@ -563,7 +563,8 @@ typedef struct jostle_collision {
 /// From inside the callback you may call: every getter, every query, the event arrays
 /// (they still hold the previous step's events), jostle_body_create (the body joins from
 /// the next step), jostle_body_destroy (either body of the pair too: the pair is then
-/// dropped), the body setters, jostle_tile_map_set_tile, and the error functions.
+/// dropped), the body setters, jostle_tile_map_set_tile and _set_tile_char, and the error
+/// functions.
 /// Refused, as misuse, are the functions that change the world as a whole:
 /// jostle_world_step (and jostle_fixed_step_update of this world), jostle_world_destroy,
 /// jostle_world_set_pre_solve and every other jostle_world_set_*. The callback must
@@ -753,7 +754,13 @@ typedef struct jostle_tile_map_def {
     int columns; ///< >= 1
     int rows;    ///< >= 1
     /// columns * rows bytes, row by row, top row first: cells[row * columns + column] is
-    /// nonzero for a solid tile, 0 for an empty one. Read by jostle_tile_map_create only.
+    /// 0 or '.' for an empty tile, a ramp's character for a ramp, and any other byte ('#',
+    /// 1) for a solid tile. So the rows of a C++ TileMapDef or a scene file, laid end to
+    /// end, are cells as they are. The ramps (as read on screen in a y-down world;
+    /// tilemap.hpp and docs/slopes-and-shapes.md have pictures): '/' and '\\' 45° floors
+    /// rising to the right and to the left, '7' and 'F' 45° ceilings solid at the top right
+    /// and top left, "rR" and "Ll" 2:1 floors (two tiles each, low and high half), "cC" and
+    /// "Dd" 2:1 ceilings. Read by jostle_tile_map_create only.
     const unsigned char* cells;
     // Settings of every static body of the map, fixed at creation (body defaults).
     float friction;
@@ -772,8 +779,10 @@ typedef struct jostle_tile_map_def {
 jostle_tile_map_def jostle_default_tile_map_def(void);
 
 /// Creates the map and the static bodies of its solid tiles (runs of solid tiles merged
-/// into few boxes); the null handle on misuse (def or cells NULL, columns or rows < 1,
-/// tile <= 0, a setting out of range).
+/// into few boxes), then one static ramp body per ramp (the two halves of a 2:1 ramp side
+/// by side one); the null handle on misuse (def or cells NULL, columns or rows < 1,
+/// tile <= 0, a setting out of range, a ramp in a world of the classic model, which has
+/// sharp boxes only).
 jostle_tile_map_id jostle_tile_map_create(jostle_world* world, const jostle_tile_map_def* def);
 
 /// Destroys the map and all its bodies; what rests on them wakes and falls.
@@ -783,12 +792,26 @@ bool jostle_tile_map_destroy(jostle_world* world, jostle_tile_map_id map);
 bool jostle_tile_map_is_valid(const jostle_world* world, jostle_tile_map_id map);
 
 /// Makes the tile at (column, row) solid or empty; the tile must be inside the map.
-/// Only the few boxes around the tile are rebuilt.
+/// Only the few boxes around the tile are rebuilt. A ramp there is replaced.
 bool jostle_tile_map_set_tile(jostle_world* world, jostle_tile_map_id map, int column, int row,
                               bool solid);
 
-/// True if the tile is solid. Outside the map: false, not misuse (the map goes on empty
-/// forever).
+/// Sets the tile at (column, row) to a character of the rows of a C++ TileMapDef: '#'
+/// solid, '.' empty, or a ramp ('/', '\\', '7', 'F', 'r', 'R', 'L', 'l', 'c', 'C', 'D',
+/// 'd': see jostle_tile_map_def::cells); the tile must be inside the map, and any other
+/// character is misuse, as is a ramp in the classic model. The ramps of its row are
+/// rebuilt, as are the few boxes around it.
+bool jostle_tile_map_set_tile_char(jostle_world* world, jostle_tile_map_id map, int column, int row,
+                                   char tile);
+
+/// The character of the tile at (column, row): '#', '.' or a ramp's, as
+/// jostle_tile_map_set_tile_char takes them. Outside the map: '.', not misuse. On misuse:
+/// '\0'.
+char jostle_tile_map_tile_of(const jostle_world* world, jostle_tile_map_id map, int column,
+                             int row);
+
+/// True if the tile is solid ('#'; a ramp is not). Outside the map: false, not misuse
+/// (the map goes on empty forever).
 bool jostle_tile_map_is_solid(const jostle_world* world, jostle_tile_map_id map, int column,
                               int row);
 
