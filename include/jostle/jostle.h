@@ -477,9 +477,9 @@ bool jostle_body_apply_impulse(jostle_world* world, jostle_body_id body, jostle_
 /// (jostle::ContactInfo).
 typedef struct jostle_contact_info {
     jostle_body_id other;
-    jostle_vec2 normal; ///< unit, along x or y, pointing from `other` towards the body
-    /// Where they touch: the middle of the stretch of face they share, as in a contact
-    /// begin event.
+    /// Unit, pointing from `other` towards the body, as in a contact event.
+    jostle_vec2 normal;
+    /// Where they touch now, as in a contact begin event.
     jostle_vec2 point;
     float impulse; ///< the normal impulse between them in the last step (mass * speed)
 } jostle_contact_info;
@@ -507,12 +507,18 @@ bool jostle_body_is_touching(const jostle_world* world, jostle_body_id a, jostle
 
 /// Two bodies that started or stopped touching.
 typedef struct jostle_contact_event {
-    jostle_body_id a;     ///< the body created first
-    jostle_body_id b;     ///< the other one
-    jostle_vec2 normal;   ///< unit, along x or y, pointing from b towards a
+    jostle_body_id a; ///< the body created first
+    jostle_body_id b; ///< the other one
+    /// Unit, pointing from b towards a: along x or y between two sharp boxes. For a pair
+    /// with a rounded body, ramp or segment, the normal of the surfaces where they touch:
+    /// a slope's, or any direction round a curve or a corner.
+    jostle_vec2 normal;
     float approach_speed; ///< begin: how fast they met along the normal (>= 0); end: 0
-    /// Begin: where they touch, the middle of the stretch of face they share (halfway
-    /// between the two faces along the normal). End: {0, 0}.
+    /// Begin: where they touch, halfway between the two surfaces along the normal. Where a
+    /// face meets a face (two boxes, a box against a ramp's leg, a capsule's side against a
+    /// wall), the middle of the stretch they share; where a corner or a curve touches, that
+    /// point: a box's corner on a slope, a circle's centre less its radius times the
+    /// normal, the corner a circle rolls round. End: {0, 0}.
     jostle_vec2 point;
 } jostle_contact_event;
 
@@ -544,9 +550,11 @@ const jostle_crush_event* jostle_world_crushes(const jostle_world* world, int* c
 
 /// A pair about to collide, as the solver sees it before it responds (jostle::Collision).
 typedef struct jostle_collision {
-    jostle_body_id a;   ///< classic: the dynamic body that moved; physical: the older one
-    jostle_body_id b;   ///< the other body
-    jostle_vec2 normal; ///< unit, along x or y, pointing from b towards a
+    jostle_body_id a; ///< classic: the dynamic body that moved; physical: the older one
+    jostle_body_id b; ///< the other body
+    /// Unit, pointing from b towards a: along x or y between two sharp boxes; for a pair
+    /// with a shape, the normal where they touch (as in a contact event).
+    jostle_vec2 normal;
     /// How deep they overlap along the normal; negative for a pair that will meet within
     /// the step (-depth is the gap), 0 where the classic ccd sweep stopped a body.
     float depth;
@@ -619,9 +627,11 @@ int jostle_query_rect(const jostle_world* world, jostle_vec2 min, jostle_vec2 ma
 /// Where a ray meets a body.
 typedef struct jostle_ray_hit {
     jostle_body_id body;
-    jostle_vec2 point;  ///< from + (to - from) * fraction, exactly on the face it meets
-    jostle_vec2 normal; ///< the outward normal of that face: unit, along x or y
-    float fraction;     ///< in [0, 1]
+    jostle_vec2 point; ///< from + (to - from) * fraction, exactly on the face it meets
+    /// The outward normal of the surface it meets, unit, against the ray: along x or y for
+    /// a box's face, a ramp's slope's normal, or a rounded body's normal there.
+    jostle_vec2 normal;
+    float fraction; ///< in [0, 1]
 } jostle_ray_hit;
 
 /// The first body on the segment from `from` to `to`: true and *hit filled if there is
@@ -639,8 +649,10 @@ int jostle_ray_cast_all(const jostle_world* world, jostle_vec2 from, jostle_vec2
 typedef struct jostle_box_cast_hit {
     jostle_body_id body;
     jostle_vec2 centre; ///< where the box's centre stops, touching the body
-    jostle_vec2 normal; ///< unit, along x or y, pointing from the body towards the box
-    float fraction;     ///< the fraction of the translation travelled, in [0, 1]
+    /// Unit, pointing from the body towards the box: along x or y for a box's face, the
+    /// slope's normal for a ramp's slope, the normal there for a rounded body's curve.
+    jostle_vec2 normal;
+    float fraction; ///< the fraction of the translation travelled, in [0, 1]
 } jostle_box_cast_hit;
 
 /// Sweeps the box (half extents > 0) along `translation`: true and *hit filled if it
@@ -653,7 +665,7 @@ bool jostle_box_cast(const jostle_world* world, jostle_vec2 centre, jostle_vec2 
 /// A body met by jostle_move_and_slide.
 typedef struct jostle_move_hit {
     jostle_body_id body;
-    jostle_vec2 normal; ///< unit, along x or y, pointing from the body towards the box
+    jostle_vec2 normal; ///< unit, pointing from the body towards the box (as a box cast's)
 } jostle_move_hit;
 
 /// Moves a box by `translation` as bump.lua moves its items: until it runs into a body,
@@ -701,7 +713,7 @@ typedef jostle_response (*jostle_move_filter_fn)(jostle_body_id other, void* con
 typedef struct jostle_move_collision {
     jostle_body_id other;
     jostle_response response; ///< what the filter chose for it
-    jostle_vec2 normal;       ///< unit, along x or y, pointing from `other` towards the body
+    jostle_vec2 normal;       ///< unit, pointing from `other` towards the body (as a box cast's)
     /// The moved body's centre when it touched `other`, placed exactly against its face.
     jostle_vec2 touch;
     /// When, as a fraction of the whole move, in [0, 1]: the move takes unit time, and keeps
