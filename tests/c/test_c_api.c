@@ -1148,6 +1148,16 @@ static void test_move_misuse(void) {
 
 // --- Tile maps ---------------------------------------------------------------------------
 
+/// The def of a map of tiles of 16 at the origin, 8 columns by 3 rows, of `cells`.
+static jostle_tile_map_def tile_map_def_8x3(const unsigned char* cells) {
+    jostle_tile_map_def def = jostle_default_tile_map_def();
+    def.tile = 16;
+    def.columns = 8;
+    def.rows = 3;
+    def.cells = cells;
+    return def;
+}
+
 /// Tiles of 16 at the origin:      row 0  ........
 ///                                 row 1  #......#
 ///                                 row 2  ########   (top at y = 32)
@@ -1158,11 +1168,7 @@ static void test_tile_map(void) {
     for (int r = 0; r < 3; ++r)
         for (int c = 0; c < 8; ++c)
             cells[r * 8 + c] = rows[r][c] == '#';
-    jostle_tile_map_def def = jostle_default_tile_map_def();
-    def.tile = 16;
-    def.columns = 8;
-    def.rows = 3;
-    def.cells = cells;
+    jostle_tile_map_def def = tile_map_def_8x3(cells);
     jostle_tile_map_id map = jostle_tile_map_create(world, &def);
     CHECK(!jostle_tile_map_id_is_null(map) && jostle_tile_map_is_valid(world, map), "created");
     CHECK(jostle_tile_map_columns(world, map) == 8 && jostle_tile_map_rows(world, map) == 3,
@@ -1254,11 +1260,7 @@ static void test_ramp_tiles(void) {
     unsigned char cells[3 * 8];
     memcpy(cells, level, sizeof cells);
     cells[1 * 8 + 4] = 1;
-    jostle_tile_map_def def = jostle_default_tile_map_def();
-    def.tile = 16;
-    def.columns = 8;
-    def.rows = 3;
-    def.cells = cells;
+    jostle_tile_map_def def = tile_map_def_8x3(cells);
     jostle_tile_map_id map = jostle_tile_map_create(world, &def);
     CHECK(!jostle_tile_map_id_is_null(map), "created");
     // The solid tiles first, top row first: (4, 1), the floor; then the ramps: the '/' and
@@ -1505,11 +1507,7 @@ static void test_pre_solve(void) {
     world = make_world(kG);
     unsigned char cells[3 * 8] = {0};
     memset(cells + 2 * 8, 1, 8); // row 2 solid, at y 32..48 as in test_tile_map
-    jostle_tile_map_def def = jostle_default_tile_map_def();
-    def.tile = 16;
-    def.columns = 8;
-    def.rows = 3;
-    def.cells = cells;
+    jostle_tile_map_def def = tile_map_def_8x3(cells);
     s = callback_defaults(world);
     s.map = jostle_tile_map_create(world, &def);
     s.dig = true;

@@ -159,6 +159,13 @@ int worldNewTileMap(lua_State* L) {
 
 // --- Methods ---------------------------------------------------------------------------
 
+/// A map method's column and row, its arguments 2 and 3.
+TileCoord checkColumnRow(lua_State* L, const char* where) {
+    const auto column = checkWhole(L, 2, where, "column", -kMaxCoordinate, kMaxCoordinate);
+    const auto row = checkWhole(L, 3, where, "row", -kMaxCoordinate, kMaxCoordinate);
+    return {static_cast<int>(column), static_cast<int>(row)};
+}
+
 /// setTile's tile: true (solid) or false (empty), or a tile's character as a string of
 /// one ("#", ".", a ramp: setTile in C++ checks which).
 char checkTile(lua_State* L, int index, const char* where) {
@@ -178,13 +185,10 @@ char checkTile(lua_State* L, int index, const char* where) {
 int mapSetTile(lua_State* L) {
     const char* where = "TileMap:setTile";
     const TileMapHandle& map = checkMap(L, 1, where);
-    const auto column =
-        static_cast<int>(checkWhole(L, 2, where, "column", -kMaxCoordinate, kMaxCoordinate));
-    const auto row =
-        static_cast<int>(checkWhole(L, 3, where, "row", -kMaxCoordinate, kMaxCoordinate));
+    const TileCoord at = checkColumnRow(L, where);
     const char tile = checkTile(L, 4, where);
     requireChangeable(L, *map.world->data, where);
-    guard(L, where, [&] { setTile(map.world->data->world, map.id, column, row, tile); });
+    guard(L, where, [&] { setTile(map.world->data->world, map.id, at.column, at.row, tile); });
     return 0;
 }
 
@@ -192,12 +196,9 @@ int mapSetTile(lua_State* L) {
 int mapTileOf(lua_State* L) {
     const char* where = "TileMap:tileOf";
     const TileMapHandle& map = checkMap(L, 1, where);
-    const auto column =
-        static_cast<int>(checkWhole(L, 2, where, "column", -kMaxCoordinate, kMaxCoordinate));
-    const auto row =
-        static_cast<int>(checkWhole(L, 3, where, "row", -kMaxCoordinate, kMaxCoordinate));
+    const TileCoord at = checkColumnRow(L, where);
     char tile = '.';
-    guard(L, where, [&] { tile = tileOf(map.world->data->world, map.id, column, row); });
+    guard(L, where, [&] { tile = tileOf(map.world->data->world, map.id, at.column, at.row); });
     lua_pushlstring(L, &tile, 1);
     return 1;
 }
@@ -205,12 +206,9 @@ int mapTileOf(lua_State* L) {
 int mapIsSolid(lua_State* L) {
     const char* where = "TileMap:isSolid";
     const TileMapHandle& map = checkMap(L, 1, where);
-    const auto column =
-        static_cast<int>(checkWhole(L, 2, where, "column", -kMaxCoordinate, kMaxCoordinate));
-    const auto row =
-        static_cast<int>(checkWhole(L, 3, where, "row", -kMaxCoordinate, kMaxCoordinate));
+    const TileCoord at = checkColumnRow(L, where);
     bool solid = false;
-    guard(L, where, [&] { solid = isSolid(map.world->data->world, map.id, column, row); });
+    guard(L, where, [&] { solid = isSolid(map.world->data->world, map.id, at.column, at.row); });
     lua_pushboolean(L, solid);
     return 1;
 }
