@@ -89,8 +89,12 @@ void recordContact(WorldState& world, std::uint32_t body, std::uint32_t other, V
 }
 
 Vec2 pointOf(const WorldState& world, const TouchRecord& record) {
-    return touchPoint(world.slots[record.a.index].box(), world.slots[record.b.index].box(),
-                      record.normal);
+    const Body& a = world.slots[record.a.index];
+    const Body& b = world.slots[record.b.index];
+    if (a.isBox() && b.isBox())
+        return touchPoint(a.box(), b.box(), record.normal);
+    return b.position + touchPointOf(a.position - b.position, a.half, world.shapes[record.a.index],
+                                     b.half, world.shapes[record.b.index], record.normal);
 }
 
 GroundRecord groundOf(const WorldState& world, BodyId id) {

@@ -19,7 +19,81 @@ Vec2 scaled(Vec2 signs, Vec2 h) {
     return {signs.x * h.x, signs.y * h.y};
 }
 
+/// Vertices this much closer along a direction than the furthest (as a fraction of the
+/// shape's size) still face it: float noise in a slope's normal, not a tilt.
+constexpr float kSameReach = 1e-5f;
+
+/// The part of a shape (half extents `half`) that faces unit `direction`, seen as a polygon
+/// grown by a radius (a rounded box's core and radius, a ramp's triangle, a segment's two
+/// ends): the polygon's vertices furthest along `direction`.
+struct FacingPart {
+    float reach; ///< along `direction` from the shape's centre, the radius included
+    float low;   ///< the extent of the facing vertices along `across`
+    float high;
+    Vec2 vertex; ///< one of them, from the shape's centre
+    float radius;
+
+    /// A corner or a curve, not a face: the facing vertices are one (a circle's core
+    /// has four, all in one place).
+    bool isPoint() const { return low == high; }
+};
+
+FacingPart facingPart(Vec2 half, const Shape& shape, Vec2 direction, Vec2 across) {
+    const ShapeKind kind = shape.kind();
+    const float radius = kind == ShapeKind::Round ? shape.radius : 0.0f;
+    const Vec2 core = half - Vec2{radius, radius};
+    const bool cut = kind == ShapeKind::Ramp || kind == ShapeKind::Segment;
+    Vec2 vertices[4];
+    int n = 0;
+    for (const Vec2& signs : kCornerSigns) {
+        const bool cutOff = cut && signs == shape.slope;
+        const bool behindFace = kind == ShapeKind::Segment && signs == -shape.slope;
+        if (!cutOff && !behindFace)
+            vertices[n++] = scaled(signs, core);
+    }
+    float furthest = -std::numeric_limits<float>::infinity();
+    for (int i = 0; i < n; ++i)
+        furthest = std::max(furthest, dot(vertices[i], direction));
+    const float tie = kSameReach * (half.x + half.y);
+    FacingPart part{furthest + radius, std::numeric_limits<float>::infinity(),
+                    -std::numeric_limits<float>::infinity(), Vec2{}, radius};
+    for (int i = 0; i < n; ++i) {
+        if (dot(vertices[i], direction) < furthest - tie)
+            continue;
+        part.low = std::min(part.low, dot(vertices[i], across));
+        part.high = std::max(part.high, dot(vertices[i], across));
+        part.vertex = vertices[i];
+    }
+    return part;
+}
+
 } // namespace
+
+Vec2 touchPointOf(Vec2 offset, Vec2 halfA, const Shape& shapeA, Vec2 halfB, const Shape& shapeB,
+                  Vec2 normal) {
+    const Vec2 across{-normal.y, normal.x};
+    const FacingPart a = facingPart(halfA, shapeA, -normal, across);
+    const FacingPart b = facingPart(halfB, shapeB, normal, across);
+    if (a.isPoint() && b.isPoint()) {
+        // A corner or a curve against a corner or a curve: they touch on the line between
+        // the two vertices (a curve's is its core's corner), whichever way the normal found
+        // when they met pointed (a circle goes on round a corner after meeting it).
+        const Vec2 va = offset + a.vertex;
+        const Vec2 between = va - b.vertex;
+        const float distance = length(between);
+        if (distance > 0.0f) {
+            const Vec2 u = between * (1.0f / distance);
+            return ((va - u * a.radius) + (b.vertex + u * b.radius)) * 0.5f;
+        }
+    }
+    // Else across the normal, the middle of the stretch the two facing parts share (of
+    // the gap between them, should they not overlap); along it, halfway between the two.
+    const float aAcross = dot(offset, across);
+    const float along = 0.5f * ((dot(offset, normal) - a.reach) + b.reach);
+    const float middle =
+        0.5f * (std::max(aAcross + a.low, b.low) + std::min(aAcross + a.high, b.high));
+    return normal * along + across * middle;
+}
 
 float reachOf(Vec2 half, const Shape& shape, Vec2 normal) {
     const ShapeKind kind = shape.kind();

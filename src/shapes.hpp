@@ -63,6 +63,16 @@ inline Vec2 slopeNormal(Vec2 half, Vec2 slope) {
 /// 0) its core's reach plus its radius; a ramp or segment its smaller half extent.
 float reachOf(Vec2 half, const Shape& shape, Vec2 normal);
 
+/// Where two bodies touch along unit `normal` (from b towards a), either of them any
+/// shape: along the normal, halfway between the parts of the two that face each other;
+/// across it, the middle of the stretch those parts share, as geometry.hpp's touchPoint
+/// has it for two sharp boxes. A face facing a face (a box against a ramp's leg, a
+/// capsule's side against a wall) shares a stretch; a corner or a curve touches at a
+/// point (a box's corner on a slope, a circle at its centre less its radius times the
+/// normal). `offset` is a's centre less b's; the point is returned relative to b's centre.
+Vec2 touchPointOf(Vec2 offset, Vec2 halfA, const Shape& shapeA, Vec2 halfB, const Shape& shapeB,
+                  Vec2 normal);
+
 /// The region a body's centre must stay out of to stay clear of an obstacle: the obstacle
 /// grown by the body's core (Minkowski sum), a convex polygon of up to five edges, and
 /// the sum of the radii around it. Each edge comes from one face of the obstacle's box

@@ -27,6 +27,21 @@ std::string describe(int column, int row) {
     return "column " + std::to_string(column) + ", row " + std::to_string(row);
 }
 
+/// Why the classic model takes no ramp tiles, as messages say it.
+constexpr const char* kNoRampsInClassic = "the classic model has sharp boxes only: no ramps";
+
+/// The first ramp of `def`'s rows, as "rows[2][5]", if the world is in the classic model
+/// (which refuses them, as createBody refuses any shape there); else nothing.
+std::optional<std::string> rampInClassic(const World& world, const TileMapDef& def) {
+    if (world.solver() != Solver::Classic)
+        return std::nullopt;
+    for (std::size_t row = 0; row < def.rows.size(); ++row)
+        for (std::size_t column = 0; column < def.rows[row].size(); ++column)
+            if (rampTile(def.rows[row][column]))
+                return "rows[" + std::to_string(row) + "][" + std::to_string(column) + "]";
+    return std::nullopt;
+}
+
 TileMapData& lookUp(WorldState& world, TileMapId id, const char* function) {
     std::vector<TileMapData>& maps = world.tileMaps.maps;
     if (std::optional<std::string> problem = handleProblem(maps, id, "TileMapId", "map"))
@@ -255,6 +270,9 @@ void buildAll(World& world, TileMapId id) {
 TileMapId createTileMap(World& world, const TileMapDef& def) {
     if (auto problem = checkTileMapDef(def))
         fail("createTileMap", "TileMapDef." + problem->field + ": " + problem->problem);
+    // Refused before anything is made: the map's boxes would be made before its ramps.
+    if (auto ramp = rampInClassic(world, def))
+        fail("createTileMap", "TileMapDef." + *ramp + ": " + kNoRampsInClassic);
 
     TileMaps& maps = WorldAccess::state(world).tileMaps;
     const std::optional<std::uint32_t> taken =
@@ -371,6 +389,8 @@ void setTile(World& world, TileMapId id, int column, int row, char tile) {
                             " rows)");
     if (!isTileChar(tile))
         fail("setTile", "expected '#', '.' or a ramp, got " + describeChar(tile));
+    if (rampTile(tile) && world.solver() == Solver::Classic)
+        fail("setTile", kNoRampsInClassic);
     char& here = map.tiles[map.at(column, row)];
     if (here == tile)
         return;

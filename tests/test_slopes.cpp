@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -287,6 +288,176 @@ TEST(RampTiles, ACharacterKeepsItsSpeedAcrossFlatRampFlatAndDownRamp) {
     EXPECT_LE(speeds.size(), std::size_t((320.0f - 24.0f) / 120.0f / kDt) + 1);
     for (std::size_t i = 0; i < speeds.size(); ++i)
         EXPECT_NEAR(speeds[i], 120.0f, 1.2f) << "step " << i;
+}
+
+} // namespace
+} // namespace jostle
+
+namespace jostle {
+namespace {
+
+// --- Contact points ----------------------------------------------------------------------
+//
+// Where a pair with a shape touches, by the geometry of the shapes: a circle at its centre
+// less its radius along the normal, a box's corner on a slope, the middle of the stretch
+// where a face meets a face. Along the normal the point is halfway between the two
+// surfaces, so it lies within half the skin (twice the slop of the smaller size) of each.
+
+/// The one contact `body` has, from World::contacts.
+ContactInfo onlyContact(const World& world, BodyId body) {
+    const std::vector<ContactInfo> contacts = world.contacts(body);
+    EXPECT_EQ(contacts.size(), 1u);
+    return contacts.empty() ? ContactInfo{} : contacts[0];
+}
+
+/// The begin event of the pair (a, b) in the last step, if there is one.
+std::optional<ContactEvent> beginOf(const World& world, BodyId a, BodyId b) {
+    for (const ContactEvent& e : world.contactBegins())
+        if (e.a == a && e.b == b)
+            return e;
+    return std::nullopt;
+}
+
+void expectNear(Vec2 actual, Vec2 expected, float tolerance) {
+    EXPECT_NEAR(actual.x, expected.x, tolerance);
+    EXPECT_NEAR(actual.y, expected.y, tolerance);
+}
+
+TEST(ContactPoints, ACircleOnASlopeTouchesAtItsCentreLessItsRadiusAlongTheNormal) {
+    // A circle of radius 2 sliding down a frictionless 30° or 45° incline: the contact's
+    // normal is the slope's, and the point is r back along it from the centre, on the line
+    // y = -x tan θ (dot(point, normal) = 0).
+    for (float degrees : {30.0f, 45.0f}) {
+        SCOPED_TRACE(degrees);
+        World world(WorldDef{.gravity = {0, kG}});
+        const Incline incline = makeIncline(world, degrees, 0.0f);
+        const BodyId ball = placeOnIncline(world, incline, 100.0f, 2, 2, 2, 0.0f);
+        run(world, 1.0f);
+        const ContactInfo c = onlyContact(world, ball);
+        EXPECT_EQ(c.other, incline.ramp);
+        expectNear(c.normal, incline.normal, 1e-5f);
+        const float halfSkin = world.physicalOptions().slop * 2.0f;
+        expectNear(c.point, world.position(ball) - incline.normal * 2.0f, halfSkin);
+        EXPECT_NEAR(dot(c.point, incline.normal), 0.0f, halfSkin);
+    }
+}
+
+TEST(ContactPoints, ACircleLandingOnARampBeginsWhereItMeetsTheLine) {
+    // Dropped from just above a 45° ramp (y = -x), a circle of radius 2 centred at x = 20
+    // meets the line at the foot of the perpendicular from its centre: r k to the right of
+    // it, (20 + 2k, -(20 + 2k)), with k = 1/√2. It falls 0.1 first, to 1.41 units/s: in
+    // the step it lands it keeps its speed along the slope, 1.41 k, and slides down by at
+    // most 1.41 k dt = 0.017 (0.012 in each of x and y) before the begin is reported.
+    World world(WorldDef{.gravity = {0, kG}});
+    const Incline incline = makeIncline(world, 45.0f, 0.0f);
+    const float k = 1.0f / std::sqrt(2.0f);
+    const float restY = -20.0f - 2.0f / k; // dot((20, y), normal) = 2
+    const BodyId ball = world.createBody(
+        {.x = 20, .y = restY - 0.1f, .hw = 2, .hh = 2, .friction = 0, .radius = 2});
+    std::optional<ContactEvent> begin;
+    for (int i = 0; i < 60 && !begin; ++i) {
+        world.step(kDt);
+        begin = beginOf(world, incline.ramp, ball);
+    }
+    ASSERT_TRUE(begin);
+    expectNear(begin->normal, -incline.normal, 1e-5f); // from the ball towards the ramp
+    const float halfSkin = world.physicalOptions().slop * 2.0f;
+    expectNear(begin->point, {20 + 2 * k, -(20 + 2 * k)}, 0.012f + halfSkin);
+}
+
+TEST(ContactPoints, ABoxOnASlopeTouchesAtItsLowCorner) {
+    // A box of half size 1 held by friction on a 30° incline rising to the right (y down):
+    // of its corners, (x + 1, y + 1) reaches furthest into the slope, and it is the one
+    // that touches, on the line. The box stays put, so its start is where it is.
+    World world(WorldDef{.gravity = {0, kG}});
+    const float mu = std::tan(30.0f * std::numbers::pi_v<float> / 180.0f) + 0.02f;
+    const Incline incline = makeIncline(world, 30.0f, mu);
+    const BodyId box = placeOnIncline(world, incline, 100.0f, 1, 1, 0.0f, mu);
+    const Vec2 corner = world.position(box) + Vec2{1, 1};
+    EXPECT_NEAR(dot(corner, incline.normal), 0.0f, 1e-3f); // placed touching
+    const float halfSkin = world.physicalOptions().slop * 1.0f;
+    world.step(kDt);
+    const std::optional<ContactEvent> begin = beginOf(world, incline.ramp, box);
+    ASSERT_TRUE(begin);
+    expectNear(begin->point, corner, halfSkin + 1e-3f);
+    run(world, 2.0f);
+    const ContactInfo c = onlyContact(world, box);
+    expectNear(c.normal, incline.normal, 1e-5f);
+    expectNear(c.point, corner, halfSkin + 1e-2f); // it drifts less than 1e-2 in 2 s
+}
+
+TEST(ContactPoints, ABoxAgainstARampsLegTouchesAtTheMiddleOfTheStretchTheyShare) {
+    // A 45° ramp rising to the right, of half size 50 at the origin: its leg is the face
+    // x = 50, y from -50 to 50. A box of half size 10 pressed against it from the right
+    // shares the stretch of its own left face that the leg spans: y 10..30 for a box at
+    // y = 20, -50..-35 for one at y = -45 (the leg ends at the ramp's tip, y = -50).
+    for (auto [y, middle] : {std::pair{20.0f, 20.0f}, {-45.0f, -42.5f}}) {
+        SCOPED_TRACE(y);
+        World world;
+        const BodyId ramp =
+            world.createBody({.type = BodyType::Static, .hw = 50, .hh = 50, .slope = {-1, -1}});
+        const BodyId box = world.createBody({.x = 60, .y = y, .hw = 10, .hh = 10, .vx = -5});
+        world.step(kDt);
+        const std::optional<ContactEvent> begin = beginOf(world, ramp, box);
+        ASSERT_TRUE(begin);
+        expectNear(begin->normal, {-1, 0}, 0.0f);
+        expectNear(begin->point, {50, middle}, 0.1f); // within half the skin in x
+        EXPECT_EQ(onlyContact(world, box).point, begin->point);
+    }
+}
+
+TEST(ContactPoints, ACapsuleAgainstAWallTouchesAlongItsStraightSide) {
+    // A capsule of radius 5 and half height 15 (its straight side y ± 10) against a wall's
+    // face x = 0 that ends at y = 50: at y = 45 the side spans 35..55 and the wall 35..50
+    // of it, so the middle is 42.5. (Its box would say 30..50, and 40.)
+    World world;
+    const BodyId wall = world.createBody({.type = BodyType::Static, .x = -10, .hw = 10, .hh = 50});
+    const BodyId capsule =
+        world.createBody({.x = 5, .y = 45, .hw = 5, .hh = 15, .vx = -5, .radius = 5});
+    world.step(kDt);
+    const std::optional<ContactEvent> begin = beginOf(world, wall, capsule);
+    ASSERT_TRUE(begin);
+    expectNear(begin->normal, {-1, 0}, 0.0f);
+    expectNear(begin->point, {0, 42.5f}, 0.05f);
+}
+
+TEST(ContactPoints, ACircleRollingOverABoxCornerTouchesAtTheCorner) {
+    // A circle of radius 1 moving right meets the top-left corner (-1, -1) of a static box,
+    // its centre 1/√2 above the corner's level: it touches at the corner itself, along the
+    // diagonal.
+    World world;
+    const float k = 1.0f / std::sqrt(2.0f);
+    const BodyId box = world.createBody({.type = BodyType::Static, .hw = 1, .hh = 1});
+    const BodyId ball = world.createBody(
+        {.x = -1 - k - 0.05f, .y = -1 - k, .hw = 1, .hh = 1, .vx = 10, .friction = 0, .radius = 1});
+    std::optional<ContactEvent> begin;
+    for (int i = 0; i < 10 && !begin; ++i) {
+        world.step(kDt);
+        begin = beginOf(world, box, ball);
+    }
+    ASSERT_TRUE(begin);
+    // From the ball towards the box: (k, k), turned by at most what the ball slides round
+    // the corner in the step, at v k = 7.07 for dt: atan(0.118), 6.7°, 0.083 in a component.
+    expectNear(begin->normal, {k, k}, 0.09f);
+    // Around the corner the ball touches the corner wherever it is; the point is halfway
+    // between the two along the normal: within half the skin (the slop of radius 1).
+    expectNear(begin->point, {-1, -1}, world.physicalOptions().slop + 1e-3f);
+}
+
+TEST(ContactPoints, TwoCirclesTouchOnTheLineBetweenTheirCentres) {
+    // A static circle of radius 2 at the origin and one of radius 3 at (3, 4), 5 away along
+    // (0.6, 0.8), coming slowly closer along that line: they touch 2 along it from the
+    // origin, at (1.2, 1.6).
+    World world;
+    const BodyId still =
+        world.createBody({.type = BodyType::Static, .hw = 2, .hh = 2, .radius = 2});
+    const BodyId ball =
+        world.createBody({.x = 3, .y = 4, .hw = 3, .hh = 3, .vx = -0.6f, .vy = -0.8f, .radius = 3});
+    world.step(kDt);
+    const std::optional<ContactEvent> begin = beginOf(world, still, ball);
+    ASSERT_TRUE(begin);
+    expectNear(begin->normal, {-0.6f, -0.8f}, 1e-5f);
+    expectNear(begin->point, {1.2f, 1.6f}, world.physicalOptions().slop * 2.0f);
 }
 
 } // namespace

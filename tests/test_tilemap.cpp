@@ -245,6 +245,33 @@ TEST(TileMapChecks, CreateTileMapRefusesWhatTheCheckRefusesAndCreatesNothing) {
     EXPECT_EQ(world.bodyCount(), 0u);
 }
 
+TEST(TileMapChecks, TheClassicModelRefusesRampTilesAndChangesNothing) {
+    // Its bodies are sharp boxes only (createBody refuses a slope there): a map with a ramp
+    // is refused before its solid tiles are made, a ramp set on a tile leaves it as it was.
+    World world(WorldDef{.solver = Solver::Classic});
+    try {
+        createTileMap(world, mapDef({"##..", "##/."}));
+        FAIL() << "no jostle::Error";
+    } catch (const Error& error) {
+        EXPECT_EQ(std::string(error.what()), "createTileMap: TileMapDef.rows[1][2]: the classic "
+                                             "model has sharp boxes only: no ramps");
+    }
+    EXPECT_EQ(world.bodyCount(), 0u);
+    const TileMapId map = createTileMap(world, mapDef({"##.."}));
+    try {
+        setTile(world, map, 2, 0, '/');
+        FAIL() << "no jostle::Error";
+    } catch (const Error& error) {
+        EXPECT_EQ(std::string(error.what()),
+                  "setTile: the classic model has sharp boxes only: no ramps");
+    }
+    EXPECT_EQ(tileOf(world, map, 2, 0), '.');
+    EXPECT_EQ(world.bodyCount(), 1u);
+    setTile(world, map, 2, 0, '#'); // solid tiles still change
+    EXPECT_EQ(world.bodyCount(), 1u);
+    EXPECT_EQ(world.halfExtents(tileMapBodies(world, map)[0]), (Vec2{24, 8}));
+}
+
 TEST(TileMapChecks, HandlesAreChecked) {
     World world;
     World other;

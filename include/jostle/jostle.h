@@ -493,9 +493,9 @@ bool jostle_body_apply_impulse(jostle_world* world, jostle_body_id body, jostle_
 /// (jostle::ContactInfo).
 typedef struct jostle_contact_info {
     jostle_body_id other;
-    jostle_vec2 normal; ///< unit, along x or y, pointing from `other` towards the body
-    /// Where they touch: the middle of the stretch of face they share, as in a contact
-    /// begin event.
+    /// Unit, pointing from `other` towards the body, as in a contact event.
+    jostle_vec2 normal;
+    /// Where they touch now, as in a contact begin event.
     jostle_vec2 point;
     float impulse; ///< the normal impulse between them in the last step (mass * speed)
 } jostle_contact_info;
@@ -523,12 +523,18 @@ bool jostle_body_is_touching(const jostle_world* world, jostle_body_id a, jostle
 
 /// Two bodies that started or stopped touching.
 typedef struct jostle_contact_event {
-    jostle_body_id a;     ///< the body created first
-    jostle_body_id b;     ///< the other one
-    jostle_vec2 normal;   ///< unit, along x or y, pointing from b towards a
+    jostle_body_id a; ///< the body created first
+    jostle_body_id b; ///< the other one
+    /// Unit, pointing from b towards a: along x or y between two sharp boxes. For a pair
+    /// with a rounded body, ramp or segment, the normal of the surfaces where they touch:
+    /// a slope's, or any direction round a curve or a corner.
+    jostle_vec2 normal;
     float approach_speed; ///< begin: how fast they met along the normal (>= 0); end: 0
-    /// Begin: where they touch, the middle of the stretch of face they share (halfway
-    /// between the two faces along the normal). End: {0, 0}.
+    /// Begin: where they touch, halfway between the two surfaces along the normal. Where a
+    /// face meets a face (two boxes, a box against a ramp's leg, a capsule's side against a
+    /// wall), the middle of the stretch they share; where a corner or a curve touches, that
+    /// point: a box's corner on a slope, a circle's centre less its radius times the
+    /// normal, the corner a circle rolls round. End: {0, 0}.
     jostle_vec2 point;
 } jostle_contact_event;
 
@@ -560,9 +566,11 @@ const jostle_crush_event* jostle_world_crushes(const jostle_world* world, int* c
 
 /// A pair about to collide, as the solver sees it before it responds (jostle::Collision).
 typedef struct jostle_collision {
-    jostle_body_id a;   ///< classic: the dynamic body that moved; physical: the older one
-    jostle_body_id b;   ///< the other body
-    jostle_vec2 normal; ///< unit, along x or y, pointing from b towards a
+    jostle_body_id a; ///< classic: the dynamic body that moved; physical: the older one
+    jostle_body_id b; ///< the other body
+    /// Unit, pointing from b towards a: along x or y between two sharp boxes; for a pair
+    /// with a shape, the normal where they touch (as in a contact event).
+    jostle_vec2 normal;
     /// How deep they overlap along the normal; negative for a pair that will meet within
     /// the step (-depth is the gap), 0 where the classic ccd sweep stopped a body.
     float depth;
@@ -579,7 +587,8 @@ typedef struct jostle_collision {
 /// From inside the callback you may call: every getter, every query, the event arrays
 /// (they still hold the previous step's events), jostle_body_create (the body joins from
 /// the next step), jostle_body_destroy (either body of the pair too: the pair is then
-/// dropped), the body setters, jostle_tile_map_set_tile, and the error functions.
+/// dropped), the body setters, jostle_tile_map_set_tile and _set_tile_char, and the error
+/// functions.
 /// Refused, as misuse, are the functions that change the world as a whole:
 /// jostle_world_step (and jostle_fixed_step_update of this world), jostle_world_destroy,
 /// jostle_world_set_pre_solve and every other jostle_world_set_*. The callback must
@@ -634,9 +643,11 @@ int jostle_query_rect(const jostle_world* world, jostle_vec2 min, jostle_vec2 ma
 /// Where a ray meets a body.
 typedef struct jostle_ray_hit {
     jostle_body_id body;
-    jostle_vec2 point;  ///< from + (to - from) * fraction, exactly on the face it meets
-    jostle_vec2 normal; ///< the outward normal of that face: unit, along x or y
-    float fraction;     ///< in [0, 1]
+    jostle_vec2 point; ///< from + (to - from) * fraction, exactly on the face it meets
+    /// The outward normal of the surface it meets, unit, against the ray: along x or y for
+    /// a box's face, a ramp's slope's normal, or a rounded body's normal there.
+    jostle_vec2 normal;
+    float fraction; ///< in [0, 1]
 } jostle_ray_hit;
 
 /// The first body on the segment from `from` to `to`: true and *hit filled if there is
@@ -654,8 +665,10 @@ int jostle_ray_cast_all(const jostle_world* world, jostle_vec2 from, jostle_vec2
 typedef struct jostle_box_cast_hit {
     jostle_body_id body;
     jostle_vec2 centre; ///< where the box's centre stops, touching the body
-    jostle_vec2 normal; ///< unit, along x or y, pointing from the body towards the box
-    float fraction;     ///< the fraction of the translation travelled, in [0, 1]
+    /// Unit, pointing from the body towards the box: along x or y for a box's face, the
+    /// slope's normal for a ramp's slope, the normal there for a rounded body's curve.
+    jostle_vec2 normal;
+    float fraction; ///< the fraction of the translation travelled, in [0, 1]
 } jostle_box_cast_hit;
 
 /// Sweeps the box (half extents > 0) along `translation`: true and *hit filled if it
@@ -668,7 +681,7 @@ bool jostle_box_cast(const jostle_world* world, jostle_vec2 centre, jostle_vec2 
 /// A body met by jostle_move_and_slide.
 typedef struct jostle_move_hit {
     jostle_body_id body;
-    jostle_vec2 normal; ///< unit, along x or y, pointing from the body towards the box
+    jostle_vec2 normal; ///< unit, pointing from the body towards the box (as a box cast's)
 } jostle_move_hit;
 
 /// Moves a box by `translation` as bump.lua moves its items: until it runs into a body,
@@ -716,7 +729,7 @@ typedef jostle_response (*jostle_move_filter_fn)(jostle_body_id other, void* con
 typedef struct jostle_move_collision {
     jostle_body_id other;
     jostle_response response; ///< what the filter chose for it
-    jostle_vec2 normal;       ///< unit, along x or y, pointing from `other` towards the body
+    jostle_vec2 normal;       ///< unit, pointing from `other` towards the body (as a box cast's)
     /// The moved body's centre when it touched `other`, placed exactly against its face.
     jostle_vec2 touch;
     /// When, as a fraction of the whole move, in [0, 1]: the move takes unit time, and keeps
@@ -769,7 +782,13 @@ typedef struct jostle_tile_map_def {
     int columns; ///< >= 1
     int rows;    ///< >= 1
     /// columns * rows bytes, row by row, top row first: cells[row * columns + column] is
-    /// nonzero for a solid tile, 0 for an empty one. Read by jostle_tile_map_create only.
+    /// 0 or '.' for an empty tile, a ramp's character for a ramp, and any other byte ('#',
+    /// 1) for a solid tile. So the rows of a C++ TileMapDef or a scene file, laid end to
+    /// end, are cells as they are. The ramps (as read on screen in a y-down world;
+    /// tilemap.hpp and docs/slopes-and-shapes.md have pictures): '/' and '\\' 45° floors
+    /// rising to the right and to the left, '7' and 'F' 45° ceilings solid at the top right
+    /// and top left, "rR" and "Ll" 2:1 floors (two tiles each, low and high half), "cC" and
+    /// "Dd" 2:1 ceilings. Read by jostle_tile_map_create only.
     const unsigned char* cells;
     // Settings of every static body of the map, fixed at creation (body defaults).
     float friction;
@@ -788,8 +807,10 @@ typedef struct jostle_tile_map_def {
 jostle_tile_map_def jostle_default_tile_map_def(void);
 
 /// Creates the map and the static bodies of its solid tiles (runs of solid tiles merged
-/// into few boxes); the null handle on misuse (def or cells NULL, columns or rows < 1,
-/// tile <= 0, a setting out of range).
+/// into few boxes), then one static ramp body per ramp (the two halves of a 2:1 ramp side
+/// by side one); the null handle on misuse (def or cells NULL, columns or rows < 1,
+/// tile <= 0, a setting out of range, a ramp in a world of the classic model, which has
+/// sharp boxes only).
 jostle_tile_map_id jostle_tile_map_create(jostle_world* world, const jostle_tile_map_def* def);
 
 /// Destroys the map and all its bodies; what rests on them wakes and falls.
@@ -799,12 +820,26 @@ bool jostle_tile_map_destroy(jostle_world* world, jostle_tile_map_id map);
 bool jostle_tile_map_is_valid(const jostle_world* world, jostle_tile_map_id map);
 
 /// Makes the tile at (column, row) solid or empty; the tile must be inside the map.
-/// Only the few boxes around the tile are rebuilt.
+/// Only the few boxes around the tile are rebuilt. A ramp there is replaced.
 bool jostle_tile_map_set_tile(jostle_world* world, jostle_tile_map_id map, int column, int row,
                               bool solid);
 
-/// True if the tile is solid. Outside the map: false, not misuse (the map goes on empty
-/// forever).
+/// Sets the tile at (column, row) to a character of the rows of a C++ TileMapDef: '#'
+/// solid, '.' empty, or a ramp ('/', '\\', '7', 'F', 'r', 'R', 'L', 'l', 'c', 'C', 'D',
+/// 'd': see jostle_tile_map_def::cells); the tile must be inside the map, and any other
+/// character is misuse, as is a ramp in the classic model. The ramps of its row are
+/// rebuilt, as are the few boxes around it.
+bool jostle_tile_map_set_tile_char(jostle_world* world, jostle_tile_map_id map, int column, int row,
+                                   char tile);
+
+/// The character of the tile at (column, row): '#', '.' or a ramp's, as
+/// jostle_tile_map_set_tile_char takes them. Outside the map: '.', not misuse. On misuse:
+/// '\0'.
+char jostle_tile_map_tile_of(const jostle_world* world, jostle_tile_map_id map, int column,
+                             int row);
+
+/// True if the tile is solid ('#'; a ramp is not). Outside the map: false, not misuse
+/// (the map goes on empty forever).
 bool jostle_tile_map_is_solid(const jostle_world* world, jostle_tile_map_id map, int column,
                               int row);
 

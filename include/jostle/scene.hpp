@@ -35,7 +35,7 @@ struct Scene {
 };
 
 /// A scene file that cannot be used. what() names the place and the rule, e.g.
-/// "bodies[3].hw: must be > 0", "tilemap.rows[2][5]: expected '#' or '.', got 'x'" or
+/// "bodies[3].hw: must be > 0", "tilemap.rows[2][5]: expected '#', '.' or a ramp, got 'x'" or
 /// "gravity: expected an array of 2 numbers".
 class SceneError : public std::runtime_error {
 public:

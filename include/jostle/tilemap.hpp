@@ -83,15 +83,16 @@ struct TileMapDef {
 
 /// The first problem with `def`, or nothing if createTileMap will accept it. The rules:
 /// x, y finite and tile > 0, with the whole map within float range; at least one row,
-/// rows all as long as the first, at least one column, and only '#' and '.' in them
-/// (the field is named like "rows[2][5]"); friction and bounce in [0, 1]; oneWay {0, 0}
-/// or a unit vector along x or y.
+/// rows all as long as the first, at least one column, and only '#', '.' and the ramps in
+/// them (the field is named like "rows[2][5]"); friction and bounce in [0, 1]; oneWay
+/// {0, 0} or a unit vector along x or y.
 std::optional<FieldError> checkTileMapDef(const TileMapDef& def);
 
 /// Creates a tile map and the static bodies of its solid tiles, in order, top row first
-/// (the smallest y), left to right, then those of its ramps in the same order. Throws jostle::Error
-/// if checkTileMapDef(def) finds a problem ("createTileMap: TileMapDef.rows[2][5]: expected '#' or
-/// '.', got 'x'").
+/// (the smallest y), left to right, then those of its ramps in the same order. Throws
+/// jostle::Error if checkTileMapDef(def) finds a problem ("createTileMap:
+/// TileMapDef.rows[2][5]: expected '#', '.' or a ramp, got 'x'"), and for a ramp in a world
+/// of the classic model, whose bodies are sharp boxes only; then nothing is created.
 TileMapId createTileMap(World& world, const TileMapDef& def);
 
 /// Destroys the map and all its bodies (as World::destroyBody does: what rests on them
@@ -105,7 +106,8 @@ void destroyTileMap(World& world, TileMapId map);
 /// solid where a dynamic body is pushes the body out, as any overlap does.
 void setTile(World& world, TileMapId map, int column, int row, bool solid);
 /// Sets the tile at (column, row) to any character `rows` may hold ('#', '.', a ramp);
-/// jostle::Error for another. A ramp's row has its ramps rebuilt.
+/// jostle::Error for another, and for a ramp in the classic model. A ramp's row has its
+/// ramps rebuilt.
 void setTile(World& world, TileMapId map, int column, int row, char tile);
 
 /// The character of the tile at (column, row), as in TileMapDef::rows; '.' outside.

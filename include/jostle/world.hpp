@@ -111,9 +111,11 @@ std::optional<FieldError> checkWorldDef(const WorldDef& def);
 /// A pair about to collide, as the solver sees it before it responds. The pre-solve
 /// callback may change bounce and friction, for this pair and this step only.
 struct Collision {
-    BodyId a;    ///< classic: the dynamic body that moved; physical: the one created first
-    BodyId b;    ///< the other body
-    Vec2 normal; ///< unit normal, along x or y, pointing from b towards a
+    BodyId a; ///< classic: the dynamic body that moved; physical: the one created first
+    BodyId b; ///< the other body
+    /// Unit, pointing from b towards a: along x or y between two sharp boxes; for a pair
+    /// with a rounded body, ramp or segment, the normal where they touch (as ContactEvent's).
+    Vec2 normal;
     /// How deep they overlap along the normal. Negative for a pair still apart that will
     /// meet within the step (the physical model's speculative contacts: -depth is the
     /// gap); 0 where the classic ccd option's sweep stopped a body against another.
@@ -126,19 +128,24 @@ struct Collision {
 struct ContactEvent {
     BodyId a; ///< the body created first
     BodyId b;
-    Vec2 normal; ///< unit, along x or y, pointing from b towards a
+    /// Unit, pointing from b towards a: along x or y between two sharp boxes. For a pair
+    /// with a rounded body, ramp or segment (docs/slopes-and-shapes.md), the normal of the
+    /// surfaces where they touch: a slope's, or any direction round a curve or a corner.
+    Vec2 normal;
     /// Begin: how fast they closed along the normal when they met (>= 0). End: 0.
     float approachSpeed;
-    /// Begin: where they touch, the middle of the stretch of face they share (the middle
-    /// of their overlap along the face, halfway between the two faces along the normal).
-    /// End: {0, 0}.
+    /// Begin: where they touch, halfway between the two surfaces along the normal. Where a
+    /// face meets a face (two boxes, a box against a ramp's leg, a capsule's side against a
+    /// wall), the middle of the stretch they share; where a corner or a curve touches, that
+    /// point: a box's corner on a slope, a circle's centre less its radius times the
+    /// normal, the corner a circle rolls round. End: {0, 0}.
     Vec2 point;
 };
 
 /// A contact of one body with another, as World::contacts lists it.
 struct ContactInfo {
     BodyId other;
-    Vec2 normal;   ///< unit, along x or y, pointing from `other` towards the body
+    Vec2 normal;   ///< unit, pointing from `other` towards the body (as ContactEvent's)
     Vec2 point;    ///< where they touch now, as in a ContactEvent's begin
     float impulse; ///< the normal impulse between them in the last step (mass × speed)
 };

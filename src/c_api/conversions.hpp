@@ -8,6 +8,7 @@
 #include "jostle/tilemap.hpp"
 #include "jostle/world.hpp"
 #include "misuse.hpp"
+#include "tile_chars.hpp"
 
 #include <algorithm>
 #include <cstddef>
@@ -177,7 +178,16 @@ inline QueryFilter toCpp(const jostle_query_filter* f) {
             .ignore = toCpp(f->ignore)};
 }
 
-/// The solid-cells array becomes the C++ definition's rows of '#' and '.'.
+/// A cell of jostle_tile_map_def::cells as a character of TileMapDef::rows: 0 and '.' are
+/// empty, a ramp's character is that ramp, and any other byte is solid.
+inline char tileOfCell(unsigned char cell) {
+    const auto tile = static_cast<char>(cell);
+    if (cell == 0 || tile == '.')
+        return '.';
+    return rampTile(tile) ? tile : '#';
+}
+
+/// The cells array becomes the C++ definition's rows.
 inline TileMapDef toCpp(const jostle_tile_map_def& d) {
     requireCookie(d.internal_cookie, "def", "jostle_default_tile_map_def");
     if (d.columns < 1)
@@ -192,8 +202,7 @@ inline TileMapDef toCpp(const jostle_tile_map_def& d) {
     def.rows.resize(static_cast<std::size_t>(d.rows), std::string(columns, '.'));
     for (std::size_t row = 0; row < def.rows.size(); ++row)
         for (std::size_t column = 0; column < columns; ++column)
-            if (d.cells[row * columns + column] != 0)
-                def.rows[row][column] = '#';
+            def.rows[row][column] = tileOfCell(d.cells[row * columns + column]);
     return def;
 }
 

@@ -1,4 +1,4 @@
-// The C API's tile maps: a solid-cells array made into static bodies.
+// The C API's tile maps: an array of cells (solid, empty or ramps) made into static bodies.
 #include "c_api.hpp"
 
 using namespace jostle;
@@ -38,6 +38,20 @@ bool jostle_tile_map_set_tile(jostle_world* world, jostle_tile_map_id map, int c
         setTile(worldOf(world).world, toCpp(map), column, row, solid);
         return true;
     });
+}
+
+bool jostle_tile_map_set_tile_char(jostle_world* world, jostle_tile_map_id map, int column, int row,
+                                   char tile) {
+    return guard(__func__, false, [&] {
+        setTile(worldOf(world).world, toCpp(map), column, row, tile);
+        return true;
+    });
+}
+
+char jostle_tile_map_tile_of(const jostle_world* world, jostle_tile_map_id map, int column,
+                             int row) {
+    return guard(__func__, '\0',
+                 [&] { return tileOf(worldOf(world).world, toCpp(map), column, row); });
 }
 
 bool jostle_tile_map_is_solid(const jostle_world* world, jostle_tile_map_id map, int column,

@@ -1148,6 +1148,16 @@ static void test_move_misuse(void) {
 
 // --- Tile maps ---------------------------------------------------------------------------
 
+/// The def of a map of tiles of 16 at the origin, 8 columns by 3 rows, of `cells`.
+static jostle_tile_map_def tile_map_def_8x3(const unsigned char* cells) {
+    jostle_tile_map_def def = jostle_default_tile_map_def();
+    def.tile = 16;
+    def.columns = 8;
+    def.rows = 3;
+    def.cells = cells;
+    return def;
+}
+
 /// Tiles of 16 at the origin:      row 0  ........
 ///                                 row 1  #......#
 ///                                 row 2  ########   (top at y = 32)
@@ -1158,11 +1168,7 @@ static void test_tile_map(void) {
     for (int r = 0; r < 3; ++r)
         for (int c = 0; c < 8; ++c)
             cells[r * 8 + c] = rows[r][c] == '#';
-    jostle_tile_map_def def = jostle_default_tile_map_def();
-    def.tile = 16;
-    def.columns = 8;
-    def.rows = 3;
-    def.cells = cells;
+    jostle_tile_map_def def = tile_map_def_8x3(cells);
     jostle_tile_map_id map = jostle_tile_map_create(world, &def);
     CHECK(!jostle_tile_map_id_is_null(map) && jostle_tile_map_is_valid(world, map), "created");
     CHECK(jostle_tile_map_columns(world, map) == 8 && jostle_tile_map_rows(world, map) == 3,
@@ -1226,6 +1232,111 @@ static void test_tile_map(void) {
     map = jostle_tile_map_create(world, &def);
     CHECK(!jostle_tile_map_set_tile(world, map, 8, 0, true), "outside the map");
     CHECK_ERROR("jostle_tile_map_set_tile", "outside the map");
+    CHECK(jostle_world_destroy(world), "destroy");
+    CHECK_NO_ERROR();
+}
+
+/// True if a ray straight down at x hits `map`'s tiles at y with the normal (nx, ny).
+static bool ray_down_hits(jostle_world* world, float x, float y, float nx, float ny) {
+    jostle_ray_hit hit;
+    if (!jostle_ray_cast(world, (jostle_vec2){x, 0}, (jostle_vec2){x, 100}, NULL, &hit))
+        return false;
+    return fabsf(hit.point.x - x) < 1e-4f && fabsf(hit.point.y - y) < 1e-4f &&
+           fabsf(hit.normal.x - nx) < 1e-6f && fabsf(hit.normal.y - ny) < 1e-6f;
+}
+
+/// Ramp tiles: the cells of a map taken straight from strings, the old 1 for a solid tile
+/// beside them, and ramps set and read one tile at a time. Tiles of 16 at the origin:
+///     row 0  ........
+///     row 1  ./..#.rR     ('#' given as the byte 1)
+///     row 2  ########     (top at y = 32)
+/// The '/' at (1, 1) covers x 16..32, y 16..32 and keeps the triangle under the line from
+/// (16, 32) to (32, 16): x + y = 48, its normal (-1, -1) / √2.
+static void test_ramp_tiles(void) {
+    jostle_world* world = make_world(kG);
+    const char* level = "........"
+                        "./..#.rR"
+                        "########";
+    unsigned char cells[3 * 8];
+    memcpy(cells, level, sizeof cells);
+    cells[1 * 8 + 4] = 1;
+    jostle_tile_map_def def = tile_map_def_8x3(cells);
+    jostle_tile_map_id map = jostle_tile_map_create(world, &def);
+    CHECK(!jostle_tile_map_id_is_null(map), "created");
+    // The solid tiles first, top row first: (4, 1), the floor; then the ramps: the '/' and
+    // the two halves of the 2:1 ramp as one triangle.
+    jostle_body_id parts[4];
+    CHECK(jostle_tile_map_bodies(world, map, parts, 4) == 4, "two boxes and two ramps");
+    CHECK(at(jostle_body_get_position(world, parts[2]), 24, 24) &&
+              at(jostle_body_get_half_extents(world, parts[2]), 8, 8),
+          "the '/' fills its tile");
+    CHECK(at(jostle_body_get_def(world, parts[2]).slope, -1, -1), "a floor rising to the right");
+    CHECK(at(jostle_body_get_position(world, parts[3]), 112, 24) &&
+              at(jostle_body_get_half_extents(world, parts[3]), 16, 8),
+          "'rR' is one triangle over two tiles");
+    CHECK(at(jostle_body_get_def(world, parts[3]).slope, -1, -1), "rising to the right too");
+    CHECK(jostle_tile_map_tile_of(world, map, 1, 1) == '/' &&
+              jostle_tile_map_tile_of(world, map, 6, 1) == 'r' &&
+              jostle_tile_map_tile_of(world, map, 7, 1) == 'R',
+          "the ramps read back");
+    CHECK(jostle_tile_map_tile_of(world, map, 4, 1) == '#' &&
+              jostle_tile_map_tile_of(world, map, 0, 1) == '.' &&
+              jostle_tile_map_tile_of(world, map, 0, 2) == '#',
+          "the byte 1 is a solid tile, '.' an empty one");
+    CHECK(jostle_tile_map_tile_of(world, map, -1, 0) == '.' &&
+              jostle_tile_map_tile_of(world, map, 8, 2) == '.',
+          "outside the map: empty");
+    CHECK(!jostle_tile_map_is_solid(world, map, 1, 1) && jostle_tile_map_is_solid(world, map, 4, 1),
+          "a ramp is not a solid tile");
+    const float k = sqrtf(0.5f);
+    CHECK(ray_down_hits(world, 28, 48 - 28, -k, -k), "down at x = 28: the slope, at y = 20");
+    CHECK_NO_ERROR();
+
+    // A '\' at (2, 1): x 32..48, y 16..32, solid under the line from (32, 16) to (48, 32),
+    // y = x - 16, its normal (1, -1) / √2.
+    CHECK(jostle_tile_map_set_tile_char(world, map, 2, 1, '\\'), "set a ramp");
+    CHECK(jostle_tile_map_tile_of(world, map, 2, 1) == '\\', "read back");
+    CHECK(jostle_tile_map_bodies(world, map, NULL, 0) == 5, "one more body");
+    CHECK(ray_down_hits(world, 36, 36 - 16, k, -k), "down at x = 36: its slope, at y = 20");
+    CHECK(jostle_tile_map_set_tile_char(world, map, 2, 1, '.'), "empty it again");
+    CHECK(jostle_tile_map_bodies(world, map, NULL, 0) == 4, "gone");
+    CHECK(ray_down_hits(world, 36, 32, 0, -1), "down at x = 36: the floor");
+    // A ramp replaced by a solid tile, by either setter, and the solid tile by nothing.
+    CHECK(jostle_tile_map_set_tile_char(world, map, 1, 1, '#'), "the '/' made solid");
+    CHECK(jostle_tile_map_tile_of(world, map, 1, 1) == '#' &&
+              jostle_tile_map_is_solid(world, map, 1, 1),
+          "solid");
+    CHECK(ray_down_hits(world, 28, 16, 0, -1), "down at x = 28: the tile's top");
+    CHECK(jostle_tile_map_set_tile_char(world, map, 1, 1, '/'), "a ramp again");
+    CHECK(jostle_tile_map_set_tile(world, map, 1, 1, false), "emptied by the bool setter");
+    CHECK(jostle_tile_map_tile_of(world, map, 1, 1) == '.', "empty");
+    CHECK(jostle_tile_map_bodies(world, map, NULL, 0) == 3, "the two boxes and 'rR'");
+    CHECK_NO_ERROR();
+
+    // Misuse: no change, a neutral answer.
+    CHECK(!jostle_tile_map_set_tile_char(world, map, 1, 1, 'x'), "not a tile");
+    CHECK_ERROR("jostle_tile_map_set_tile_char", "expected '#', '.' or a ramp, got 'x'");
+    CHECK(!jostle_tile_map_set_tile_char(world, map, 8, 0, '/'), "outside");
+    CHECK_ERROR("jostle_tile_map_set_tile_char", "column 8, row 0 is outside the map");
+    CHECK(jostle_tile_map_tile_of(world, map, 1, 1) == '.' &&
+              jostle_tile_map_bodies(world, map, NULL, 0) == 3,
+          "nothing changed");
+    CHECK(jostle_tile_map_tile_of(NULL, map, 0, 0) == '\0', "no world");
+    CHECK_ERROR("jostle_tile_map_tile_of", "world");
+    CHECK(jostle_tile_map_destroy(world, map), "destroy");
+    CHECK(jostle_tile_map_tile_of(world, map, 0, 0) == '\0', "a stale map");
+    CHECK_ERROR("jostle_tile_map_tile_of", "stale");
+    CHECK(!jostle_tile_map_set_tile_char(world, map, 0, 0, '#'), "a stale map");
+    CHECK_ERROR("jostle_tile_map_set_tile_char", "stale");
+    CHECK(jostle_world_destroy(world), "destroy");
+
+    // The classic model's bodies are sharp boxes: a map with a ramp is refused whole.
+    jostle_world_def classic = jostle_default_world_def();
+    classic.solver = JOSTLE_SOLVER_CLASSIC;
+    world = jostle_world_create(&classic);
+    CHECK(jostle_tile_map_id_is_null(jostle_tile_map_create(world, &def)), "refused");
+    CHECK_ERROR("jostle_tile_map_create", "rows[1][1]: the classic model has sharp boxes only");
+    CHECK(jostle_world_body_count(world) == 0, "nothing made");
     CHECK(jostle_world_destroy(world), "destroy");
     CHECK_NO_ERROR();
 }
@@ -1396,11 +1507,7 @@ static void test_pre_solve(void) {
     world = make_world(kG);
     unsigned char cells[3 * 8] = {0};
     memset(cells + 2 * 8, 1, 8); // row 2 solid, at y 32..48 as in test_tile_map
-    jostle_tile_map_def def = jostle_default_tile_map_def();
-    def.tile = 16;
-    def.columns = 8;
-    def.rows = 3;
-    def.cells = cells;
+    jostle_tile_map_def def = tile_map_def_8x3(cells);
     s = callback_defaults(world);
     s.map = jostle_tile_map_create(world, &def);
     s.dig = true;
@@ -1752,6 +1859,7 @@ int main(void) {
     test_move_filters();
     test_move_misuse();
     test_tile_map();
+    test_ramp_tiles();
     test_pre_solve();
     test_fixed_step();
     test_draw_positions();

@@ -2,6 +2,7 @@
 // C++ and scene files: tile (column, row) covers x + column × tile to x + (column + 1) ×
 // tile. So the string rows[1] of the definition is row 0.
 #include "binding.hpp"
+#include "tile_chars.hpp"
 
 #include <cstdio>
 #include <cstring>
@@ -24,9 +25,10 @@ TileMapHandle& checkMap(lua_State* L, int index, const char* where) {
     return *map;
 }
 
-/// Checks the rows table at `rows`: strings of '#' and '.', all as long as the first.
-/// Messages use Lua's indices ("rows[3][6]" is rows[3]:sub(6, 6)) and say the tile.
-void checkRows(lua_State* L, int rows, const char* where) {
+/// Checks the rows table at `rows`: strings of '#', '.' and ramps (none if `classic`: that
+/// model's bodies are sharp boxes), all as long as the first. Messages use Lua's indices
+/// ("rows[3][6]" is rows[3]:sub(6, 6)) and say the tile.
+void checkRows(lua_State* L, int rows, const char* where, bool classic) {
     if (lua_type(L, rows) != LUA_TTABLE)
         raise(L, where, "rows: expected an array of strings, got %s", typeName(L, rows));
     const std::size_t count = rawLength(L, rows);
@@ -51,15 +53,20 @@ void checkRows(lua_State* L, int rows, const char* where) {
                   static_cast<int>(length), static_cast<int>(columns));
         }
         for (std::size_t c = 0; c < length; ++c) {
-            if (text[c] == '#' || text[c] == '.')
+            if (classic && rampTile(text[c]))
+                raise(L, where,
+                      "rows[%d][%d]: the classic model has sharp boxes only: no ramps (tile "
+                      "column %d, row %d)",
+                      static_cast<int>(i), static_cast<int>(c + 1), static_cast<int>(c),
+                      static_cast<int>(i - 1));
+            if (isTileChar(text[c]))
                 continue;
-            const auto byte = static_cast<unsigned char>(text[c]);
+            // Copied out of the std::string (short: no allocation) before raising, which
+            // may longjmp past its destructor.
             char got[16];
-            if (byte >= 0x20 && byte < 0x7F)
-                std::snprintf(got, sizeof got, "'%c'", text[c]);
-            else
-                std::snprintf(got, sizeof got, "byte 0x%02X", byte);
-            raise(L, where, "rows[%d][%d]: expected '#' or '.', got %s (tile column %d, row %d)",
+            std::snprintf(got, sizeof got, "%s", describeChar(text[c]).c_str());
+            raise(L, where,
+                  "rows[%d][%d]: expected '#', '.' or a ramp, got %s (tile column %d, row %d)",
                   static_cast<int>(i), static_cast<int>(c + 1), got, static_cast<int>(c),
                   static_cast<int>(i - 1));
         }
@@ -108,7 +115,7 @@ int worldNewTileMap(lua_State* L) {
     if (lua_isnil(L, -1))
         raise(L, where, "missing field \"rows\"");
     const int rows = lua_gettop(L);
-    checkRows(L, rows, where);
+    checkRows(L, rows, where, handle.data->world.solver() == Solver::Classic);
     const std::size_t rowCount = rawLength(L, rows);
     luaL_checkstack(L, 4, "jostle: World:newTileMap");
 
@@ -152,28 +159,56 @@ int worldNewTileMap(lua_State* L) {
 
 // --- Methods ---------------------------------------------------------------------------
 
+/// A map method's column and row, its arguments 2 and 3.
+TileCoord checkColumnRow(lua_State* L, const char* where) {
+    const auto column = checkWhole(L, 2, where, "column", -kMaxCoordinate, kMaxCoordinate);
+    const auto row = checkWhole(L, 3, where, "row", -kMaxCoordinate, kMaxCoordinate);
+    return {static_cast<int>(column), static_cast<int>(row)};
+}
+
+/// setTile's tile: true (solid) or false (empty), or a tile's character as a string of
+/// one ("#", ".", a ramp: setTile in C++ checks which).
+char checkTile(lua_State* L, int index, const char* where) {
+    if (lua_type(L, index) == LUA_TBOOLEAN)
+        return lua_toboolean(L, index) ? '#' : '.';
+    if (lua_type(L, index) != LUA_TSTRING)
+        raise(L, where, "tile: expected true, false or a tile's character, got %s",
+              typeName(L, index));
+    std::size_t length = 0;
+    const char* text = lua_tolstring(L, index, &length);
+    if (length != 1)
+        raise(L, where, "tile: expected one character, got a string of %d",
+              static_cast<int>(length));
+    return text[0];
+}
+
 int mapSetTile(lua_State* L) {
     const char* where = "TileMap:setTile";
     const TileMapHandle& map = checkMap(L, 1, where);
-    const auto column =
-        static_cast<int>(checkWhole(L, 2, where, "column", -kMaxCoordinate, kMaxCoordinate));
-    const auto row =
-        static_cast<int>(checkWhole(L, 3, where, "row", -kMaxCoordinate, kMaxCoordinate));
-    const bool solid = checkBoolean(L, 4, where, "solid");
+    const TileCoord at = checkColumnRow(L, where);
+    const char tile = checkTile(L, 4, where);
     requireChangeable(L, *map.world->data, where);
-    guard(L, where, [&] { setTile(map.world->data->world, map.id, column, row, solid); });
+    guard(L, where, [&] { setTile(map.world->data->world, map.id, at.column, at.row, tile); });
     return 0;
+}
+
+/// The tile's character ("#", ".", a ramp's); "." outside the map.
+int mapTileOf(lua_State* L) {
+    const char* where = "TileMap:tileOf";
+    const TileMapHandle& map = checkMap(L, 1, where);
+    const TileCoord at = checkColumnRow(L, where);
+    char tile = '.';
+    guard(L, where, [&] { tile = tileOf(map.world->data->world, map.id, at.column, at.row); });
+    lua_pushlstring(L, &tile, 1);
+    return 1;
 }
 
 int mapIsSolid(lua_State* L) {
     const char* where = "TileMap:isSolid";
     const TileMapHandle& map = checkMap(L, 1, where);
-    const auto column =
-        static_cast<int>(checkWhole(L, 2, where, "column", -kMaxCoordinate, kMaxCoordinate));
-    const auto row =
-        static_cast<int>(checkWhole(L, 3, where, "row", -kMaxCoordinate, kMaxCoordinate));
+    const TileCoord at = checkColumnRow(L, where);
     bool solid = false;
-    guard(L, where, [&] { solid = isSolid(map.world->data->world, map.id, column, row); });
+    guard(L, where, [&] { solid = isSolid(map.world->data->world, map.id, at.column, at.row); });
     lua_pushboolean(L, solid);
     return 1;
 }
@@ -255,7 +290,7 @@ int mapGetDef(lua_State* L) {
     lua_pushboolean(L, settings.sensor);
     lua_setfield(L, -2, "sensor");
 
-    // The rows, one string each, built with luaL_Buffer from isSolid: no C++ string
+    // The rows, one string each, built with luaL_Buffer from tileOf: no C++ string
     // lives while Lua allocates.
     lua_createtable(L, rows, 0);
     int columns = 0;
@@ -264,9 +299,9 @@ int mapGetDef(lua_State* L) {
         luaL_Buffer buffer;
         luaL_buffinit(L, &buffer);
         for (int column = 0; column < columns; ++column) {
-            bool solid = false;
-            guard(L, where, [&] { solid = isSolid(map.world->data->world, map.id, column, row); });
-            luaL_addchar(&buffer, solid ? '#' : '.');
+            char tile = '.';
+            guard(L, where, [&] { tile = tileOf(map.world->data->world, map.id, column, row); });
+            luaL_addchar(&buffer, tile);
         }
         luaL_pushresult(&buffer);
         lua_rawseti(L, -2, row + 1);
@@ -331,10 +366,10 @@ int mapToString(lua_State* L) {
 }
 
 constexpr luaL_Reg kMapMethods[] = {
-    {"setTile", mapSetTile}, {"isSolid", mapIsSolid},         {"tileAt", mapTileAt},
-    {"getSize", mapGetSize}, {"getDef", mapGetDef},           {"getBodies", mapGetBodies},
-    {"destroy", mapDestroy}, {"isDestroyed", mapIsDestroyed}, {"getWorld", mapGetWorld},
-    {nullptr, nullptr},
+    {"setTile", mapSetTile},     {"tileOf", mapTileOf},   {"isSolid", mapIsSolid},
+    {"tileAt", mapTileAt},       {"getSize", mapGetSize}, {"getDef", mapGetDef},
+    {"getBodies", mapGetBodies}, {"destroy", mapDestroy}, {"isDestroyed", mapIsDestroyed},
+    {"getWorld", mapGetWorld},   {nullptr, nullptr},
 };
 
 constexpr luaL_Reg kWorldMapMethods[] = {
@@ -357,7 +392,7 @@ void registerTileMapMethods(lua_State* L, int worldMethods) {
 
 void openTileMap(lua_State* L) {
     luaL_newmetatable(L, kTileMapType);
-    lua_createtable(L, 0, 10);
+    lua_createtable(L, 0, 11);
     luaL_setfuncs(L, kMapMethods, 0);
     lua_setfield(L, -2, "__index");
     lua_pushcfunction(L, mapToString);

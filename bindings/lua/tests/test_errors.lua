@@ -204,9 +204,9 @@ test("tile map definitions and coordinates", function()
   t.raises({"World:newTileMap", "rows[1]: must have at least one column"}, newTileMap, {tile = 16, rows = {""}})
   t.raises({"World:newTileMap", "rows[2]: has 3 columns, rows[1] has 4"},
     newTileMap, {tile = 16, rows = {"#..#", "###"}})
-  t.raises({"World:newTileMap", "rows[2][3]: expected '#' or '.', got 'x' (tile column 2, row 1)"},
+  t.raises({"World:newTileMap", "rows[2][3]: expected '#', '.' or a ramp, got 'x' (tile column 2, row 1)"},
     newTileMap, {tile = 16, rows = {"....", "##x#"}})
-  t.raises({"World:newTileMap", "rows[1][1]: expected '#' or '.', got byte 0x09"},
+  t.raises({"World:newTileMap", "rows[1][1]: expected '#', '.' or a ramp, got byte 0x09"},
     newTileMap, {tile = 16, rows = {"\t"}})
   t.raises({"World:newTileMap", "rows[2]: expected a string, got number"}, newTileMap, {tile = 16, rows = {"#", 1}})
   t.raises({"World:newTileMap", 'unknown field "tileWidth"'}, newTileMap, {tileWidth = 16, rows = {"#"}})
@@ -214,12 +214,30 @@ test("tile map definitions and coordinates", function()
   t.raises({"World:newTileMap", "x: must be a finite number"}, newTileMap, {tile = 16, rows = {"#"}, x = 0 / 0})
   local map = world:newTileMap({tile = 16, rows = {"##"}})
   t.raises({"TileMap:setTile", "outside the map"}, map.setTile, map, 2, 0, true)
-  t.raises({"TileMap:setTile", "solid: expected true or false, got no value"}, map.setTile, map, 0, 0)
+  t.raises({"TileMap:setTile", "tile: expected true, false or a tile's character, got no value"},
+    map.setTile, map, 0, 0)
+  t.raises({"TileMap:setTile", "tile: expected one character, got a string of 2"},
+    map.setTile, map, 0, 0, "##")
+  t.raises({"TileMap:setTile", "expected '#', '.' or a ramp, got 'x'"}, map.setTile, map, 0, 0, "x")
+  t.equal(map:tileOf(0, 0), "#", "left as it was")
+  t.raises({"TileMap:tileOf", "row: expected a whole number, got string"}, map.tileOf, map, 0, "0")
   t.raises({"TileMap:setTile", "column: expected a whole number"}, map.setTile, map, 0.5, 0, true)
   t.raises({"TileMap:isSolid", "row: expected a whole number, got string"}, map.isSolid, map, 0, "0")
   map:destroy()
   t.raises({"TileMap:setTile", "the map was destroyed"}, map.setTile, map, 0, 0, true)
+  t.raises({"TileMap:tileOf", "the map was destroyed"}, map.tileOf, map, 0, 0)
   t.equal(map:isDestroyed(), true, "isDestroyed")
+end)
+
+test("the classic model takes no ramp tiles", function()
+  local world = jostle.newWorld({solver = "classic"})
+  t.raises({"World:newTileMap",
+    "rows[1][2]: the classic model has sharp boxes only: no ramps (tile column 1, row 0)"},
+    world.newTileMap, world, {tile = 16, rows = {"#/"}})
+  t.equal(world:getBodyCount(), 0, "nothing made")
+  local map = world:newTileMap({tile = 16, rows = {"#."}})
+  t.raises({"TileMap:setTile", "the classic model has sharp boxes only"}, map.setTile, map, 1, 0, "/")
+  t.equal(map:tileOf(1, 0), ".", "left as it was")
 end)
 
 test("fixed step arguments", function()

@@ -82,6 +82,85 @@ test("isSolid, tileAt, getSize, getDef", function()
   t.equal(def.sensor, false, "sensor")
 end)
 
+-- Ramp tiles, tiles of 16 at the origin:
+--   row 0  ........
+--   row 1  ./....rR
+--   row 2  ########   (top at y = 32)
+-- The "/" at (1, 1) covers x 16..32, y 16..32 and keeps the triangle under the line from
+-- (16, 32) to (32, 16): x + y = 48, its normal (-1, -1) / sqrt(2). "rR" is one 2:1 ramp
+-- over x 96..128.
+local k = math.sqrt(0.5)
+
+-- A ray straight down at x meets the map at y with the normal (nx, ny).
+local function hitsDownAt(world, x, y, nx, ny, what)
+  local body, hx, hy, hnx, hny = world:rayCast(x, 0, x, 100)
+  t.truthy(body, what .. ": a hit")
+  t.near(hx, x, 1e-4, what .. ": x")
+  t.near(hy, y, 1e-4, what .. ": y")
+  t.near(hnx, nx, 1e-6, what .. ": nx")
+  t.near(hny, ny, 1e-6, what .. ": ny")
+end
+
+test("ramp tiles: in the rows, read back by tileOf and getDef, set by character", function()
+  local world = jostle.newWorld({gravity = {0, 800}})
+  local map = world:newTileMap({tile = 16, rows = {"........", "./....rR", "########"}})
+  local bodies = map:getBodies()
+  t.equal(#bodies, 3, "the floor, then the two ramps")
+  local x, y = bodies[2]:getPosition()
+  local hw, hh = bodies[2]:getHalfExtents()
+  t.equal(x + y + hw + hh, 24 + 24 + 8 + 8, "the '/' fills tile (1, 1)")
+  local slope = bodies[2]:getDef().slope
+  t.equal(slope[1] + slope[2], -2, "a floor rising to the right: slope {-1, -1}")
+  x, y = bodies[3]:getPosition()
+  hw, hh = bodies[3]:getHalfExtents()
+  t.equal(x, 112, "'rR' centre x")
+  t.equal(y, 24, "'rR' centre y")
+  t.equal(hw, 16, "'rR' is two tiles wide")
+  t.equal(hh, 8, "and one tall")
+  t.equal(map:tileOf(1, 1), "/", "(1, 1)")
+  t.equal(map:tileOf(6, 1) .. map:tileOf(7, 1), "rR", "(6, 1) and (7, 1)")
+  t.equal(map:tileOf(0, 2), "#", "(0, 2)")
+  t.equal(map:tileOf(-1, 0) .. map:tileOf(8, 2), "..", "outside: empty")
+  t.equal(map:isSolid(1, 1), false, "a ramp is not a solid tile")
+  hitsDownAt(world, 28, 48 - 28, -k, -k, "the slope of '/' at x = 28")
+
+  -- A "\" at (2, 1): x 32..48, y 16..32, solid under the line y = x - 16, normal (1, -1) / sqrt(2).
+  map:setTile(2, 1, "\\")
+  t.equal(map:tileOf(2, 1), "\\", "set by its character")
+  t.equal(#map:getBodies(), 4, "one more body")
+  hitsDownAt(world, 36, 36 - 16, k, -k, "the slope of '\\' at x = 36")
+  t.equal(map:getDef().rows[2], "./\\...rR", "getDef's rows carry the ramps")
+  map:setTile(2, 1, false)
+  hitsDownAt(world, 36, 32, 0, -1, "emptied: the floor at x = 36")
+  map:setTile(1, 1, true)
+  t.equal(map:tileOf(1, 1), "#", "a ramp made solid")
+  hitsDownAt(world, 28, 16, 0, -1, "the solid tile's top at x = 28")
+  map:setTile(1, 1, ".")
+  t.equal(map:tileOf(1, 1), ".", "emptied by its character")
+  t.equal(#map:getBodies(), 2, "the floor and 'rR'")
+
+  -- A map made from getDef has the same tiles.
+  local copy = world:newTileMap(map:getDef())
+  t.equal(table.concat(copy:getDef().rows, "|"), "........|......rR|########", "the copy")
+end)
+
+test("a ball rolls down a ramp tile onto the floor", function()
+  -- The '/' at (7, 1) covers x 112..128, y 16..32 under the line x + y = 144. A
+  -- frictionless ball of radius 4 starts at rest touching it at (120, 24), its centre 4
+  -- along the normal (-1, -1) / sqrt(2) from there. It slides down to the foot at
+  -- (112, 32) in about 0.2 s and rolls left along the floor, its centre 4 above it.
+  local world = jostle.newWorld({gravity = {0, 800}})
+  world:newTileMap({tile = 16, rows = {"........", "......./", "########"}, friction = 0})
+  local ball = world:newBody({x = 120 - 4 * k, y = 24 - 4 * k, hw = 4, hh = 4, radius = 4,
+    friction = 0})
+  t.steps(world, 30)
+  local x, y = ball:getPosition()
+  t.truthy(x < 112, "left the ramp's foot (x = " .. x .. ")")
+  t.near(y, 32 - 4, 0.05, "on the floor")
+  local vx = ball:getVelocity()
+  t.truthy(vx < 0, "rolling left")
+end)
+
 test("a sensor map reports what enters it and stops nothing", function()
   local world = jostle.newWorld({gravity = {0, 800}})
   local water = world:newTileMap({x = -32, y = 0, tile = 16, rows = {"####", "####"}, sensor = true})
