@@ -50,9 +50,12 @@ void checkTranslation(const char* function, Vec2 centre, Vec2 translation) {
 }
 
 /// The arguments of a moving box: a box, a translation it can make, a filter.
-void checkCast(const WorldState& w, const char* function, Vec2 centre, Vec2 half, Vec2 translation,
-               const QueryFilter& filter) {
+void checkCast(const WorldState& w, const char* function, Vec2 centre, Vec2 half, float radius,
+               Vec2 translation, const QueryFilter& filter) {
     checkBox(function, centre, half, false);
+    requireFinite(function, "radius", radius);
+    if (!(radius >= 0.0f) || radius > std::min(half.x, half.y))
+        fail(function, "radius must be in [0, min(half.x, half.y)]");
     checkTranslation(function, centre, translation);
     checkFilter(w, filter, function);
 }
@@ -263,12 +266,17 @@ std::vector<RayHit> rayCastAll(const World& world, Vec2 from, Vec2 to, const Que
 
 std::optional<BoxCastHit> boxCast(const World& world, Vec2 centre, Vec2 half, Vec2 translation,
                                   const QueryFilter& filter) {
+    return boxCast(world, centre, half, 0.0f, translation, filter);
+}
+
+std::optional<BoxCastHit> boxCast(const World& world, Vec2 centre, Vec2 half, float radius,
+                                  Vec2 translation, const QueryFilter& filter) {
     const WorldState& w = WorldAccess::state(world);
-    checkCast(w, "boxCast", centre, half, translation, filter);
+    checkCast(w, "boxCast", centre, half, radius, translation, filter);
     const Candidates candidates(w);
     FirstStop stop;
     firstStop(
-        w, candidates, centre, half, 0.0f, translation,
+        w, candidates, centre, half, radius, translation,
         [&](std::uint32_t slot) { return passes(w, slot, filter); }, stop);
     if (stop.met.empty())
         return std::nullopt;
@@ -276,10 +284,20 @@ std::optional<BoxCastHit> boxCast(const World& world, Vec2 centre, Vec2 half, Ve
     return BoxCastHit{w.idOf(first.slot), stop.centre, first.contact.normal, stop.time};
 }
 
+std::optional<BoxCastHit> circleCast(const World& world, Vec2 centre, float radius,
+                                     Vec2 translation, const QueryFilter& filter) {
+    return boxCast(world, centre, {radius, radius}, radius, translation, filter);
+}
+
 MoveResult moveAndSlide(const World& world, Vec2 centre, Vec2 half, Vec2 translation,
                         const QueryFilter& filter) {
+    return moveAndSlide(world, centre, half, 0.0f, translation, filter);
+}
+
+MoveResult moveAndSlide(const World& world, Vec2 centre, Vec2 half, float radius, Vec2 translation,
+                        const QueryFilter& filter) {
     const WorldState& w = WorldAccess::state(world);
-    checkCast(w, "moveAndSlide", centre, half, translation, filter);
+    checkCast(w, "moveAndSlide", centre, half, radius, translation, filter);
     const Candidates candidates(w);
     // Sensors never stop the box, whatever the filter says.
     auto stopsMovingBox = [&](std::uint32_t slot) {
@@ -294,7 +312,7 @@ MoveResult moveAndSlide(const World& world, Vec2 centre, Vec2 half, Vec2 transla
     // boxes a normal is along an axis the box is moving along: after two stops nothing
     // is left.
     for (int stops = 0; stops < kMaxSlides && (left.x != 0.0f || left.y != 0.0f); ++stops) {
-        firstStop(w, candidates, result.centre, half, 0.0f, left, stopsMovingBox, stop);
+        firstStop(w, candidates, result.centre, half, radius, left, stopsMovingBox, stop);
         if (stop.met.empty()) {
             result.centre += left;
             break;

@@ -557,6 +557,83 @@ Vec2 randomPoint(Numbers& numbers) {
     return {float(numbers.between(-30, 30)), float(numbers.between(-30, 30))};
 }
 
+// --- Rounded casts: circles and capsules moved through the world ------------------------
+
+/// The box (0, 0) ± 1, static.
+World worldWithUnitBox() {
+    World world;
+    world.createBody({.type = BodyType::Static, .hw = 1, .hh = 1});
+    return world;
+}
+
+TEST(RoundedCasts, ACircleCastLandsOnAFloorAtItsRadius) {
+    // A floor whose top is y = 0; a circle of radius 2 from y = -10 moving 20 down touches
+    // it with its centre at y = -2: 8 of the 20, fraction 0.4.
+    World world;
+    world.createBody({.type = BodyType::Static, .y = 5, .hw = 50, .hh = 5});
+    const std::optional<BoxCastHit> hit = circleCast(world, {0, -10}, 2, {0, 20});
+    ASSERT_TRUE(hit);
+    EXPECT_NEAR(hit->fraction, 0.4f, 1e-5f);
+    EXPECT_NEAR(hit->centre.y, -2.0f, 1e-5f);
+    EXPECT_EQ(hit->normal, (Vec2{0, -1}));
+}
+
+TEST(RoundedCasts, ACircleMeetsABoxsCornerAlongTheLineToIt) {
+    // Along the diagonal from (5, 5) to (1, 1), the circle of radius 1 touches the corner
+    // (1, 1) with its centre 1 from it: (1 + 1/√2) each way, after 5 - 1.7071 = 3.2929 of
+    // the 4 per axis.
+    World world = worldWithUnitBox();
+    const std::optional<BoxCastHit> hit = circleCast(world, {5, 5}, 1, {-4, -4});
+    ASSERT_TRUE(hit);
+    const float at = 1.0f + 1.0f / kRoot2;
+    EXPECT_NEAR(hit->fraction, (5.0f - at) / 4.0f, 1e-4f);
+    EXPECT_NEAR(hit->centre.x, at, 1e-4f);
+    EXPECT_NEAR(hit->normal.x, 1.0f / kRoot2, 1e-4f);
+    EXPECT_NEAR(hit->normal.y, 1.0f / kRoot2, 1e-4f);
+}
+
+TEST(RoundedCasts, ACircleGrazingABoxsCornerMeetsItOnItsCurve) {
+    // Moving along y = -1.8, 0.8 above the corner (-1, -1)'s height: a sharp box of half
+    // extent 1 meets the box's side at x = -2; the circle of radius 1 meets the corner when
+    // its centre is 1 from it, 0.6 before it along x (0.6² + 0.8² = 1), at x = -1.6, and
+    // the normal is (-0.6, -0.8).
+    World world = worldWithUnitBox();
+    const std::optional<BoxCastHit> box = boxCast(world, {-5, -1.8f}, {1, 1}, {10, 0});
+    ASSERT_TRUE(box);
+    EXPECT_NEAR(box->centre.x, -2.0f, 1e-5f);
+    const std::optional<BoxCastHit> circle = boxCast(world, {-5, -1.8f}, {1, 1}, 1, {10, 0});
+    ASSERT_TRUE(circle);
+    EXPECT_NEAR(circle->centre.x, -1.6f, 1e-3f);
+    EXPECT_NEAR(circle->fraction, 0.34f, 1e-4f);
+    EXPECT_NEAR(circle->normal.x, -0.6f, 1e-3f);
+    EXPECT_NEAR(circle->normal.y, -0.8f, 1e-3f);
+    // Moving along y = -2.05, its bottom 0.05 above the box's top (beyond the skin, 0.02):
+    // it passes.
+    EXPECT_FALSE(circleCast(world, {-5, -2.05f}, 1, {10, 0}));
+}
+
+TEST(RoundedCasts, ACapsuleMovedAndSlidOntoAFloorGoesOnAlongIt) {
+    // An upright capsule (half 1 × 3, radius 1) from y = -10 moving (10, 20): its bottom
+    // (centre + 3) meets the floor's top y = 0 after 7 of the 20 down, fraction 0.35, 3.5
+    // across; what is left, (6.5, 13), loses its part into the floor: it ends at (10, -3).
+    World world;
+    const BodyId floor = world.createBody({.type = BodyType::Static, .y = 5, .hw = 50, .hh = 5});
+    const MoveResult moved = moveAndSlide(world, {0, -10}, {1, 3}, 1, {10, 20});
+    EXPECT_NEAR(moved.centre.x, 10.0f, 1e-4f);
+    EXPECT_NEAR(moved.centre.y, -3.0f, 1e-4f);
+    ASSERT_EQ(moved.hits.size(), 1u);
+    EXPECT_EQ(moved.hits[0].body, floor);
+}
+
+TEST(RoundedCasts, ARadiusOutOfRangeIsRefused) {
+    World world = worldWithUnitBox();
+    EXPECT_THROW(boxCast(world, {5, 5}, {1, 2}, 1.5f, {1, 0}), Error);
+    EXPECT_THROW(boxCast(world, {5, 5}, {1, 2}, -1.0f, {1, 0}), Error);
+    EXPECT_THROW(boxCast(world, {5, 5}, {1, 2}, std::nanf(""), {1, 0}), Error);
+    EXPECT_THROW(circleCast(world, {5, 5}, 0.0f, {1, 0}), Error);
+    EXPECT_THROW(moveAndSlide(world, {5, 5}, {1, 2}, 2.0f, {1, 0}), Error);
+}
+
 TEST(ShapeQueries, RaysAgreeWithPointQueries) {
     Numbers numbers{7};
     int hits = 0;

@@ -177,12 +177,21 @@ struct BoxCastHit {
 /// - A one-way platform stops the box only on its blocking face, and only if the box
 ///   starts wholly on that side of it (within the skin), as in the physical model. So does
 ///   a segment, on the side it faces.
-/// - The moving box is a sharp box; the bodies are their shapes: a box meets a ramp on its
-///   slope, a circle where the curve is (the skin there is twice the slop of the smaller
-///   reach of the two along the normal).
+/// - The moving box is a sharp box (the overload with a radius rounds it); the bodies are
+///   their shapes: a box meets a ramp on its slope, a circle where the curve is (the skin
+///   there is twice the slop of the smaller reach of the two along the normal).
 /// - A zero translation hits nothing. Equal fractions: the body created first wins.
 std::optional<BoxCastHit> boxCast(const World& world, Vec2 centre, Vec2 half, Vec2 translation,
                                   const QueryFilter& filter = {});
+/// boxCast of the box rounded by `radius`, in [0, min(half.x, half.y)], as BodyDef::radius
+/// rounds a body: half.x == half.y == radius is a circle, half.x == radius < half.y an
+/// upright capsule. It meets the bodies with its curve (its normal there the curve's);
+/// the rest is boxCast's rules. jostle::Error for a radius out of range or NaN.
+std::optional<BoxCastHit> boxCast(const World& world, Vec2 centre, Vec2 half, float radius,
+                                  Vec2 translation, const QueryFilter& filter = {});
+/// boxCast of a circle (radius > 0).
+std::optional<BoxCastHit> circleCast(const World& world, Vec2 centre, float radius,
+                                     Vec2 translation, const QueryFilter& filter = {});
 
 /// A body met by moveAndSlide.
 struct MoveHit {
@@ -214,6 +223,10 @@ struct MoveResult {
 /// character is grounded. Sensors never stop the box; one-way platforms stop it only on
 /// their blocking face.
 MoveResult moveAndSlide(const World& world, Vec2 centre, Vec2 half, Vec2 translation,
+                        const QueryFilter& filter = {});
+/// moveAndSlide of the box rounded by `radius` (boxCast's rounded box): a circle or a
+/// capsule rolls over a crest and round a corner where a box would stop.
+MoveResult moveAndSlide(const World& world, Vec2 centre, Vec2 half, float radius, Vec2 translation,
                         const QueryFilter& filter = {});
 
 // --- Moving a body by hand, bump.lua's way -----------------------------------------------
