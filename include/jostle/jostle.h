@@ -678,6 +678,18 @@ bool jostle_box_cast(const jostle_world* world, jostle_vec2 centre, jostle_vec2 
                      jostle_vec2 translation, const jostle_query_filter* filter,
                      jostle_box_cast_hit* hit);
 
+/// jostle_box_cast of the box rounded by `radius`, in [0, min(half.x, half.y)]
+/// (jostle_body_def.radius's shapes: half.x == half.y == radius is a circle, half.x ==
+/// radius < half.y an upright capsule): it meets bodies with its curve.
+bool jostle_rounded_box_cast(const jostle_world* world, jostle_vec2 centre, jostle_vec2 half,
+                             float radius, jostle_vec2 translation,
+                             const jostle_query_filter* filter, jostle_box_cast_hit* hit);
+
+/// jostle_box_cast of a circle (radius > 0).
+bool jostle_circle_cast(const jostle_world* world, jostle_vec2 centre, float radius,
+                        jostle_vec2 translation, const jostle_query_filter* filter,
+                        jostle_box_cast_hit* hit);
+
 /// A body met by jostle_move_and_slide.
 typedef struct jostle_move_hit {
     jostle_body_id body;
@@ -694,6 +706,13 @@ typedef struct jostle_move_hit {
 int jostle_move_and_slide(const jostle_world* world, jostle_vec2 centre, jostle_vec2 half,
                           jostle_vec2 translation, const jostle_query_filter* filter,
                           jostle_vec2* new_centre, jostle_move_hit* hits, int capacity);
+
+/// jostle_move_and_slide of the box rounded by `radius` (jostle_rounded_box_cast's): a
+/// circle or a capsule rolls over a crest and round a corner where a box would stop.
+int jostle_rounded_move_and_slide(const jostle_world* world, jostle_vec2 centre, jostle_vec2 half,
+                                  float radius, jostle_vec2 translation,
+                                  const jostle_query_filter* filter, jostle_vec2* new_centre,
+                                  jostle_move_hit* hits, int capacity);
 
 // === Moving a body by hand, bump.lua's way (move in query.hpp) ============================
 //

@@ -23,6 +23,38 @@ int findBodies(const char* function, const jostle_world* world, jostle_body_id* 
     });
 }
 
+/// jostle_rounded_box_cast under the name of the function the caller called.
+bool roundedBoxCast(const char* function, const jostle_world* world, jostle_vec2 centre,
+                    jostle_vec2 half, float radius, jostle_vec2 translation,
+                    const jostle_query_filter* filter, jostle_box_cast_hit* hit) {
+    return guard(function, false, [&] {
+        const World& w = worldOf(world).world;
+        jostle_box_cast_hit& result = required(hit, "hit");
+        return answer(
+            boxCast(w, toCpp(centre), toCpp(half), radius, toCpp(translation), toCpp(filter)),
+            result);
+    });
+}
+
+/// jostle_rounded_move_and_slide under the name of the function the caller called.
+int roundedMoveAndSlide(const char* function, const jostle_world* world, jostle_vec2 centre,
+                        jostle_vec2 half, float radius, jostle_vec2 translation,
+                        const jostle_query_filter* filter, jostle_vec2* new_centre,
+                        jostle_move_hit* hits, int capacity) {
+    // On misuse the box stays where it was.
+    if (new_centre != nullptr)
+        *new_centre = centre;
+    return guard(function, 0, [&] {
+        const World& w = worldOf(world).world;
+        jostle_vec2& end = required(new_centre, "new_centre");
+        checkBuffer(hits, capacity);
+        const MoveResult moved =
+            moveAndSlide(w, toCpp(centre), toCpp(half), radius, toCpp(translation), toCpp(filter));
+        end = toC(moved.centre);
+        return copyOut(std::span<const MoveHit>(moved.hits), hits, capacity);
+    });
+}
+
 } // namespace
 
 extern "C" {
@@ -81,29 +113,35 @@ int jostle_ray_cast_all(const jostle_world* world, jostle_vec2 from, jostle_vec2
 bool jostle_box_cast(const jostle_world* world, jostle_vec2 centre, jostle_vec2 half,
                      jostle_vec2 translation, const jostle_query_filter* filter,
                      jostle_box_cast_hit* hit) {
-    return guard(__func__, false, [&] {
-        const World& w = worldOf(world).world;
-        jostle_box_cast_hit& result = required(hit, "hit");
-        return answer(boxCast(w, toCpp(centre), toCpp(half), toCpp(translation), toCpp(filter)),
-                      result);
-    });
+    return roundedBoxCast(__func__, world, centre, half, 0.0f, translation, filter, hit);
+}
+
+bool jostle_rounded_box_cast(const jostle_world* world, jostle_vec2 centre, jostle_vec2 half,
+                             float radius, jostle_vec2 translation,
+                             const jostle_query_filter* filter, jostle_box_cast_hit* hit) {
+    return roundedBoxCast(__func__, world, centre, half, radius, translation, filter, hit);
+}
+
+bool jostle_circle_cast(const jostle_world* world, jostle_vec2 centre, float radius,
+                        jostle_vec2 translation, const jostle_query_filter* filter,
+                        jostle_box_cast_hit* hit) {
+    return roundedBoxCast(__func__, world, centre, {radius, radius}, radius, translation, filter,
+                          hit);
 }
 
 int jostle_move_and_slide(const jostle_world* world, jostle_vec2 centre, jostle_vec2 half,
                           jostle_vec2 translation, const jostle_query_filter* filter,
                           jostle_vec2* new_centre, jostle_move_hit* hits, int capacity) {
-    // On misuse the box stays where it was.
-    if (new_centre != nullptr)
-        *new_centre = centre;
-    return guard(__func__, 0, [&] {
-        const World& w = worldOf(world).world;
-        jostle_vec2& end = required(new_centre, "new_centre");
-        checkBuffer(hits, capacity);
-        const MoveResult moved =
-            moveAndSlide(w, toCpp(centre), toCpp(half), toCpp(translation), toCpp(filter));
-        end = toC(moved.centre);
-        return copyOut(std::span<const MoveHit>(moved.hits), hits, capacity);
-    });
+    return roundedMoveAndSlide(__func__, world, centre, half, 0.0f, translation, filter, new_centre,
+                               hits, capacity);
+}
+
+int jostle_rounded_move_and_slide(const jostle_world* world, jostle_vec2 centre, jostle_vec2 half,
+                                  float radius, jostle_vec2 translation,
+                                  const jostle_query_filter* filter, jostle_vec2* new_centre,
+                                  jostle_move_hit* hits, int capacity) {
+    return roundedMoveAndSlide(__func__, world, centre, half, radius, translation, filter,
+                               new_centre, hits, capacity);
 }
 
 } // extern "C"

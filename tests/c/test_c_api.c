@@ -426,6 +426,77 @@ static void test_character_def(void) {
     CHECK_NO_ERROR();
 }
 
+static void test_footing(void) {
+    jostle_world* world = make_world(kG);
+    jostle_body_def def = jostle_default_body_def();
+    CHECK(def.floor_angle == 60 && def.snap_down == 0, "floor angle 60 and no snapping by default");
+    def.hw = 6;
+    def.hh = 8;
+    def.floor_angle = 45;
+    def.snap_down = 4;
+    jostle_body_id hero = jostle_body_create(world, &def);
+    CHECK(jostle_body_get_floor_angle(world, hero) == 45 &&
+              jostle_body_get_snap_down(world, hero) == 4,
+          "floor angle and snap down as given");
+    jostle_body_def back = jostle_body_get_def(world, hero);
+    CHECK(back.floor_angle == 45 && back.snap_down == 4, "in its def");
+    CHECK(jostle_body_set_floor_angle(world, hero, 0) && jostle_body_set_snap_down(world, hero, 0),
+          "set");
+    back = jostle_body_get_def(world, hero);
+    CHECK(back.floor_angle == 0 && back.snap_down == 0, "the def follows");
+    CHECK(!jostle_body_set_floor_angle(world, hero, 90), "floor angle 90");
+    CHECK_ERROR("jostle_body_set_floor_angle", "[0, 90)");
+    CHECK(!jostle_body_set_snap_down(world, hero, -1), "snap down -1");
+    CHECK_ERROR("jostle_body_set_snap_down", ">= 0");
+    def.floor_angle = NAN;
+    CHECK(jostle_body_id_is_null(jostle_body_create(world, &def)), "NaN floor angle");
+    CHECK_ERROR("jostle_body_create", "BodyDef.floorAngle");
+    CHECK(jostle_world_destroy(world), "destroy");
+    CHECK_NO_ERROR();
+}
+
+static void test_rounded_casts(void) {
+    // The box (0, 0) +- 1. Along y = -1.8 from x = -5, a box of half extent 1 meets its side
+    // at x = -2; a circle of radius 1 meets its corner (-1, -1) 0.6 before it (0.6² + 0.8²
+    // = 1), at x = -1.6, with the normal (-0.6, -0.8).
+    jostle_world* world = make_world(0);
+    jostle_body_def def = jostle_default_body_def();
+    def.type = JOSTLE_BODY_STATIC;
+    def.hw = def.hh = 1;
+    const jostle_body_id box = jostle_body_create(world, &def);
+    jostle_box_cast_hit hit;
+    const jostle_vec2 from = {-5, -1.8f}, unit = {1, 1}, across = {10, 0};
+    CHECK(jostle_box_cast(world, from, unit, across, NULL, &hit) && fabsf(hit.centre.x + 2) < 1e-5f,
+          "a box meets the side");
+    CHECK(jostle_circle_cast(world, from, 1, across, NULL, &hit) &&
+              jostle_body_id_equal(hit.body, box) && fabsf(hit.centre.x + 1.6f) < 1e-3f &&
+              fabsf(hit.normal.x + 0.6f) < 1e-3f && fabsf(hit.normal.y + 0.8f) < 1e-3f,
+          "a circle meets the corner on its curve");
+    CHECK(jostle_rounded_box_cast(world, from, unit, 1, across, NULL, &hit) &&
+              fabsf(hit.centre.x + 1.6f) < 1e-3f,
+          "a rounded box with hw = hh = radius is that circle");
+    CHECK(!jostle_rounded_box_cast(world, from, unit, 2, across, NULL, &hit), "radius > hw");
+    CHECK_ERROR("jostle_rounded_box_cast", "radius");
+    // An upright capsule (1 x 3, radius 1) from (20, -10) moved (10, 20) onto a floor whose
+    // top is y = 0: its bottom meets it after 7 of the 20 down (fraction 0.35, 3.5 across);
+    // what is left, (6.5, 13), loses its part into the floor: it ends at (30, -3).
+    def.x = 25;
+    def.y = 5;
+    def.hw = 20;
+    def.hh = 5;
+    const jostle_body_id floor = jostle_body_create(world, &def);
+    jostle_vec2 end;
+    jostle_move_hit met[2];
+    const jostle_vec2 capsule = {1, 3}, start = {20, -10}, motion = {10, 20};
+    CHECK(jostle_rounded_move_and_slide(world, start, capsule, 1, motion, NULL, &end, met, 2) ==
+                  1 &&
+              jostle_body_id_equal(met[0].body, floor) && fabsf(end.x - 30) < 1e-4f &&
+              fabsf(end.y + 3) < 1e-4f,
+          "a capsule slid onto a floor goes on along it");
+    CHECK(jostle_world_destroy(world), "destroy");
+    CHECK_NO_ERROR();
+}
+
 // --- Shapes: rounded bodies, ramps and segments ------------------------------------------
 
 /// A body from `def` with the shape's fields set; null on refusal.
@@ -1850,6 +1921,8 @@ int main(void) {
     test_walking();
     test_ground_of_a_lift();
     test_wall_friction();
+    test_footing();
+    test_rounded_casts();
     test_forces();
     test_contacts_now();
     test_contact_point();

@@ -1,9 +1,9 @@
 // Queries: world:queryPoint, queryBox, queryRect, rayCast, rayCastAll, boxCast,
-// moveAndSlide. Each takes an optional filter table last:
-// {mask = , category = , includeSensors = , ignore = body}.
-// And world:move, bump.lua's move, whose filter is a function called from inside the
-// core's sweep, the way the pre-solve callback is (events.cpp): through a protected
-// runner, its error thrown through the core as CallbackFailed and raised once out of it.
+// roundedBoxCast, circleCast, moveAndSlide, roundedMoveAndSlide. Each takes an optional filter
+// table last: {mask = , category = , includeSensors = , ignore = body}. And world:move, bump.lua's
+// move, whose filter is a function called from inside the core's sweep, the way the pre-solve
+// callback is (events.cpp): through a protected runner, its error thrown through the core as
+// CallbackFailed and raised once out of it.
 #include "binding.hpp"
 
 #include <cstring>
@@ -103,20 +103,39 @@ Segment readSegment(lua_State* L, const WorldData& world, const char* where) {
     return {from, to, readFilter(L, 6, world, where)};
 }
 
-/// The arguments of boxCast and moveAndSlide: x, y, hw, hh, dx, dy [, filter].
+/// The arguments of a sweep: boxCast and moveAndSlide's x, y, hw, hh, dx, dy [, filter];
+/// the rounded ones' x, y, hw, hh, r, dx, dy [, filter]; circleCast's x, y, r, dx, dy
+/// [, filter].
 struct Sweep {
     Vec2 centre;
     Vec2 half;
+    float radius = 0.0f;
     Vec2 translation;
     QueryFilter filter;
 };
 
-Sweep readSweep(lua_State* L, const WorldData& world, const char* where) {
-    const Vec2 centre = checkVec2(L, 2, where, "x", "y");
-    const Vec2 half = checkVec2(L, 4, where, "hw", "hh");
-    requireHalf(L, where, half, true);
-    const Vec2 translation = checkVec2(L, 6, where, "dx", "dy");
-    return {centre, half, translation, readFilter(L, 8, world, where)};
+enum class SweptShape { Box, Rounded, Circle };
+
+Sweep readSweep(lua_State* L, const WorldData& world, const char* where, SweptShape shape) {
+    Sweep sweep;
+    sweep.centre = checkVec2(L, 2, where, "x", "y");
+    int next = 4;
+    if (shape != SweptShape::Circle) {
+        sweep.half = checkVec2(L, next, where, "hw", "hh");
+        requireHalf(L, where, sweep.half, true);
+        next += 2;
+    }
+    if (shape != SweptShape::Box) {
+        sweep.radius = checkNumber(L, next++, where, "r");
+        if (shape == SweptShape::Circle) {
+            if (!(sweep.radius > 0.0f))
+                raise(L, where, "r: must be > 0");
+            sweep.half = {sweep.radius, sweep.radius};
+        }
+    }
+    sweep.translation = checkVec2(L, next, where, "dx", "dy");
+    sweep.filter = readFilter(L, next + 2, world, where);
+    return sweep;
 }
 
 /// Returns body, x, y, nx, ny, fraction for the hit that `cast` finds (an optional of
@@ -180,17 +199,26 @@ int worldRayCastAll(lua_State* L) {
 }
 
 /// body, x, y, nx, ny, fraction or nil; x, y is where the box's centre stops.
-int worldBoxCast(lua_State* L) {
-    const char* where = "World:boxCast";
+int castSwept(lua_State* L, const char* where, SweptShape shape) {
     WorldHandle& handle = checkWorldHandle(L, 1, where);
-    const Sweep sweep = readSweep(L, *handle.data, where);
+    const Sweep sweep = readSweep(L, *handle.data, where, shape);
     return pushFirstHit(
         L, handle, where,
         [&] {
-            return boxCast(handle.data->world, sweep.centre, sweep.half, sweep.translation,
-                           sweep.filter);
+            return boxCast(handle.data->world, sweep.centre, sweep.half, sweep.radius,
+                           sweep.translation, sweep.filter);
         },
         [](const BoxCastHit& hit) { return hit.centre; });
+}
+
+int worldBoxCast(lua_State* L) {
+    return castSwept(L, "World:boxCast", SweptShape::Box);
+}
+int worldRoundedBoxCast(lua_State* L) {
+    return castSwept(L, "World:roundedBoxCast", SweptShape::Rounded);
+}
+int worldCircleCast(lua_State* L) {
+    return castSwept(L, "World:circleCast", SweptShape::Circle);
 }
 
 /// Pushes x, y (`end`) and the array of what a move met (pushArray's), for moveAndSlide
@@ -207,15 +235,14 @@ int pushMoved(lua_State* L, WorldHandle& handle, Vec2 end, Elements elements, Pu
 }
 
 /// x, y, hits: where the box ends up, and an array of {body = , nx = , ny = }.
-int worldMoveAndSlide(lua_State* L) {
-    const char* where = "World:moveAndSlide";
+int moveAndSlideSwept(lua_State* L, const char* where, SweptShape shape) {
     WorldHandle& handle = checkWorldHandle(L, 1, where);
-    const Sweep sweep = readSweep(L, *handle.data, where);
+    const Sweep sweep = readSweep(L, *handle.data, where, shape);
     WorldData& world = *handle.data;
     guard(L, where, [&] {
         // Into the kept result, so that its hits' memory serves call after call.
-        MoveResult result =
-            moveAndSlide(world.world, sweep.centre, sweep.half, sweep.translation, sweep.filter);
+        MoveResult result = moveAndSlide(world.world, sweep.centre, sweep.half, sweep.radius,
+                                         sweep.translation, sweep.filter);
         world.moved.centre = result.centre;
         world.moved.hits.swap(result.hits);
     });
@@ -227,6 +254,13 @@ int worldMoveAndSlide(lua_State* L) {
             pushBodyRecord(L, env, &handle, "body", hit.body,
                            {{"nx", hit.normal.x}, {"ny", hit.normal.y}});
         });
+}
+
+int worldMoveAndSlide(lua_State* L) {
+    return moveAndSlideSwept(L, "World:moveAndSlide", SweptShape::Box);
+}
+int worldRoundedMoveAndSlide(lua_State* L) {
+    return moveAndSlideSwept(L, "World:roundedMoveAndSlide", SweptShape::Rounded);
 }
 
 // --- world:move ---------------------------------------------------------------------------
@@ -358,7 +392,10 @@ constexpr luaL_Reg kQueryMethods[] = {
     {"rayCast", worldRayCast},
     {"rayCastAll", worldRayCastAll},
     {"boxCast", worldBoxCast},
+    {"roundedBoxCast", worldRoundedBoxCast},
+    {"circleCast", worldCircleCast},
     {"moveAndSlide", worldMoveAndSlide},
+    {"roundedMoveAndSlide", worldRoundedMoveAndSlide},
     {"move", worldMove},
     {nullptr, nullptr},
 };
