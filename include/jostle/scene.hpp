@@ -52,8 +52,10 @@ Scene loadScene(const std::string& path);
 std::vector<BodyId> addBodies(World& world, const Scene& scene);
 
 /// Creates the scene's tile maps in `world`, in file order; returns their handles.
-/// Checks every map before creating any, so that a bad one (in a Scene built in code)
-/// throws jostle::Error and leaves the world as it was.
+/// Checks every map before creating any, so that a bad one (in a Scene built in code), or
+/// a ramp tile in a world of the classic model ("addTileMaps: tileMaps[0].rows[2][5]: the
+/// classic model has sharp boxes only (solver \"classic\")"), throws jostle::Error and
+/// leaves the world as it was.
 std::vector<TileMapId> addTileMaps(World& world, const Scene& scene);
 
 } // namespace jostle

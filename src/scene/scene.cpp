@@ -10,6 +10,7 @@
 
 #include "body_properties.hpp"
 #include "json.hpp"
+#include "tile_chars.hpp"
 
 #include <algorithm>
 #include <cerrno>
@@ -133,10 +134,13 @@ std::vector<SceneBody> readBodies(const Json& value, const std::string& place) {
     return bodies;
 }
 
+/// Why a world in the classic model refuses a shape: it has sharp boxes only (createBody,
+/// createTileMap, setTile and setSolver refuse the others there).
+constexpr const char* kSharpBoxesOnly =
+    R"(the classic model has sharp boxes only (solver "classic"))";
+
 /// The first body of `bodies` that a world in the model `solver` refuses, by its place
-/// ("bodies[2].radius") and why: the classic model has sharp boxes only (createBody and
-/// setSolver refuse the others there). Each body has passed checkBodyDef, so a segment has
-/// a slope.
+/// ("bodies[2].radius"). Each body has passed checkBodyDef, so a segment has a slope.
 std::optional<FieldError> modelProblem(Solver solver, const std::vector<SceneBody>& bodies) {
     if (solver != Solver::Classic)
         return std::nullopt;
@@ -144,8 +148,24 @@ std::optional<FieldError> modelProblem(Solver solver, const std::vector<SceneBod
         const BodyDef& def = bodies[i].def;
         const char* shape = def.slope != Vec2{} ? "slope" : def.radius > 0.0f ? "radius" : nullptr;
         if (shape)
-            return FieldError{field(element("bodies", i), shape),
-                              R"(the classic model has sharp boxes only (solver "classic"))"};
+            return FieldError{field(element("bodies", i), shape), kSharpBoxesOnly};
+    }
+    return std::nullopt;
+}
+
+/// The first ramp tile of `maps` that a world in the model `solver` refuses, by its place:
+/// map i is at placeOf(i) ("tilemaps[1]"), its tile at "tilemaps[1].rows[2][5]".
+std::optional<FieldError> modelProblem(Solver solver, const std::vector<TileMapDef>& maps,
+                                       const std::function<std::string(std::size_t)>& placeOf) {
+    if (solver != Solver::Classic)
+        return std::nullopt;
+    for (std::size_t i = 0; i < maps.size(); ++i) {
+        const std::vector<std::string>& rows = maps[i].rows;
+        for (std::size_t row = 0; row < rows.size(); ++row)
+            for (std::size_t column = 0; column < rows[row].size(); ++column)
+                if (rampTile(rows[row][column]))
+                    return FieldError{element(element(field(placeOf(i), "rows"), row), column),
+                                      kSharpBoxesOnly};
     }
     return std::nullopt;
 }
@@ -267,8 +287,20 @@ Scene readScene(const Json& root) {
         fail("", R"(missing field "bodies")");
     if (auto problem = checkWorldDef(scene.world))
         fail(problem->field, problem->problem);
-    if (auto problem = modelProblem(scene.world.solver, scene.bodies))
-        fail(problem->field, problem->problem);
+    // Only now is the model known ("solver" may come last); its problems are looked for
+    // in file order, bodies and tile maps alike.
+    for (const auto& entry : root.get_ref<const Json::object_t&>()) {
+        const std::string& name = entry.first;
+        std::optional<FieldError> problem;
+        if (name == "bodies")
+            problem = modelProblem(scene.world.solver, scene.bodies);
+        else if (name == "tilemap" || name == "tilemaps")
+            problem = modelProblem(scene.world.solver, scene.tileMaps, [&](std::size_t i) {
+                return name == "tilemap" ? name : element(name, i);
+            });
+        if (problem)
+            fail(problem->field, problem->problem);
+    }
     return scene;
 }
 
@@ -338,6 +370,9 @@ std::vector<TileMapId> addTileMaps(World& world, const Scene& scene) {
         if (auto problem = checkTileMapDef(scene.tileMaps[i]))
             throw Error("addTileMaps: " + element("tileMaps", i) + "." + problem->field + ": " +
                         problem->problem);
+    if (auto problem = modelProblem(world.solver(), scene.tileMaps,
+                                    [](std::size_t i) { return element("tileMaps", i); }))
+        throw Error("addTileMaps: " + problem->field + ": " + problem->problem);
     std::vector<TileMapId> ids;
     ids.reserve(scene.tileMaps.size());
     for (const TileMapDef& map : scene.tileMaps)

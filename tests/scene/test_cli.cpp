@@ -345,13 +345,37 @@ TEST_F(Cli, TheClassicModelRefusesShapes) {
     EXPECT_THAT(render.err, HasSubstr(refused));
 }
 
+// Ramp tiles too: a classic file with one, or a file with one run with --solver classic.
+TEST_F(Cli, TheClassicModelRefusesRampTiles) {
+    const std::string refused = R"(the classic model has sharp boxes only (solver "classic"))";
+    const std::string classic = write("classic.json", R"({"solver": "classic", "bodies": [],
+        "tilemap": {"tile": 16, "rows": ["....", "..F.", "####"]}})");
+    const Result r = run("run " + quote(classic) + " --steps 1 --trace -");
+    EXPECT_EQ(r.status, 2);
+    EXPECT_EQ(r.err, "jostle: error: " + classic + ": tilemap.rows[1][2]: " + refused + "\n");
+    EXPECT_EQ(r.out, "");
+
+    const std::string physical = write("physical.json", R"({"bodies": [],
+        "tilemaps": [{"tile": 16, "rows": ["##"]}, {"tile": 16, "rows": ["..", "\\#"]}]})");
+    EXPECT_EQ(run("run " + quote(physical) + " --steps 1").status, 0);
+    const Result asClassic = run("run " + quote(physical) + " --steps 1 --solver classic");
+    EXPECT_EQ(asClassic.status, 2);
+    EXPECT_EQ(asClassic.err, "jostle: error: " + physical +
+                                 ": addTileMaps: tileMaps[1].rows[1][0]: " + refused + "\n");
+    EXPECT_EQ(asClassic.out, "");
+    const Result render = run("render " + quote(physical) + " --out " + quote(path("ramp.png")) +
+                              " --solver classic");
+    EXPECT_EQ(render.status, 2);
+    EXPECT_THAT(render.err, HasSubstr("tileMaps[1].rows[1][0]: " + refused));
+}
+
 TEST_F(Cli, BadTileMapNamesFileAndPlace) {
     const std::string scene = write("bad.json", R"({"bodies": [],
         "tilemap": {"tile": 16, "rows": ["....", "####", "##.#.x"]}})");
     const Result r = run("run " + quote(scene) + " --steps 1");
     EXPECT_EQ(r.status, 2);
-    EXPECT_EQ(r.err,
-              "jostle: error: " + scene + ": tilemap.rows[2][5]: expected '#', '.' or a ramp, got 'x'\n");
+    EXPECT_EQ(r.err, "jostle: error: " + scene +
+                         ": tilemap.rows[2][5]: expected '#', '.' or a ramp, got 'x'\n");
     EXPECT_EQ(r.out, "");
 }
 

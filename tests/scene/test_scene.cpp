@@ -511,6 +511,33 @@ TEST(SceneErrors, TheClassicModelRefusesShapes) {
               "");
 }
 
+// Ramp tiles are ramps too: a map that holds one is refused in a file that asks for the
+// classic model, at its first ramp reading the rows top first, left to right.
+TEST(SceneErrors, TheClassicModelRefusesRampTiles) {
+    const std::string refused = R"(: the classic model has sharp boxes only (solver "classic"))";
+    // Row 0 is all empty, row 1 has '#' only; row 2's first ramp is its sixth byte.
+    EXPECT_EQ(errorOf(R"({"solver": "classic", "bodies": [],
+                          "tilemap": {"tile": 16, "rows": ["......", "#....#", "#####/"]}})"),
+              "tilemap.rows[2][5]" + refused);
+    // The solver after the maps; the first map is boxes only.
+    EXPECT_EQ(errorOf(R"({"bodies": [], "tilemaps": [{"tile": 1, "rows": ["#"]},
+                                                      {"tile": 1, "rows": ["#.", "rR"]}],
+                          "solver": "classic"})"),
+              "tilemaps[1].rows[1][0]" + refused);
+    // A ramp tile and a rounded body: the one the file holds first is reported.
+    const std::string map = R"("tilemap": {"tile": 1, "rows": ["7"]})";
+    const std::string ball = R"("bodies": [{"hw": 1, "hh": 1, "radius": 1}])";
+    EXPECT_EQ(errorOf(R"({"solver": "classic", )" + map + ", " + ball + "}"),
+              "tilemap.rows[0][0]" + refused);
+    EXPECT_EQ(errorOf(R"({"solver": "classic", )" + ball + ", " + map + "}"),
+              "bodies[0].radius" + refused);
+    // Boxes alone are the classic model's; ramp tiles are the physical model's.
+    EXPECT_EQ(errorOf(R"({"solver": "classic", "bodies": [],
+                          "tilemap": {"tile": 1, "rows": ["#.#"]}})"),
+              "");
+    EXPECT_EQ(errorOf(R"({"bodies": [], "tilemap": {"tile": 1, "rows": ["/\\7FrRLlcCDd"]}})"), "");
+}
+
 TEST(SceneErrors, Ids) {
     const std::string body = R"({"hw": 1, "hh": 1, "id": )";
     EXPECT_EQ(errorOf(withBodies(body + R"("floor"}, )" + body + R"("crate"}, )" + kBox + ", " +
@@ -841,6 +868,37 @@ TEST(AddTileMaps, ABadMapLeavesTheWorldUntouched) {
                   "addTileMaps: tileMaps[1].rows[1][0]: expected '#', '.' or a ramp, got 'x'");
     }
     EXPECT_EQ(world.bodyCount(), 0u);
+}
+
+TEST(AddTileMaps, TheClassicModelRefusesRampsBeforeCreatingAny) {
+    // A Scene built in code, or a file's scene run in the classic model by
+    // `jostle run --solver classic`: the world's model decides. The first map, boxes
+    // only, would be accepted alone; it is not created either.
+    Scene scene;
+    TileMapDef boxes;
+    boxes.tile = 1;
+    boxes.rows = {"##"};
+    TileMapDef ramps = boxes;
+    ramps.rows = {"#/", "##"};
+    scene.tileMaps = {boxes, ramps};
+    World classic(WorldDef{.solver = Solver::Classic});
+    try {
+        addTileMaps(classic, scene);
+        FAIL() << "no jostle::Error";
+    } catch (const Error& error) {
+        EXPECT_EQ(
+            std::string(error.what()),
+            R"(addTileMaps: tileMaps[1].rows[0][1]: the classic model has sharp boxes only (solver "classic"))");
+    }
+    EXPECT_EQ(classic.bodyCount(), 0u);
+
+    // The physical model takes them: "##" is one box; "#/" over "##" is the box of row 0's
+    // '#', the box of row 1, and the ramp.
+    World physical;
+    const std::vector<TileMapId> maps = addTileMaps(physical, scene);
+    ASSERT_EQ(maps.size(), 2u);
+    EXPECT_EQ(physical.bodyCount(), 4u);
+    EXPECT_EQ(tileOf(physical, maps[1], 1, 0), '/');
 }
 
 TEST(AddTileMaps, ABoxLandsOnATileFloor) {
