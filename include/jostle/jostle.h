@@ -602,11 +602,14 @@ bool jostle_world_set_pre_solve(jostle_world* world, jostle_pre_solve_fn callbac
 // === Queries (docs/queries.md; query.hpp is the reference of the rules) ===================
 //
 // Queries look at every body where it is now, change nothing, and filter bodies as
-// collisions do. Functions that find several bodies copy them into the caller's buffer
-// out[0 .. capacity) and return how many they found, which may be more than capacity:
-// the first `capacity` of them are in out, in the same order as a bigger buffer would
-// hold them. Grow the buffer and call again to get them all. out may be NULL when
-// capacity is 0; capacity < 0 is misuse. On misuse they return 0.
+// collisions do. They see each body's true shape (radius, slope, segment): a ray meets a
+// circle at the circle, a ramp on its slope; the box a cast or a move carries is a sharp
+// box unless given a radius (jostle_rounded_box_cast, jostle_circle_cast,
+// jostle_rounded_move_and_slide). Functions that find several bodies copy them into the
+// caller's buffer out[0 .. capacity) and return how many they found, which may be more
+// than capacity: the first `capacity` of them are in out, in the same order as a bigger
+// buffer would hold them. Grow the buffer and call again to get them all. out may be NULL
+// when capacity is 0; capacity < 0 is misuse. On misuse they return 0.
 //
 // Every query takes a filter; NULL means jostle_default_query_filter().
 
@@ -627,12 +630,16 @@ typedef struct jostle_query_filter {
 /// Every body except sensors.
 jostle_query_filter jostle_default_query_filter(void);
 
-/// The bodies whose box contains `point` (edges included), in creation order.
+/// The bodies that contain `point`, in creation order. A point on an edge is on the body
+/// (a click on the seam between two tiles picks both). A body is its shape: a point in a
+/// circle's box but outside the circle, or in the half of a ramp's box cut away, is not in
+/// it; a segment, a line, holds the points on it (within float rounding).
 int jostle_query_point(const jostle_world* world, jostle_vec2 point,
                        const jostle_query_filter* filter, jostle_body_id* out, int capacity);
 
 /// The bodies that share some area with the box of centre `centre` and half extents
-/// `half` (each >= 0), in creation order; touching edge to edge is not overlapping.
+/// `half` (each >= 0), in creation order; touching edge to edge is not overlapping. A body
+/// is its shape (a ramp's slope, a circle's curve); a segment overlaps the boxes it crosses.
 int jostle_query_box(const jostle_world* world, jostle_vec2 centre, jostle_vec2 half,
                      const jostle_query_filter* filter, jostle_body_id* out, int capacity);
 

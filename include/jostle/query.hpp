@@ -15,7 +15,8 @@
 // asleep. They change nothing in the world, and they filter bodies as collisions do
 // (QueryFilter). They see each body's true shape (BodyDef::radius, slope, segment): a ray
 // meets a circle at the circle, a ramp on its slope; the box a cast or a move carries is a
-// box. docs/queries.md is the guide; this header is the reference.
+// sharp box unless given a radius (the rounded boxCast and moveAndSlide, circleCast).
+// docs/queries.md is the guide; this header is the reference.
 //
 // Results come in a fixed order, the same run after run: bodies in creation order, hits
 // by distance along the query and, at equal distance, in creation order.
