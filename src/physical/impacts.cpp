@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace jostle {
 
@@ -12,16 +13,12 @@ namespace {
 
 /// Sweeps over the contacts, at most: a row of touching boxes passes a blow one box a
 /// sweep whichever way the contacts are ordered.
-constexpr int kMaxSweeps = 32;
+constexpr int kMaxSweeps = 8;
 
 /// Meeting slower than this fraction of the contact's slop per second is not meeting:
 /// float noise in the velocities of a resting pile.
-constexpr float kStillPerSlop = 0.5f;
+constexpr float kStillPerSlop = 5.0f;
 
-Vec2 gravityOn(const StepContext& step, std::uint32_t solverBody) {
-    const Body& body = step.world.slots[step.bodies[solverBody].slot];
-    return body.isDynamic() ? step.world.def.gravity * body.gravityScale : Vec2{};
-}
 
 void applyImpulse(StepContext& step, const Contact& c, Vec2 direction, float impulse) {
     SolverBody& a = step.bodies[c.ia];
@@ -52,8 +49,8 @@ bool collide(StepContext& step, Contact& c, float threshold, bool& shifted) {
     const Vec2 n = c.normal();
     const float vn = dot(step.velocityOf(c.ia) - step.velocityOf(c.ib), n);
     // What this step's gravity adds to their approach is the contacts' to hold, not a blow.
-    const float fromGravity =
-        std::min(0.0f, dot(gravityOn(step, c.ia) - gravityOn(step, c.ib), n)) * step.dt;
+    const std::vector<Vec2>& gravity = step.scratch.impacts.gravityInStep;
+    const float fromGravity = std::min(0.0f, dot(gravity[c.ia] - gravity[c.ib], n));
     const float approach = fromGravity - vn;
     if (!(approach > kStillPerSlop * c.slop))
         return false;
@@ -95,14 +92,57 @@ bool collide(StepContext& step, Contact& c, float threshold, bool& shifted) {
 } // namespace
 
 void resolveImpacts(StepContext& step) {
+    ImpactsScratch& s = step.scratch.impacts;
+    const std::size_t bodyCount = step.bodies.size();
+    s.gravityInStep.resize(bodyCount);
+    for (std::size_t k = 0; k < bodyCount; ++k) {
+        const Body& body = step.world.slots[step.bodies[k].slot];
+        s.gravityInStep[k] =
+            body.isDynamic() ? step.world.def.gravity * (body.gravityScale * step.dt) : Vec2{};
+    }
+    s.changedInSweep.assign(bodyCount, 0);
     const float threshold = step.restitutionThreshold();
     bool shifted = false;
-    for (int sweep = 0; sweep < kMaxSweeps; ++sweep) {
-        bool met = false;
-        for (Contact& c : step.contacts)
-            met = collide(step, c, threshold, shifted) || met;
-        if (!met)
-            break;
+    // Notes the bodies of a contact that collided in `sweep`, once each.
+    auto noteChanged = [&](const Contact& c, int sweep) {
+        for (std::uint32_t body : {c.ia, c.ib})
+            if (s.changedInSweep[body] != sweep) {
+                s.changedInSweep[body] = sweep;
+                s.next.push_back(body);
+            }
+    };
+    // The first sweep looks at every contact.
+    s.next.clear();
+    for (Contact& c : step.contacts)
+        if (collide(step, c, threshold, shifted))
+            noteChanged(c, 1);
+    if (!s.next.empty()) {
+        // Each later one at the contacts of the bodies the one before changed, in order.
+        s.byBody.reset(bodyCount);
+        for (const Contact& c : step.contacts) {
+            s.byBody.count(c.ia);
+            s.byBody.count(c.ib);
+        }
+        s.contactsOf.resize(s.byBody.endCounting());
+        for (std::uint32_t k = 0; k < step.contacts.size(); ++k) {
+            s.contactsOf[s.byBody.place(step.contacts[k].ia)] = k;
+            s.contactsOf[s.byBody.place(step.contacts[k].ib)] = k;
+        }
+        s.byBody.endPlacing();
+    }
+    for (int sweep = 2; sweep <= kMaxSweeps && !s.next.empty(); ++sweep) {
+        s.changed.swap(s.next);
+        s.next.clear();
+        s.candidates.clear();
+        for (std::uint32_t body : s.changed)
+            for (std::uint32_t k = s.byBody.begin(body); k < s.byBody.end(body); ++k)
+                s.candidates.push_back(s.contactsOf[k]);
+        std::sort(s.candidates.begin(), s.candidates.end());
+        s.candidates.erase(std::unique(s.candidates.begin(), s.candidates.end()),
+                           s.candidates.end());
+        for (std::uint32_t k : s.candidates)
+            if (collide(step, step.contacts[k], threshold, shifted))
+                noteChanged(step.contacts[k], sweep);
     }
     // The gaps the contacts may close are those between the bodies as they are now.
     if (shifted)
