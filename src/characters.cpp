@@ -72,19 +72,16 @@ Vec2 walkOver(const Body& a, const Body& b, Vec2 normal, Vec2 down) {
     return {};
 }
 
-float walkAlongSlope(const Body& a, const Body& b, Vec2 normal, Vec2 down, float normalSpeed) {
+float walkAlongSlope(const Body& a, const Body& b, Vec2 normal, Vec2 down) {
     const Vec2 right = rightOf(down);
     const Vec2 tangent{-normal.y, normal.x};
     const float across = dot(tangent, right);
     if (across == 0.0f || std::abs(dot(normal, down)) >= 1.0f)
         return std::numeric_limits<float>::quiet_NaN();
-    // Along the tangent, what is left of the walk across gravity once the normal speed
-    // has taken its part.
-    const float closing = normalSpeed * dot(normal, right);
     if (isCharacterFloor(a, normal, down))
-        return (a.walkSpeed - closing) / across;
+        return a.walkSpeed / across;
     if (isCharacterFloor(b, -normal, down))
-        return (-b.walkSpeed - closing) / across;
+        return -b.walkSpeed / across;
     return std::numeric_limits<float>::quiet_NaN();
 }
 

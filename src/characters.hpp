@@ -26,9 +26,8 @@ Vec2 walkOver(const Body& a, const Body& b, Vec2 normal, Vec2 down);
 
 /// On a sloped floor (normal from b towards a, neither along gravity nor across it): the
 /// speed of `a` relative to `b` along the contact's tangent (-ny, nx) at which a character
-/// on it moves across gravity at its walk speed, the two moving along the normal at
-/// `normalSpeed` (0 at rest on it; a contact closing a gap, -gap / dt). NaN if neither is a
-/// character on it as its floor.
-float walkAlongSlope(const Body& a, const Body& b, Vec2 normal, Vec2 down, float normalSpeed);
+/// standing on it moves across gravity at its walk speed. NaN if neither is a character on
+/// it as its floor.
+float walkAlongSlope(const Body& a, const Body& b, Vec2 normal, Vec2 down);
 
 } // namespace jostle

@@ -32,6 +32,10 @@ struct Contact {
     /// Which body holds the other, staying put in shock propagation and position
     /// correction (support.hpp says when): 0 none, 1 a, 2 b.
     std::uint8_t supporter = 0;
+    /// tangentTarget is a character's walk along a sloped floor (characters.hpp's
+    /// walkAlongSlope): at rest on the floor along the normal, and set by how fast the two
+    /// move along it.
+    bool walksAlongSlope = false;
     float sign, tangentSign;
     /// The value of the centres' offset along the normal, (a - b) · normal, at which the
     /// two touch: the sum of the half extents between boxes.
@@ -41,7 +45,7 @@ struct Contact {
     float invMassA, invMassB;
     float effectiveMass; ///< 1 / (invMassA + invMassB)
     /// The relative normal velocity must end >= this: 0 to stop, -gap/dt to let a
-    /// speculative contact close its gap, -bounce × approach speed to bounce.
+    /// speculative contact close its gap. Bounces are the impacts stage's.
     float targetSpeed;
     float normalImpulse = 0.0f; ///< of the sequential impulses: both bodies felt it
     float shockImpulse = 0.0f;  ///< added by shock propagation: the held body felt none
@@ -49,7 +53,9 @@ struct Contact {
     /// The relative tangent speed friction keeps (along the tangent, with its sign): 0,
     /// or a character's walk over its floor.
     float tangentTarget = 0.0f;
-    float bounceSpeed = 0.0f;   ///< to remember: bounce at this speed next step
+    float bounce = 0.0f; ///< the pair's restitution (the larger, or pre-solve's)
+    /// Of the impacts stage (impacts.hpp): both bodies felt it; not warm-started.
+    float collisionImpulse = 0.0f;
     float approachSpeed = 0.0f; ///< how fast the pair closed when the step began (>= 0)
     Vec2 sloped;                ///< the normal of a kSloped contact, unit
     float size = 0.0f;          ///< of a kSloped contact: the smaller body's reach along the normal
@@ -61,8 +67,17 @@ struct Contact {
         const Vec2 n = normal();
         return {-n.y, n.x};
     }
+    /// The tangent speed friction keeps when the pair moves along the normal at
+    /// `normalSpeed`: tangentTarget, but for a character walking along a sloped floor, which
+    /// moves across gravity (along `right`) at its walk speed whatever part of its motion is
+    /// along the normal.
+    float tangentTargetAt(float normalSpeed, Vec2 right) const {
+        if (!walksAlongSlope)
+            return tangentTarget;
+        return tangentTarget - normalSpeed * dot(sloped, right) / dot(tangent(), right);
+    }
     /// The normal impulse of the step, what the held body's partner felt.
-    float totalImpulse() const { return normalImpulse + shockImpulse; }
+    float totalImpulse() const { return normalImpulse + shockImpulse + collisionImpulse; }
 };
 
 } // namespace jostle

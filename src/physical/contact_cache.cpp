@@ -30,12 +30,13 @@ void storeImpulses(StepContext& step) {
         const std::uint32_t slotA = step.bodies[c.ia].slot, slotB = step.bodies[c.ib].slot;
         Body& a = w.slots[slotA];
         Body& b = w.slots[slotB];
-        // A pending bounce is kept only if the contact did stop the pair.
         const float total = c.totalImpulse();
-        const float bounceSpeed = total > 0.0f ? c.bounceSpeed : 0.0f;
+        // What held a touching pair together starts the next step; what closed a gap was a
+        // blow, not a push that goes on.
+        const bool closing = c.targetSpeed < 0.0f;
         cache.add(slotA, slotB,
-                  {a.generation, b.generation, c.normal(), c.normalImpulse, c.tangentImpulse,
-                   bounceSpeed});
+                  {a.generation, b.generation, c.normal(), closing ? 0.0f : c.normalImpulse,
+                   closing ? 0.0f : c.tangentImpulse});
         // How far the contact's impulse pushed each body out this step (position
         // correction was counted when it was written back); the held body felt none of the
         // shock pass's.

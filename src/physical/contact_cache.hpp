@@ -20,9 +20,6 @@ struct CachedContact {
     Vec2 normal;
     float normalImpulse = 0.0f;
     float tangentImpulse = 0.0f;
-    /// A pair that met this step within a speculative gap bounces on the next step, from
-    /// the surface, at this relative speed (0: no bounce).
-    float bounceSpeed = 0.0f;
 };
 
 /// Last step's contacts, looked up by the pair's slots. Stored grouped by the first

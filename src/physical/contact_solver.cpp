@@ -51,18 +51,21 @@ void warmStart(StepContext& step) {
 /// velocityPass for a contact along a slope or a rounded corner: the same, along its
 /// normal and tangent.
 void solveSloped(StepContext& step, Contact& c) {
+    float normalSpeed;
     {
         const float speed = relativeSpeed(step, c, c.sloped);
         const float impulse =
             std::max(-c.effectiveMass * (speed - c.targetSpeed), -c.normalImpulse);
         applyImpulse(step, c, c.sloped, impulse);
         c.normalImpulse += impulse;
+        normalSpeed = speed + impulse / c.effectiveMass;
     }
     {
         const Vec2 tangent = c.tangent();
         const float speed = relativeSpeed(step, c, tangent);
         const float limit = c.friction * c.normalImpulse;
-        const float impulse = std::clamp(-c.effectiveMass * (speed - c.tangentTarget),
+        const float target = c.tangentTargetAt(normalSpeed, step.right());
+        const float impulse = std::clamp(-c.effectiveMass * (speed - target),
                                          -limit - c.tangentImpulse, limit - c.tangentImpulse);
         applyImpulse(step, c, tangent, impulse);
         c.tangentImpulse = std::clamp(c.tangentImpulse + impulse, -limit, limit);

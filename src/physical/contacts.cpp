@@ -38,29 +38,6 @@ std::uint64_t pairKey(std::uint32_t slotA, std::uint32_t slotB) {
     return std::uint64_t{std::min(slotA, slotB)} << 32 | std::max(slotA, slotB);
 }
 
-/// An approach slower than this does not bounce: gravity alone hands a resting body
-/// about g dt each step.
-float restitutionThreshold(const StepContext& step) {
-    if (step.options.restitutionThreshold > 0.0f)
-        return step.options.restitutionThreshold;
-    return 2.0f * length(step.world.def.gravity) * step.dt;
-}
-
-/// The relative normal speed at which the pair really meets: `approach` is measured after
-/// this step's gravity, as if it had acted for the whole step, but the pair meets when it
-/// has crossed its gap, a fraction of the step (none if it already touches).
-float impactSpeed(const StepContext& step, const Body& a, const Body& b, Vec2 normal,
-                  float approach, float gap) {
-    auto acceleration = [&](const Body& body) {
-        return body.isDynamic() ? step.world.def.gravity * body.gravityScale : Vec2{};
-    };
-    const float gravityAlong = dot(acceleration(a) - acceleration(b), normal);
-    const float before = approach - gravityAlong * step.dt;
-    const float meetAfter =
-        gap > 0.0f && approach < 0.0f ? std::min(step.dt, gap / -approach) : 0.0f;
-    return before + gravityAlong * meetAfter;
-}
-
 /// The axis a pair touches along, as a unit normal from b towards a, with the gap
 /// between them along it (negative: overlap) and the skin within which they touch.
 struct Facing {
@@ -222,15 +199,14 @@ Contact shapedContactOf(const StepContext& step, const Body& a, const Body& b,
     const Vec2 down = step.world.events.down;
     c.friction = frictionOfPair(step, a, b, n);
     if (a.character || b.character) {
-        // A gap the contact lets close within the step (setTarget) takes its part of it.
-        const float closing = facing.gap > 0.0f ? -facing.gap / step.dt : 0.0f;
-        const float walk = walkAlongSlope(a, b, n, down, closing);
+        const float walk = walkAlongSlope(a, b, n, down);
         if (std::isnan(walk)) {
             c.tangentTarget = dot(walkOver(a, b, n, down), c.tangent());
         } else {
             // A character walks up and down a slope as on flat ground: at its walk speed
             // across gravity, and standing where it stops, whatever its friction.
             c.tangentTarget = walk;
+            c.walksAlongSlope = true;
             c.friction = kFirmFooting;
         }
     }
@@ -253,21 +229,11 @@ const CachedContact* warmStart(const StepContext& step, Contact& c, std::uint32_
     return found;
 }
 
-/// The target speed: a speculative contact may close its gap, and no more; a bouncing
-/// pair that touches leaves at `bounce` times its impact speed. A pair still apart first
-/// closes its gap and bounces on the next step, from the surface (bouncing from up to a
-/// step's travel away would gain that much height at every bounce).
-void setTarget(Contact& c, const CachedContact* cached, float bounce, float impact, float approach,
-               float gap, float threshold, float dt) {
+/// The target speed: a speculative contact may close its gap, and no more; a touching
+/// one stops the pair. Bounces are the impacts stage's (impacts.hpp).
+void setTarget(Contact& c, float bounce, float gap, float dt) {
     c.targetSpeed = gap > 0.0f ? -gap / dt : 0.0f;
-    if (cached && cached->bounceSpeed > 0.0f) {
-        c.targetSpeed = cached->bounceSpeed; // arrived at the surface last step: leave it
-    } else if (bounce > 0.0f && impact < -threshold && approach < c.targetSpeed) {
-        if (gap > 0.0f)
-            c.bounceSpeed = -bounce * impact;
-        else
-            c.targetSpeed = -bounce * impact;
-    }
+    c.bounce = bounce;
 }
 
 /// contactAlong, with internal linkage so that buildContacts, its hot caller, inlines it.
@@ -302,7 +268,6 @@ Contact contactAlong(const StepContext& step, const Body& a, const Body& b, Vec2
 void buildContacts(StepContext& step) {
     WorldState& w = step.world;
     std::vector<std::uint64_t>& vetoed = step.scratch.contactsBuild.vetoed;
-    const float threshold = restitutionThreshold(step);
     w.physical.solverIndex.assign(w.slots.size(), StepContext::kNoSolverBody);
     step.bodies.clear();
     vetoed.clear();
@@ -373,9 +338,8 @@ void buildContacts(StepContext& step) {
         if (invMassSum <= 0.0f)
             continue; // the callback made both infinitely heavy
         c.effectiveMass = 1.0f / invMassSum;
-        const CachedContact* cached = warmStart(step, c, pair.a, pair.b, normal);
-        setTarget(c, cached, bounce, impactSpeed(step, ba, bb, normal, approach, gap), approach,
-                  gap, threshold, step.dt);
+        warmStart(step, c, pair.a, pair.b, normal);
+        setTarget(c, bounce, gap, step.dt);
         step.contacts.push_back(c);
     }
     std::sort(vetoed.begin(), vetoed.end());

@@ -162,9 +162,16 @@ void sweep(StepContext& step, std::uint32_t slot, Vec2 motion) {
         const Body& obstacle = step.world.slots[hitSlot];
         body.position += (motion - obstacle.velocity * step.dt) * hit.time;
         const float into = dot(body.velocity - obstacle.velocity, hit.normal);
+        // It stops going into the obstacle, and bounces off it as the impacts stage would.
+        const float bounce =
+            -into > step.restitutionThreshold() ? std::max(body.bounce, obstacle.bounce) : 0.0f;
         if (into < 0.0f)
-            body.velocity -= hit.normal * into;
+            body.velocity -= hit.normal * ((1.0f + bounce) * into);
+        const std::size_t found = step.scratch.continuous.found.size();
         addFoundContact(step, slot, *first, std::max(0.0f, -into));
+        if (into < 0.0f && step.scratch.continuous.found.size() > found)
+            step.scratch.continuous.found.back().collisionImpulse =
+                -(1.0f + bounce) * into / body.invMass;
         motion = body.velocity * step.dt;
     }
     if (firstHit(step, slot, motion))

@@ -73,7 +73,9 @@ void reportEvents(StepContext& step) {
         const float skin = std::max(
             2.0f * c.slop, kMinimumSkin * (c.axis == Contact::kSloped ? c.size : c.extent));
         const std::uint32_t slotA = step.bodies[c.ia].slot, slotB = step.bodies[c.ib].slot;
-        if (gap <= skin)
+        // A pair that collided touched this step, if only for a moment: a bounce from the
+        // middle of the step ends it apart.
+        if (gap <= skin || c.collisionImpulse > 0.0f)
             recordContact(w, slotA, slotB, c.normal(), c.approachSpeed, c.totalImpulse());
         // Only a dynamic body against an infinitely heavy one can be crushed.
         if ((c.invMassA == 0.0f) != (c.invMassB == 0.0f))

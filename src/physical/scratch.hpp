@@ -7,6 +7,7 @@
 #include "contact.hpp"
 #include "contacts.hpp"
 #include "continuous.hpp"
+#include "impacts.hpp"
 #include "platforms.hpp"
 #include "report.hpp"
 #include "sleep.hpp"
@@ -29,6 +30,7 @@ struct PhysicalScratch {
     ContinuousScratch continuous;
     PlatformScratch platforms;
     SleepScratch sleep;
+    ImpactsScratch impacts;
 };
 
 } // namespace jostle

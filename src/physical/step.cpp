@@ -9,11 +9,12 @@
 #include "contact_solver.hpp"
 #include "contacts.hpp"
 #include "continuous.hpp"
+#include "impacts.hpp"
 #include "platforms.hpp"
 #include "positions.hpp"
 #include "report.hpp"
-#include "snap.hpp"
 #include "sleep.hpp"
+#include "snap.hpp"
 #include "step_context.hpp"
 #include "support.hpp"
 
@@ -29,6 +30,7 @@ void stepPhysical(WorldState& world, float dt) {
     findPairs(world, dt, world.pairs);
     buildContacts(step);
     orderBySupport(step);
+    resolveImpacts(step);
     solveVelocities(step);
     propagateShock(step);
     sweepFastBodies(step);

@@ -51,6 +51,20 @@ struct StepContext {
         return c.extent - c.sign * (bodies[c.ia].position[c.axis] - bodies[c.ib].position[c.axis]);
     }
 
+    /// An approach slower than this does not bounce: gravity alone hands a resting body
+    /// about g dt each step.
+    float restitutionThreshold() const {
+        if (options.restitutionThreshold > 0.0f)
+            return options.restitutionThreshold;
+        return 2.0f * length(world.def.gravity) * dt;
+    }
+
+    /// Across gravity, to the right of "down": where a character's positive walk goes.
+    Vec2 right() const {
+        const Vec2 down = world.events.down;
+        return {down.y, -down.x};
+    }
+
     Vec2 positionOf(std::uint32_t solverBody) const {
         return {bodies[solverBody].position[0], bodies[solverBody].position[1]};
     }

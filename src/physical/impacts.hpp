@@ -1,0 +1,34 @@
+// Stage: impacts. Before the contacts hold the bodies apart, every pair that meets this
+// step (touching, or closing its gap within the step) faster than gravity alone explains
+// collides as two bodies do: the impulse (1 + e) m v along the normal, friction within
+// Coulomb's cone of it. Pair by pair, over and over, until no pair meets: a blow passes
+// down a row of touching boxes as it does in Newton's cradle, and as every one of those
+// collisions keeps or loses kinetic energy, the step never creates any
+// (docs/physical-model.md, "Simultaneous collisions").
+#pragma once
+
+#include "../counting_sort.hpp"
+#include "jostle/math.hpp"
+
+#include <cstdint>
+#include <vector>
+
+namespace jostle {
+
+struct StepContext;
+
+struct ImpactsScratch {
+    std::vector<Vec2> gravityInStep; ///< by solver body: what gravity adds to its velocity
+    std::vector<int> changedInSweep; ///< by solver body: the last sweep that changed it
+    std::vector<std::uint32_t> changed, next; ///< solver bodies changed in a sweep
+    Buckets byBody;                        ///< each solver body's run of contacts
+    std::vector<std::uint32_t> contactsOf; ///< contact indices, by body
+    std::vector<std::uint32_t> candidates; ///< the contacts of a sweep after the first
+};
+
+/// Resolves the step's impacts on the solver bodies' velocities; a pair that closes a gap
+/// to bounce is moved so that it ends the step where bouncing at the moment of contact
+/// takes it.
+void resolveImpacts(StepContext& step);
+
+} // namespace jostle
