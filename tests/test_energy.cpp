@@ -16,12 +16,16 @@ namespace {
 
 constexpr float kDt = 1.0f / 60.0f;
 
+/// ½ m |v|², in doubles.
+double energyOf(float mass, Vec2 v) {
+    const double x = v.x, y = v.y;
+    return 0.5 * double(mass) * (x * x + y * y);
+}
+
 double kineticEnergy(const World& world, const std::vector<BodyId>& bodies) {
     double energy = 0.0;
-    for (BodyId id : bodies) {
-        const Vec2 v = world.velocity(id);
-        energy += 0.5 * double(world.mass(id)) * (double(v.x) * v.x + double(v.y) * v.y);
-    }
+    for (BodyId id : bodies)
+        energy += energyOf(world.mass(id), world.velocity(id));
     return energy;
 }
 
@@ -34,7 +38,8 @@ Vec2 momentum(const World& world, const std::vector<BodyId>& bodies) {
 
 /// A box of 20 × 20 that bounces fully and does not rub.
 BodyDef ball(float x, float y, float vx, float vy = 0.0f, float bounce = 1.0f) {
-    return {.x = x, .y = y, .hw = 10, .hh = 10, .vx = vx, .vy = vy, .bounce = bounce, .friction = 0};
+    return {
+        .x = x, .y = y, .hw = 10, .hh = 10, .vx = vx, .vy = vy, .bounce = bounce, .friction = 0};
 }
 
 TEST(Energy, ThreeBoxesMeetingAtOnceSwapTheirVelocities) {
@@ -136,7 +141,8 @@ std::vector<BodyId> randomGroup(World& world, std::uint32_t& seed) {
         const float arrangement = random();
         // A row touching along x, a column along y, or anywhere near.
         const float x = arrangement < 0.3f ? 20.0f * float(i) : 40 * random();
-        const float y = arrangement >= 0.3f && arrangement < 0.6f ? 20.0f * float(i) : 40 * random();
+        const float y =
+            arrangement >= 0.3f && arrangement < 0.6f ? 20.0f * float(i) : 40 * random();
         group.push_back(world.createBody({.x = x,
                                           .y = y,
                                           .hw = hw,
@@ -184,10 +190,8 @@ TEST(Energy, WithGravityAndAFloorNoStepCreatesMoreThanGravityGives) {
         const std::vector<BodyId> group = randomGroup(world, seed);
         for (int step = 0; step < 4; ++step) {
             double allowed = 0.0;
-            for (BodyId id : group) {
-                const Vec2 v = world.velocity(id) + g * kDt;
-                allowed += 0.5 * double(world.mass(id)) * (double(v.x) * v.x + double(v.y) * v.y);
-            }
+            for (BodyId id : group)
+                allowed += energyOf(world.mass(id), world.velocity(id) + g * kDt);
             world.step(kDt);
             ASSERT_LE(kineticEnergy(world, group), allowed * (1.0 + 1e-5) + 1e-3)
                 << "trial " << trial << " step " << step;
