@@ -18,8 +18,8 @@ constexpr float kDt = 1.0f / 60.0f;
 
 /// ½ m |v|², in doubles.
 double energyOf(float mass, Vec2 v) {
-    const double x = v.x, y = v.y;
-    return 0.5 * double(mass) * (x * x + y * y);
+    const double x = static_cast<double>(v.x), y = static_cast<double>(v.y);
+    return 0.5 * static_cast<double>(mass) * (x * x + y * y);
 }
 
 double kineticEnergy(const World& world, const std::vector<BodyId>& bodies) {
