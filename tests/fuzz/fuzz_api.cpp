@@ -11,7 +11,9 @@
 //   jostle::Error and leave the world exactly as it was, good ones do not throw and do what they
 //   say. The fuzzer keeps its own list of the live bodies, in creation order, and after each step
 //   checks that the world agrees with it and that every state is finite
-//   (tests/fuzz/invariants.hpp).
+//   (tests/fuzz/invariants.hpp). A first byte of 0xFF mixes in the operations of characters,
+//   forces and move(); 0xFE those and ramps: ramp tiles in maps, setTile with any character,
+//   tileOf, and the floorAngle and snapDown of bodies.
 //
 // - Settled (first byte a multiple of 8): dynamic boxes dropped on a static floor (one
 //   box, boxes edge to edge, a tile map, or a box with walls) in the physical model with
@@ -24,6 +26,7 @@
 // README.md says how; none is now). JOSTLE_FUZZ_VERBOSE and JOSTLE_FUZZ_MODE are
 // described where they are read.
 #include "invariants.hpp"
+#include "open_questions.hpp"
 
 #include "jostle/query.hpp"
 #include "jostle/tilemap.hpp"
@@ -43,6 +46,8 @@
 #include <limits>
 #include <optional>
 #include <string>
+#include <string_view>
+#include <unordered_set>
 #include <vector>
 
 namespace {
@@ -149,6 +154,60 @@ bool isUnitAxis(Vec2 n) {
     return (std::abs(n.x) == 1.0f && n.y == 0.0f) || (n.x == 0.0f && std::abs(n.y) == 1.0f);
 }
 
+bool isUnit(Vec2 n) {
+    return isFinite(n) && std::abs(length(n) - 1.0f) <= 1e-5f;
+}
+
+// --- Ramp tiles, written down again from tilemap.hpp ------------------------------------
+
+/// Ramp characters as tilemap.hpp draws them (a y-down world: rows top first): floors are
+/// solid below their slope, ceilings above.
+constexpr std::string_view kFloorRamps = "/\\rRLl";
+constexpr std::string_view kCeilingRamps = "7FcCDd";
+
+bool isRampChar(char tile) {
+    return kFloorRamps.find(tile) != std::string_view::npos ||
+           kCeilingRamps.find(tile) != std::string_view::npos;
+}
+
+bool isTileChar(char tile) {
+    return tile == '#' || tile == '.' || isRampChar(tile);
+}
+
+bool hasRamp(const std::vector<std::string>& rows) {
+    for (const std::string& row : rows)
+        if (std::any_of(row.begin(), row.end(), isRampChar))
+            return true;
+    return false;
+}
+
+/// OPEN QUESTION small-ramp-tiles: a 2:1 ramp's half tile is a body half a tile high, a
+/// quarter tile in half height, which createBody refuses below 1e-9 (math.hpp) once the
+/// map's boxes are made, while checkTileMapDef holds only whole tiles to it: the map is left
+/// half made and createTileMap throws. Should checkTileMapDef hold ramps to it too? Until
+/// decided, no ramp is put in a map whose tiles are that small for their place.
+bool rampsTooSmall(const TileMapDef& d) {
+    return d.tile < 8e-9f || d.tile < 1e-6f * std::max(std::abs(d.x), std::abs(d.y));
+}
+
+/// OPEN QUESTION weak-gravity: the direction of a gravity so weak that its length squared
+/// is no normal float (below about 1e-19: 1e-30, a denormal) is worked out as 0/0, so a
+/// character's walk makes its velocity and position NaN at the first step, in both
+/// models. Should such a gravity count as none, or be refused? Until decided, the
+/// operations of characters come with no such gravity.
+bool weakGravity(Vec2 g) {
+    return g != Vec2{} && !(length(g) >= 1e-18f);
+}
+
+/// Where a ramp's outline leaves `point`: < 0 on the solid side of its slope, > 0 on the
+/// cut-away side, in units of its half extents (its box's far corners are at -2 and 2).
+double slopeSide(Vec2 centre, Vec2 half, Vec2 slope, double x, double y) {
+    return static_cast<double>(slope.x) * (x - static_cast<double>(centre.x)) /
+               static_cast<double>(half.x) +
+           static_cast<double>(slope.y) * (y - static_cast<double>(centre.y)) /
+               static_cast<double>(half.y);
+}
+
 /// Everything observable about a world through the API, as bits: two fingerprints are
 /// equal when a failed call changed nothing.
 std::vector<std::uint32_t> fingerprint(const World& world, const std::vector<TileMapId>& maps) {
@@ -176,8 +235,9 @@ std::vector<std::uint32_t> fingerprint(const World& world, const std::vector<Til
         out.push_back(id.generation);
         const BodyDef d = world.bodyDef(id);
         out.push_back(static_cast<std::uint32_t>(d.type));
-        for (float v : {d.x, d.y, d.hw, d.hh, d.vx, d.vy, d.bounce, d.friction, d.mass, d.density,
-                        d.gravityScale, d.damping, d.oneWay.x, d.oneWay.y})
+        for (float v :
+             {d.x, d.y, d.hw, d.hh, d.vx, d.vy, d.bounce, d.friction, d.mass, d.density,
+              d.gravityScale, d.damping, d.oneWay.x, d.oneWay.y, d.floorAngle, d.snapDown})
             f(v);
         out.push_back(
             static_cast<std::uint32_t>(d.bullet | d.sensor << 1 | world.isAwake(id) << 2));
@@ -216,6 +276,8 @@ bool documentedValid(const BodyDef& d) {
         return false;
     if (!isValidOneWay(d.oneWay))
         return false;
+    if (!(d.floorAngle >= 0 && d.floorAngle < 90 && inRange(d.snapDown) && d.snapDown >= 0))
+        return false;
     return !(d.type == BodyType::Static && (d.vx != 0 || d.vy != 0));
 }
 
@@ -237,10 +299,12 @@ struct CallbackThrow {};
 
 class Program {
 public:
-    /// `characters`: the operations of characters, forces and move() are in the mix too
-    /// (they came after the corpus was gathered: without them, an input means what it
-    /// always meant).
-    Program(Input& in, bool characters) : in_(in), characters_(characters) {}
+    /// `characters`: the operations of characters, forces and move() are in the mix too;
+    /// `ramps` (with characters): ramp tiles, setTile with any character, tileOf, and the
+    /// floorAngle and snapDown of bodies. Each came after the corpus was gathered: without
+    /// them, an input means what it always meant.
+    Program(Input& in, bool characters, bool ramps)
+        : in_(in), characters_(characters || ramps), ramps_(ramps) {}
 
     void run() {
         makeWorld();
@@ -305,6 +369,7 @@ private:
 
     Input& in_;
     bool characters_;
+    bool ramps_;
     World world_;
     std::vector<BodyId> live_; ///< the fuzzer's own list, in creation order
     std::vector<BodyId> dead_; ///< the last kMaxDead destroyed handles
@@ -317,6 +382,9 @@ private:
     /// Maps one of whose bodies the program changed or destroyed: their boxes no longer
     /// cover their tiles exactly, until a rebuild that need not come.
     std::vector<TileMapId> tampered_;
+    /// Every body with a shape (a ramp) ever created, as index << 32 | generation: its
+    /// contacts' normals need not be along x or y, even in the events of its destruction.
+    std::unordered_set<std::uint64_t> shaped_;
 
     // The installed pre-solve callback's behaviour and its bookkeeping for one step.
     int callbackMode_ = 0;
@@ -395,7 +463,24 @@ private:
         const std::span<const BodyId> listed = world_.bodies();
         if (listed.size() < kept.size() || !std::equal(kept.begin(), kept.end(), listed.begin()))
             finding(std::string(after) + ": bodies() lost the creation order");
+        for (std::size_t i = kept.size(); i < listed.size(); ++i)
+            if (const BodyDef d = world_.bodyDef(listed[i]); d.slope != Vec2{} || d.radius > 0)
+                shaped_.insert(std::uint64_t{listed[i].index} << 32 | listed[i].generation);
         live_.assign(listed.begin(), listed.end());
+    }
+
+    bool isShaped(BodyId id) const {
+        return shaped_.contains(std::uint64_t{id.index} << 32 | id.generation);
+    }
+
+    bool anyShaped() const {
+        return std::any_of(live_.begin(), live_.end(), [&](BodyId id) { return isShaped(id); });
+    }
+
+    /// A contact's or a hit's normal: unit, and along x or y unless a body with a shape is
+    /// in it (world.hpp, query.hpp).
+    bool goodNormal(Vec2 n, BodyId a, BodyId b = {}) const {
+        return isShaped(a) || isShaped(b) ? isUnit(n) : isUnitAxis(n);
     }
 
     // --- Picking handles -------------------------------------------------------------------
@@ -471,6 +556,13 @@ private:
         }
         d.bullet = (extras & 32) != 0;
         d.sensor = (extras & 192) == 192;
+        if (ramps_) {
+            const std::uint8_t more = in_.byte();
+            if (more & 1)
+                d.floorAngle = in_.number(0, 90); // 90 itself is refused: [0, 90)
+            if (more & 2)
+                d.snapDown = in_.number(0, 40);
+        }
         return d;
     }
 
@@ -484,6 +576,9 @@ private:
     void makeWorld() {
         WorldDef d;
         d.gravity = {in_.flag() ? 0.0f : in_.number(-100, 100), in_.number(-1000, 1000)};
+        // OPEN QUESTION weak-gravity (above).
+        if (characters_ && weakGravity(d.gravity) && !check::checkOpen("weak-gravity"))
+            d.gravity = {};
         if (in_.byte() > 200)
             d.maxVelocity = in_.number(1, 2000);
         d.solver = in_.byte() % 4 == 0 ? Solver::Classic : Solver::Physical;
@@ -524,12 +619,13 @@ private:
         if (verbosity() >= 1)
             std::fprintf(stderr,
                          "createBody: type %d at (%.9g, %.9g) half (%.9g, %.9g) v (%.9g, %.9g) "
-                         "mass %.9g density %.9g\n",
+                         "mass %.9g density %.9g floorAngle %.9g snapDown %.9g\n",
                          static_cast<int>(d.type), static_cast<double>(d.x),
                          static_cast<double>(d.y), static_cast<double>(d.hw),
                          static_cast<double>(d.hh), static_cast<double>(d.vx),
                          static_cast<double>(d.vy), static_cast<double>(d.mass),
-                         static_cast<double>(d.density));
+                         static_cast<double>(d.density), static_cast<double>(d.floorAngle),
+                         static_cast<double>(d.snapDown));
         BodyId id;
         if (!expect(valid, "createBody", [&] { id = world_.createBody(d); }))
             return;
@@ -539,7 +635,8 @@ private:
         const BodyDef got = world_.bodyDef(id);
         if (got.type != d.type || !same({got.x, got.y}, {d.x, d.y}) ||
             !same({got.hw, got.hh}, {d.hw, d.hh}) || !same({got.vx, got.vy}, {d.vx, d.vy}) ||
-            got.category != d.category || got.mask != d.mask || got.sensor != d.sensor)
+            got.category != d.category || got.mask != d.mask || got.sensor != d.sensor ||
+            !same(got.floorAngle, d.floorAngle) || !same(got.snapDown, d.snapDown))
             finding("bodyDef does not give back what createBody was given");
         checkList("createBody");
     }
@@ -565,8 +662,9 @@ private:
         switch (which) {
         case 0: {
             const BodyType t = pickType();
-            const bool ok =
-                t == BodyType::Static || t == BodyType::Kinematic || t == BodyType::Dynamic;
+            // A ramp is static or kinematic (world.hpp).
+            const bool ok = t == BodyType::Static || t == BodyType::Kinematic ||
+                            (t == BodyType::Dynamic && !isShaped(id));
             if (expect(live && ok, "setType", [&] { world_.setType(id, t); }) &&
                 (world_.type(id) != t || (t == BodyType::Static && world_.velocity(id) != Vec2{})))
                 finding("setType did not take");
@@ -659,7 +757,9 @@ private:
         }
         case 13: {
             const Vec2 n = pickOneWay();
-            if (expect(live && isValidOneWay(n), "setOneWay", [&] { world_.setOneWay(id, n); }) &&
+            // A shaped body is never one-way (world.hpp).
+            const bool ok = isValidOneWay(n) && (n == Vec2{} || !isShaped(id));
+            if (expect(live && ok, "setOneWay", [&] { world_.setOneWay(id, n); }) &&
                 !same(world_.oneWay(id), n))
                 finding("setOneWay did not take");
             break;
@@ -727,7 +827,10 @@ private:
         const BodyId id = pickBody();
         const bool live = isLive(id);
         tamper(id);
-        switch (in_.byte() % 8) {
+        const int which = in_.byte() % (ramps_ ? 10 : 8);
+        if (verbosity() >= 1)
+            std::fprintf(stderr, "character op %d on %s\n", which, check::describe(id).c_str());
+        switch (which) {
         case 0: {
             const bool c = in_.flag();
             if (expect(live, "setCharacter", [&] { world_.setCharacter(id, c); }) &&
@@ -775,6 +878,21 @@ private:
             const Vec2 d = in_.vec(-300, 300);
             const bool ok = live && inRange(d) && inRange(world_.position(id) + d);
             const std::uint8_t responses = in_.byte();
+            // OPEN QUESTION move-bounces-past-the-edge: a move from the world's corner into
+            // bodies it bounces off sends the body past the edge of the world (math.hpp),
+            // and move throws setPosition's error for a delta that keeps it inside. Should
+            // the bounce stop at the edge? Until decided, no move comes within its length of
+            // the edge.
+            if (live && !check::checkOpen("move-bounces-past-the-edge")) {
+                const float reach = std::abs(d.x) + std::abs(d.y);
+                const Vec2 p = world_.position(id);
+                if (!(inRange(p + Vec2{reach, reach}) && inRange(p - Vec2{reach, reach})))
+                    break;
+            }
+            if (verbosity() >= 1 && live)
+                std::fprintf(stderr, "move: from %s by %s, responses %d\n",
+                             check::describe(world_.position(id)).c_str(),
+                             check::describe(d).c_str(), responses);
             expect(ok, "move", [&] {
                 const MoveOutcome out = move(world_, id, d, [&](BodyId other) {
                     return static_cast<Response>((responses + other.index) % 5);
@@ -782,6 +900,22 @@ private:
                 if (!same(world_.position(id), out.centre))
                     finding("move left the body elsewhere than it said");
             });
+            break;
+        }
+        case 8: {
+            const float a = in_.number(0, 90);
+            if (expect(live && a >= 0 && a < 90, "setFloorAngle",
+                       [&] { world_.setFloorAngle(id, a); }) &&
+                !same(world_.floorAngle(id), a))
+                finding("setFloorAngle did not take");
+            break;
+        }
+        case 9: {
+            const float d = in_.number(0, 40);
+            if (expect(live && inRange(d) && d >= 0, "setSnapDown",
+                       [&] { world_.setSnapDown(id, d); }) &&
+                !same(world_.snapDown(id), d))
+                finding("setSnapDown did not take");
             break;
         }
         default: {
@@ -921,11 +1055,12 @@ private:
                         (world_.isValid(e.b) ? "" : " (gone)") + " in the " +
                         toString(world_.solver()) + " model, callback mode " +
                         std::to_string(callbackMode_));
-            if (!isUnitAxis(e.normal) || !(e.approachSpeed >= 0) || !std::isfinite(e.approachSpeed))
+            if (!goodNormal(e.normal, e.a, e.b) || !(e.approachSpeed >= 0) ||
+                !std::isfinite(e.approachSpeed))
                 finding("contactBegins: bad normal or approach speed");
         }
         for (const ContactEvent& e : world_.contactEnds())
-            if (!isUnitAxis(e.normal))
+            if (!goodNormal(e.normal, e.a, e.b))
                 finding("contactEnds: bad normal");
         for (const CrushEvent& e : world_.crushes())
             if (!world_.isValid(e.body) || !world_.isValid(e.by) || !world_.isValid(e.against))
@@ -966,17 +1101,73 @@ private:
         return static_cast<std::size_t>(std::find(live_.begin(), live_.end(), id) - live_.begin());
     }
 
-    /// The bodies a "what is here?" query must report, by brute force over the fuzzer's
-    /// list: the grids of the library must agree with it exactly.
-    template <class Inside>
-    std::vector<BodyId> bruteForce(const QueryFilter& filter, Inside&& inside) const {
-        std::vector<BodyId> out;
+    /// What a "what is here?" query must do with a body.
+    enum class Must { Report, Leave, Either };
+
+    /// The part of a query's region nearest the solid side of a ramp's slope, within the
+    /// ramp's box: its point nearest that side, how far the part reaches into the box from
+    /// the box's edges (0 for a point on an edge), and the largest coordinate the query
+    /// works with.
+    struct Reach {
+        Vec2 point;
+        float depth;
+        float scale;
+    };
+
+    /// What a "what is here?" query must do with each body whose box `inBox(lo, hi)` puts
+    /// in the region, by brute force over the fuzzer's list, in creation order. A sharp box
+    /// is reported: the grids of the library must agree with it exactly. A ramp is
+    /// reported if the region reaches the solid side of its slope (`reach(lo, hi, slope)`)
+    /// and left out if it does not, unless the slope or the box's edge is within rounding
+    /// of the region, where the library's float arithmetic may go either way.
+    template <class InBox, class ReachOf>
+    std::vector<std::pair<BodyId, Must>> bruteForce(const QueryFilter& filter, InBox&& inBox,
+                                                    ReachOf&& reach) const {
+        std::vector<std::pair<BodyId, Must>> out;
         for (BodyId id : live_) {
             const Vec2 p = world_.position(id), h = world_.halfExtents(id);
-            if (inside(p - h, p + h) && passes(id, filter))
-                out.push_back(id);
+            if (!inBox(p - h, p + h) || !passes(id, filter))
+                continue;
+            if (!isShaped(id)) {
+                out.emplace_back(id, Must::Report);
+                continue;
+            }
+            const Vec2 slope = world_.bodyDef(id).slope;
+            if (slope == Vec2{}) { // a rounded body: the fuzzer makes none
+                out.emplace_back(id, Must::Either);
+                continue;
+            }
+            const Reach r = reach(p - h, p + h, slope);
+            const double scale =
+                static_cast<double>(std::max({r.scale, std::abs(p.x) + h.x, std::abs(p.y) + h.y}));
+            // A few float roundings of the largest coordinate, in distance and along the
+            // slope's side (in half extents).
+            const double rounding =
+                64.0 * static_cast<double>(std::numeric_limits<float>::epsilon()) * scale;
+            const double blur =
+                rounding * (1.0 / static_cast<double>(h.x) + 1.0 / static_cast<double>(h.y));
+            const double side = slopeSide(p, h, slope, static_cast<double>(r.point.x),
+                                          static_cast<double>(r.point.y));
+            out.emplace_back(id, static_cast<double>(r.depth) <= rounding || std::abs(side) <= blur
+                                     ? Must::Either
+                                 : side < 0 ? Must::Report
+                                            : Must::Leave);
         }
         return out;
+    }
+
+    /// True if `got` lists, in creation order, every body `expected` must report, and no
+    /// body it must not.
+    static bool agrees(const std::vector<BodyId>& got,
+                       const std::vector<std::pair<BodyId, Must>>& expected) {
+        std::size_t k = 0;
+        for (const auto& [id, must] : expected) {
+            const bool listed = k < got.size() && got[k] == id;
+            if ((listed && must == Must::Leave) || (!listed && must == Must::Report))
+                return false;
+            k += listed ? 1 : 0;
+        }
+        return k == got.size();
     }
 
     void query() {
@@ -987,11 +1178,19 @@ private:
         switch (which) {
         case 0: {
             std::vector<BodyId> got;
-            if (expect(ignoreOk && inRange(a), "queryPoint",
-                       [&] { got = queryPoint(world_, a, filter); }) &&
-                got != bruteForce(filter, [&](Vec2 lo, Vec2 hi) {
+            if (!expect(ignoreOk && inRange(a), "queryPoint",
+                        [&] { got = queryPoint(world_, a, filter); }))
+                break;
+            const auto expected = bruteForce(
+                filter,
+                [&](Vec2 lo, Vec2 hi) {
                     return lo.x <= a.x && a.x <= hi.x && lo.y <= a.y && a.y <= hi.y;
-                }))
+                },
+                [&](Vec2 lo, Vec2 hi, Vec2) {
+                    const float depth = std::min({a.x - lo.x, hi.x - a.x, a.y - lo.y, hi.y - a.y});
+                    return Reach{a, depth, std::max(std::abs(a.x), std::abs(a.y))};
+                });
+            if (!agrees(got, expected))
                 finding("queryPoint differs from brute force");
             break;
         }
@@ -1005,14 +1204,27 @@ private:
                                       isFinite(lo) && isFinite(hi)
                                 : inRange(lo) && inRange(hi) && lo.x <= hi.x && lo.y <= hi.y;
             std::vector<BodyId> got;
-            if (expect(ignoreOk && ok, box ? "queryBox" : "queryRect",
-                       [&] {
-                           got = box ? queryBox(world_, a, half, filter)
-                                     : queryRect(world_, lo, hi, filter);
-                       }) &&
-                got != bruteForce(filter, [&](Vec2 bl, Vec2 bh) {
-                    return bl.x < hi.x && lo.x < bh.x && bl.y < hi.y && lo.y < bh.y;
+            if (!expect(ignoreOk && ok, box ? "queryBox" : "queryRect", [&] {
+                    got =
+                        box ? queryBox(world_, a, half, filter) : queryRect(world_, lo, hi, filter);
                 }))
+                break;
+            const auto expected = bruteForce(
+                filter,
+                [&](Vec2 bl, Vec2 bh) {
+                    return bl.x < hi.x && lo.x < bh.x && bl.y < hi.y && lo.y < bh.y;
+                },
+                [&](Vec2 bl, Vec2 bh, Vec2 slope) {
+                    // Where the box and the ramp's box share area, the corner furthest
+                    // towards the solid side, against the slope's corner.
+                    const Vec2 from{std::max(lo.x, bl.x), std::max(lo.y, bl.y)};
+                    const Vec2 to{std::min(hi.x, bh.x), std::min(hi.y, bh.y)};
+                    const Vec2 corner{slope.x > 0 ? from.x : to.x, slope.y > 0 ? from.y : to.y};
+                    return Reach{
+                        corner, std::min(to.x - from.x, to.y - from.y),
+                        std::max({std::abs(lo.x), std::abs(lo.y), std::abs(hi.x), std::abs(hi.y)})};
+                });
+            if (!agrees(got, expected))
                 finding(std::string(box ? "queryBox" : "queryRect") + " differs from brute force");
             break;
         }
@@ -1032,8 +1244,9 @@ private:
                 finding("rayCast and rayCastAll disagree on the first hit");
             for (std::size_t i = 0; i < all.size(); ++i) {
                 const RayHit& hit = all[i];
-                if (!isLive(hit.body) || !passes(hit.body, filter) || !isUnitAxis(hit.normal) ||
-                    !isFinite(hit.point) || !(hit.fraction >= 0 && hit.fraction <= 1))
+                if (!isLive(hit.body) || !passes(hit.body, filter) ||
+                    !goodNormal(hit.normal, hit.body) || !isFinite(hit.point) ||
+                    !(hit.fraction >= 0 && hit.fraction <= 1))
                     finding("rayCastAll: a bad hit");
                 if (i > 0 && (hit.fraction < all[i - 1].fraction ||
                               (hit.fraction == all[i - 1].fraction &&
@@ -1053,8 +1266,9 @@ private:
                 std::optional<BoxCastHit> hit;
                 if (expect(ok, "boxCast", [&] { hit = boxCast(world_, a, half, move, filter); }) &&
                     hit &&
-                    (!isLive(hit->body) || !passes(hit->body, filter) || !isUnitAxis(hit->normal) ||
-                     !isFinite(hit->centre) || !(hit->fraction >= 0 && hit->fraction <= 1)))
+                    (!isLive(hit->body) || !passes(hit->body, filter) ||
+                     !goodNormal(hit->normal, hit->body) || !isFinite(hit->centre) ||
+                     !(hit->fraction >= 0 && hit->fraction <= 1)))
                     finding("boxCast: a bad hit");
             } else {
                 MoveResult moved;
@@ -1064,7 +1278,7 @@ private:
                         finding("moveAndSlide: centre not finite");
                     for (const MoveHit& hit : moved.hits)
                         if (!isLive(hit.body) || world_.isSensor(hit.body) ||
-                            !isUnitAxis(hit.normal))
+                            !goodNormal(hit.normal, hit.body))
                             finding("moveAndSlide: a bad hit");
                 }
             }
@@ -1086,6 +1300,8 @@ private:
             const std::uint32_t solid = in_.bits();
             for (int c = 0; c < columns; ++c)
                 row += (solid >> c) & 1 ? '#' : '.';
+            if (ramps_)
+                placeRamps(row);
             d.rows.push_back(row);
         }
         const std::uint8_t odd = in_.byte();
@@ -1110,11 +1326,41 @@ private:
         return d;
     }
 
+    /// Ramps over some of a row's tiles, the two halves of a 2:1 ramp side by side often.
+    void placeRamps(std::string& row) {
+        static constexpr std::array<std::string_view, 16> pieces = {
+            "/", "\\", "7", "F", "r", "R", "L", "l", "c", "C", "D", "d", "rR", "Ll", "cC", "Dd"};
+        const std::uint32_t where = in_.bits();
+        for (std::size_t c = 0; c < row.size(); ++c)
+            if ((where >> c) & 1) {
+                const std::string_view piece = pieces[in_.byte() % pieces.size()];
+                for (std::size_t k = 0; k < piece.size() && c + k < row.size(); ++k)
+                    row[c + k] = piece[k];
+            }
+    }
+
+    /// A tile's character for setTile: mostly one that rows may hold, sometimes any byte.
+    char pickTile() {
+        static constexpr std::string_view tiles = "#./\\7FrRLlcCDd";
+        const std::uint8_t b = in_.byte();
+        return b < 240 ? tiles[b % tiles.size()] : static_cast<char>(in_.byte());
+    }
+
     void tileMapOp() {
-        switch (in_.byte() % 5) {
+        switch (in_.byte() % (ramps_ ? 7 : 5)) {
         case 0: {
-            const TileMapDef d = makeTileMapDef();
+            TileMapDef d = makeTileMapDef();
             if (maps_.size() >= kMaxMaps || live_.size() >= kMaxBodies)
+                return;
+            // OPEN QUESTION one-way-ramp-tiles: a one-way map's ramps are made one-way too,
+            // which createBody refuses for a ramp, after the map's boxes are made: the map
+            // is left half made and createTileMap throws. Should its ramps block from every
+            // side, or checkTileMapDef refuse the map? Until decided, such a map is made
+            // solid on every side.
+            if (d.oneWay != Vec2{} && hasRamp(d.rows) && !check::checkOpen("one-way-ramp-tiles"))
+                d.oneWay = {};
+            // OPEN QUESTION small-ramp-tiles (rampsTooSmall).
+            if (hasRamp(d.rows) && rampsTooSmall(d) && !check::checkOpen("small-ramp-tiles"))
                 return;
             const bool documented = inRange(d.x) && inRange(d.y) && inRange(d.tile) &&
                                     d.tile / 2 >= kMinMagnitude && inRange(d.friction) &&
@@ -1123,13 +1369,18 @@ private:
             const bool checked = !checkTileMapDef(d).has_value();
             if (checked && !documented)
                 finding("checkTileMapDef accepted an invalid TileMapDef");
-            if (verbosity() >= 1)
+            if (verbosity() >= 1) {
                 std::fprintf(stderr, "createTileMap: x %.9g, y %.9g, tile %.9g, %zu x %zu\n",
                              static_cast<double>(d.x), static_cast<double>(d.y),
                              static_cast<double>(d.tile), d.rows.empty() ? 0 : d.rows[0].size(),
                              d.rows.size());
+                for (const std::string& row : d.rows)
+                    std::fprintf(stderr, "  %s\n", row.c_str());
+            }
+            // The classic model has sharp boxes only: a map with a ramp is refused whole.
+            const bool valid = checked && !(world_.solver() == Solver::Classic && hasRamp(d.rows));
             TileMapId id;
-            if (!expect(checked, "createTileMap", [&] { id = createTileMap(world_, d); }))
+            if (!expect(valid, "createTileMap", [&] { id = createTileMap(world_, d); }))
                 return;
             maps_.push_back({id, d.rows});
             catchUp("createTileMap", {});
@@ -1216,6 +1467,63 @@ private:
             checkList("destroying a tile map's body");
             break;
         }
+        case 5: {
+            // Any character: '#', '.' and the ramps are tiles, but a ramp in the classic
+            // model; tileOf gives back what was set.
+            const TileMapId id = pickMap();
+            Map* m = findMap(id);
+            const int columns = m ? static_cast<int>(m->rows[0].size()) : 4;
+            const int rows = m ? static_cast<int>(m->rows.size()) : 4;
+            const int column = in_.integer(-1, columns), row = in_.integer(-1, rows);
+            const char tile = pickTile();
+            // OPEN QUESTIONS one-way-ramp-tiles (createTileMap above) and small-ramp-tiles
+            // (rampsTooSmall): no ramp put in a one-way map, nor in one of tiny tiles.
+            if (m && isRampChar(tile)) {
+                const TileMapDef map = tileMapDef(world_, id);
+                if ((map.oneWay != Vec2{} && !check::checkOpen("one-way-ramp-tiles")) ||
+                    (rampsTooSmall(map) && !check::checkOpen("small-ramp-tiles")))
+                    return;
+            }
+            const bool ok = m && column >= 0 && column < columns && row >= 0 && row < rows &&
+                            isTileChar(tile) &&
+                            !(isRampChar(tile) && world_.solver() == Solver::Classic);
+            if (verbosity() >= 1)
+                std::fprintf(stderr, "setTile: (%d, %d) to byte 0x%02X\n", column, row,
+                             static_cast<unsigned>(static_cast<unsigned char>(tile)));
+            const std::vector<BodyId> before =
+                m ? std::vector<BodyId>(tileMapBodies(world_, id).begin(),
+                                        tileMapBodies(world_, id).end())
+                  : std::vector<BodyId>{};
+            if (!expect(ok, "setTile(char)", [&] { setTile(world_, id, column, row, tile); }))
+                return;
+            m->rows[static_cast<std::size_t>(row)][static_cast<std::size_t>(column)] = tile;
+            catchUp("setTile(char)", before);
+            if (tileOf(world_, id, column, row) != tile)
+                finding("tileOf does not give back what setTile set");
+            if (isSolid(world_, id, column, row) != (tile == '#'))
+                finding("isSolid after setTile(char) is not whether it set '#'");
+            checkCoverage(*m);
+            break;
+        }
+        case 6: {
+            // tileOf: the tile as set, '.' outside the map; a stale map throws.
+            const TileMapId id = pickMap();
+            Map* m = findMap(id);
+            const int column = in_.integer(-3, 12), row = in_.integer(-3, 8);
+            expect(m != nullptr, "tileOf", [&] {
+                const char got = tileOf(world_, id, column, row); // throws for a stale map
+                const bool inside = column >= 0 && row >= 0 &&
+                                    row < static_cast<int>(m->rows.size()) &&
+                                    column < static_cast<int>(m->rows[0].size());
+                const char expected =
+                    inside
+                        ? m->rows[static_cast<std::size_t>(row)][static_cast<std::size_t>(column)]
+                        : '.';
+                if (got != expected)
+                    finding("tileOf disagrees with the tiles set");
+            });
+            break;
+        }
         }
     }
 
@@ -1232,8 +1540,12 @@ private:
         checkCoverage(*findMap(id));
     }
 
-    /// Every solid tile's centre is inside exactly one box of the map, every empty one's
-    /// in none, where floats can tell tiles apart and the program left the boxes alone.
+    /// Every solid tile's centre is inside exactly one body of the map, every empty one's
+    /// in none, where floats can tell tiles apart and the program left the bodies alone. A
+    /// ramp tile's centre may lie on its slope; a tenth of a tile from its top and from its
+    /// bottom, one point is in its solid part, in one body, and the other in the part cut
+    /// away, in none: the bottom one solid for a floor (tilemap.hpp draws a y-down world),
+    /// the top one for a ceiling.
     void checkCoverage(const Map& m) {
         const TileMapDef d = tileMapDef(world_, m.id);
         if (d.rows != m.rows)
@@ -1241,21 +1553,49 @@ private:
         if (std::find(tampered_.begin(), tampered_.end(), m.id) != tampered_.end() ||
             !(std::abs(d.x) < 1e4f && std::abs(d.y) < 1e4f && d.tile > 0.01f))
             return;
-        const std::span<const BodyId> boxes = tileMapBodies(world_, m.id);
+        const bool parts = d.tile > 0.1f; // a tenth of a tile, well above rounding
+        struct Piece {
+            Vec2 centre, half, slope;
+        };
+        std::vector<Piece> pieces;
+        for (BodyId body : tileMapBodies(world_, m.id)) {
+            if (!world_.isValid(body) || world_.type(body) != BodyType::Static)
+                finding("an untouched tile map lists a body that is gone or moves");
+            pieces.push_back(
+                {world_.position(body), world_.halfExtents(body), world_.bodyDef(body).slope});
+        }
+        // How many of the map's bodies hold the point (column + u, row + v), in tiles.
+        auto holders = [&](std::size_t column, std::size_t row, double u, double v) {
+            const double tile = static_cast<double>(d.tile);
+            const double x = static_cast<double>(d.x) + (static_cast<double>(column) + u) * tile;
+            const double y = static_cast<double>(d.y) + (static_cast<double>(row) + v) * tile;
+            int count = 0;
+            for (const Piece& piece : pieces) {
+                const bool inBox = std::abs(x - static_cast<double>(piece.centre.x)) <
+                                       static_cast<double>(piece.half.x) &&
+                                   std::abs(y - static_cast<double>(piece.centre.y)) <
+                                       static_cast<double>(piece.half.y);
+                count += inBox && (piece.slope == Vec2{} ||
+                                   slopeSide(piece.centre, piece.half, piece.slope, x, y) < 0);
+            }
+            return count;
+        };
         for (std::size_t r = 0; r < d.rows.size(); ++r) {
             for (std::size_t c = 0; c < d.rows[r].size(); ++c) {
-                const Vec2 centre{d.x + (static_cast<float>(c) + 0.5f) * d.tile,
-                                  d.y + (static_cast<float>(r) + 0.5f) * d.tile};
-                int inside = 0;
-                for (BodyId body : boxes) {
-                    if (!world_.isValid(body) || world_.type(body) != BodyType::Static)
-                        finding("an untouched tile map lists a body that is gone or moves");
-                    const Vec2 p = world_.position(body), h = world_.halfExtents(body);
-                    inside += std::abs(centre.x - p.x) < h.x && std::abs(centre.y - p.y) < h.y;
+                const char tile = d.rows[r][c];
+                const std::string where =
+                    "tile (" + std::to_string(c) + ", " + std::to_string(r) + ") '" + tile + "'";
+                if (!isRampChar(tile)) {
+                    const int inside = holders(c, r, 0.5, 0.5);
+                    if (inside != (tile == '#' ? 1 : 0))
+                        finding(where + " is covered by " + std::to_string(inside) + " bodies");
+                } else if (parts) {
+                    const bool floor = kFloorRamps.find(tile) != std::string_view::npos;
+                    const int top = holders(c, r, 0.5, 0.1), bottom = holders(c, r, 0.5, 0.9);
+                    if (top != (floor ? 0 : 1) || bottom != (floor ? 1 : 0))
+                        finding(where + ": its top is in " + std::to_string(top) +
+                                " bodies, its bottom in " + std::to_string(bottom));
                 }
-                if (inside != (d.rows[r][c] == '#' ? 1 : 0))
-                    finding("tile (" + std::to_string(c) + ", " + std::to_string(r) +
-                            ") is covered by " + std::to_string(inside) + " boxes");
             }
         }
     }
@@ -1266,6 +1606,9 @@ private:
         switch (in_.byte() % 6) {
         case 0: {
             const Vec2 g = in_.vec(-1000, 1000);
+            // OPEN QUESTION weak-gravity (above).
+            if (characters_ && weakGravity(g) && !check::checkOpen("weak-gravity"))
+                break;
             if (expect(inRange(g), "setGravity", [&] { world_.setGravity(g); }) &&
                 !same(world_.gravity(), g))
                 finding("setGravity did not take");
@@ -1278,7 +1621,19 @@ private:
         }
         case 2: {
             const auto s = static_cast<Solver>(in_.byte() % 3);
-            expect(s == Solver::Classic || s == Solver::Physical, "setSolver",
+            // OPEN QUESTION classic-with-ramp-tiles: a map whose ramp bodies the program
+            // destroyed keeps its ramp tiles, and setSolver takes the classic model, where
+            // the next setTile in a row with a ramp (even '.') throws from rebuilding the
+            // row's ramps, with the tile already changed. Should setSolver refuse while a
+            // map has ramp tiles, or setTile leave the ramps it cannot make? Until decided,
+            // the world keeps its model while a map has ramp tiles but no ramp bodies.
+            if (s == Solver::Classic && !check::checkOpen("classic-with-ramp-tiles") &&
+                !anyShaped() && std::any_of(maps_.begin(), maps_.end(), [](const Map& m) {
+                    return hasRamp(m.rows);
+                }))
+                break;
+            // The classic model has sharp boxes only: not while the world has a shape.
+            expect(s == Solver::Physical || (s == Solver::Classic && !anyShaped()), "setSolver",
                    [&] { world_.setSolver(s); });
             break;
         }
@@ -1335,9 +1690,22 @@ private:
                     (world_.isValid(c.b) ? "" : " (gone)") + " in the " +
                     toString(world_.solver()) + " model, callback mode " +
                     std::to_string(callbackMode_) + ", call " + std::to_string(callbackCalls_));
-        if (!isUnitAxis(c.normal) || !std::isfinite(c.depth) || !(c.bounce >= 0 && c.bounce <= 1) ||
-            !(c.friction >= 0 && c.friction <= 1))
-            finding("pre-solve given a bad Collision");
+        // OPEN QUESTION firm-footing-in-pre-solve: the contact of a character with a sloped
+        // floor carries the friction 1000 ("enough for any walk", contacts.cpp), which the
+        // callback is given as the pair's friction, and which it clamps to 1 when it returns,
+        // even if it changed nothing: a character standing on a steep floor slides down it
+        // once any pre-solve callback is installed. Should the callback see the mixed
+        // friction, and the footing stay firm unless it changes it? Until decided, the
+        // friction of a character's pair with a shape is not held to [0, 1].
+        const bool footing = (world_.isCharacter(c.a) || world_.isCharacter(c.b)) &&
+                             (isShaped(c.a) || isShaped(c.b)) &&
+                             !check::checkOpen("firm-footing-in-pre-solve");
+        if (!goodNormal(c.normal, c.a, c.b) || !std::isfinite(c.depth) ||
+            !(c.bounce >= 0 && c.bounce <= 1) || !(footing || (c.friction >= 0 && c.friction <= 1)))
+            finding("pre-solve given a bad Collision: normal " + check::describe(c.normal) +
+                    (isShaped(c.a) || isShaped(c.b) ? " (a shape)" : "") + ", depth " +
+                    std::to_string(c.depth) + ", bounce " + std::to_string(c.bounce) +
+                    ", friction " + std::to_string(c.friction));
         checkList("pre-solve");
         // Every few calls, do what the mode says.
         const int every = 1 + callbackParam_ % 4;
@@ -1388,18 +1756,22 @@ private:
         }
         case 7:
             throw CallbackThrow{};
-        case 8:
+        case 8: {
             // Move and change what the step is working on.
             tamper(c.a);
             tamper(c.b);
             if (inRange(world_.position(c.b) + Vec2{0, -1}))
                 world_.setPosition(c.b, world_.position(c.b) + Vec2{0, -1});
             world_.setVelocity(c.a, world_.type(c.a) == BodyType::Static ? Vec2{} : Vec2{0, -50});
-            // Halved, but not below the smallest size (math.hpp).
-            if (const Vec2 h = world_.halfExtents(c.b) * 0.5f;
-                h.x >= kMinMagnitude && h.y >= kMinMagnitude)
+            // Halved, but not below the smallest size (math.hpp). OPEN QUESTION
+            // tiny-bodies-overflow: bodies piled at the world's corner, some of them halved
+            // within a step down to 2e-9 (masses from 16 to 1e-17), overflow the velocity
+            // solver's impulses: positions become NaN. Until decided, halving stops at 1e-6.
+            const float smallest = check::checkOpen("tiny-bodies-overflow") ? kMinMagnitude : 1e-6f;
+            if (const Vec2 h = world_.halfExtents(c.b) * 0.5f; h.x >= smallest && h.y >= smallest)
                 world_.setHalfExtents(c.b, h);
             return true;
+        }
         case 9:
             // Stale handles must throw here too.
             for (BodyId id : dead_) {
@@ -1685,8 +2057,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (size == 0)
         return 0;
     const bool settled = data[0] % 8 == 0;
-    // 0xFF: a chaos program with the operations of characters (Program).
+    // 0xFF: a chaos program with the operations of characters; 0xFE: and ramps (Program).
     const bool characters = data[0] == 0xFF;
+    const bool ramps = data[0] == 0xFE;
     // JOSTLE_FUZZ_MODE=chaos or settled confines a campaign to one mode (scripts/fuzz.sh
     // gives each its share of the time: settled runs are slow and rich in coverage, and
     // left to itself libFuzzer spends most of its time on them). Inputs of the other mode
@@ -1699,6 +2072,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (settled)
         Settled(in).run();
     else
-        Program(in, characters).run();
+        Program(in, characters, ramps).run();
     return 0;
 }
