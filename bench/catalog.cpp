@@ -34,6 +34,8 @@ Case makeCase(std::string_view family, int size, int warmup, int steps) {
         c.make = [size] { return shared::gas(size); };
     else if (family == "tilemap")
         c.make = [size] { return shared::tilemap(size); };
+    else if (family == "pile")
+        c.make = [size] { return shared::pile(size); };
     else
         throw std::invalid_argument("unknown scene \"" + std::string(family) + "\"");
     return c;
@@ -74,8 +76,16 @@ std::vector<Case> defaultCases(bool quick) {
     };
 }
 
+/// Scenes run only when named: stress, not speed.
+std::vector<Case> stressCases() {
+    // 10,000 boxes dropped at one spot: what a step costs whatever the scene holds.
+    return {makeCase("pile", 10000, 0, 10)};
+}
+
 std::vector<Case> selectCases(std::string_view name, bool quick) {
-    const std::vector<Case> known = defaultCases(quick);
+    std::vector<Case> known = defaultCases(quick);
+    for (Case& c : stressCases())
+        known.push_back(std::move(c));
     std::vector<Case> chosen;
     for (const Case& c : known)
         if (c.name == name || c.family == name)

@@ -20,7 +20,8 @@ struct Case {
     int steps = 0;  ///< steps measured
 };
 
-/// The scene families: pyramid, many_pyramids, rain, gas, tilemap.
+/// The scene families: pyramid, many_pyramids, rain, gas, tilemap; and pile, a stress
+/// scene run only when named (--scene pile_10k).
 const std::vector<std::string_view>& families();
 
 /// The cases run by default (full sizes), or with --quick (small sizes, few steps).

@@ -135,6 +135,17 @@ Scene rain(int count) {
     return scene;
 }
 
+Scene pile(int count) {
+    requirePositive(count, "pile count");
+    Scene scene = emptyScene({0.0f, kGravity});
+    scene.bodies.reserve(static_cast<std::size_t>(count) + 1);
+    addGround(scene, static_cast<float>(count) + 10.0f);
+    for (int i = 0; i < count; ++i)
+        add(scene,
+            {.x = 0.0f, .y = -kUnitHalf, .hw = kUnitHalf, .hh = kUnitHalf, .friction = kFriction});
+    return scene;
+}
+
 Scene gas(int count) {
     requirePositive(count, "gas count");
     constexpr float kSpacing = 3.0f;   // between centres at the start

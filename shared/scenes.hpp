@@ -59,4 +59,9 @@ Scene gas(int count);
 /// 8,000 tiles. actors >= 0.
 Scene tilemap(int actors);
 
+/// `count` unit boxes all at one spot, resting on a static ground wide enough for them to
+/// spread over: a stress scene (every box overlaps every other), which a game never means
+/// to build but a bug or an editor can. count >= 1.
+Scene pile(int count);
+
 } // namespace jostle::shared

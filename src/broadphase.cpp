@@ -38,21 +38,31 @@ Box reach(const Body& body, float dt) {
 class PairFinder {
 public:
     PairFinder(WorldState& world, float dt, std::vector<BodyPair>& pairs)
-        : w_(world), dt_(dt), pairs_(pairs) {}
+        : w_(world), dt_(dt), pairs_(pairs),
+          budget_(static_cast<std::uint32_t>(world.def.physical.maxContactsPerBody)) {}
 
     /// False if sleeping bodies were found in the way and woken: run again.
     bool run() {
         pairs_.clear();
+        w_.pairsLeftOut = 0;
         refreshRestingGrid(w_);
         buildMovingGrid();
         std::vector<std::uint32_t> toWake;
         // The moving grid holds its bodies in creation order: the smaller index is `a`.
+        std::vector<std::uint32_t>& taken = w_.pairsTaken;
+        taken.assign(w_.movingSlots.size(), 0);
         w_.movingGrid.forEachPair([&](std::uint32_t i, std::uint32_t j) {
             const std::uint32_t a = w_.movingSlots[std::min(i, j)];
             const std::uint32_t b = w_.movingSlots[std::max(i, j)];
-            if (w_.movingDynamic[i] || w_.movingDynamic[j] || oneIsSensor(a, b))
-                pairs_.push_back({a, b});
+            if (w_.movingDynamic[i] || w_.movingDynamic[j] || oneIsSensor(a, b)) {
+                if (withinBudget(i, j))
+                    pairs_.push_back({a, b});
+                else
+                    ++w_.pairsLeftOut;
+            }
         });
+        // Resting bodies have a budget of their own: a crowd never crowds out the floor.
+        taken.assign(w_.movingSlots.size(), 0);
         for (std::uint32_t i = 0; i < w_.movingSlots.size(); ++i) {
             const std::uint32_t a = w_.movingSlots[i];
             const Body& body = w_.slots[a];
@@ -65,7 +75,12 @@ public:
                     if (body.isDynamic() || moving)
                         toWake.push_back(b);
                 } else if (body.isDynamic() || oneIsSensor(a, b)) {
-                    add(a, b);
+                    if (taken[i] < budget_) {
+                        ++taken[i];
+                        add(a, b);
+                    } else {
+                        ++w_.pairsLeftOut;
+                    }
                 }
             });
         }
@@ -91,6 +106,19 @@ private:
         w_.movingGrid.build(bounds_);
     }
 
+    /// Whether the moving bodies i and j may have one more pair: a pair counts against
+    /// each dynamic body in it (against a kinematic one only where no dynamic body is).
+    bool withinBudget(std::uint32_t i, std::uint32_t j) {
+        std::vector<std::uint32_t>& taken = w_.pairsTaken;
+        const bool countI = w_.movingDynamic[i] || !w_.movingDynamic[j];
+        const bool countJ = w_.movingDynamic[j] || !w_.movingDynamic[i];
+        if ((countI && taken[i] >= budget_) || (countJ && taken[j] >= budget_))
+            return false;
+        taken[i] += countI ? 1u : 0u;
+        taken[j] += countJ ? 1u : 0u;
+        return true;
+    }
+
     /// A sensor and a body it may report: sensors see every body that moves.
     bool oneIsSensor(std::uint32_t a, std::uint32_t b) const {
         return w_.slots[a].sensor != w_.slots[b].sensor;
@@ -105,6 +133,7 @@ private:
     WorldState& w_;
     float dt_;
     std::vector<BodyPair>& pairs_;
+    std::uint32_t budget_;
 };
 
 } // namespace

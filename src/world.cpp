@@ -109,6 +109,10 @@ std::span<const CrushEvent> World::crushes() const {
     return state_->events.crushes;
 }
 
+std::uint64_t World::pairsLeftOut() const {
+    return state_->pairsLeftOut;
+}
+
 void World::contacts(BodyId id, std::vector<ContactInfo>& out) const {
     lookUp(*state_, id, "contacts");
     out.clear();

@@ -61,6 +61,9 @@ BodyId World::createBody(const BodyDef& def) {
     w.shapes[slot] = shape;
     w.asGiven.resize(w.slots.size());
     w.asGiven[slot] = {def.userData, def.floorAngle};
+    // A body created by a callback may be touched later in the same step.
+    w.events.touching.resize(w.slots.size(), 0);
+    w.events.touching[slot] = 0;
     Body& body = w.slots[slot];
     const std::uint32_t generation = body.generation;
     body = Body{};

@@ -50,6 +50,8 @@ std::optional<FieldError> checkPhysicalOptions(const PhysicalOptions& p) {
         return error("velocityIterations", "must be in [1, 1000]");
     if (p.positionIterations < 0 || p.positionIterations > 1000)
         return error("positionIterations", "must be in [0, 1000]");
+    if (p.maxContactsPerBody < 1 || p.maxContactsPerBody > 65536)
+        return error("maxContactsPerBody", "must be in [1, 65536]");
     if (!(p.slop >= 0.0f && p.slop <= 0.5f))
         return error("slop", "must be in [0, 0.5]");
     if (!(p.correction > 0.0f && p.correction <= 1.0f))

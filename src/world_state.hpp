@@ -152,6 +152,10 @@ struct WorldState {
     PhysicalScratch physical;
     std::vector<BodyPair> pairs;
     std::vector<Box> boundsScratch;
+    /// Pairs each moving body has taken of its budget (PhysicalOptions::maxContactsPerBody),
+    /// by moving-grid index, and how many pairs the last step left out for want of it.
+    std::vector<std::uint32_t> pairsTaken;
+    std::uint64_t pairsLeftOut = 0;
 
     /// When each slot's body was created, as a count of the bodies created before it in
     /// this world: "created before" is the order every solver, event list and query

@@ -173,20 +173,27 @@ TEST(WorldSettings, RoundTripAndChecks) {
     EXPECT_THROW(world.step(kNaN), Error);
 }
 
-// A dynamic box falling onto a floor, and a callback that acts during the step.
+// A dynamic box falling onto a floor, and a callback that acts during the step: in the
+// classic model (the default) or the physical one.
 struct Scene {
-    World world = classicWorld({0, 800});
+    explicit Scene(Solver solver = Solver::Classic)
+        : world(WorldDef{.gravity = {0, 800}, .solver = solver}) {}
+    World world;
     BodyId floor =
         world.createBody({.type = BodyType::Static, .x = 0, .y = 20, .hw = 100, .hh = 10});
     BodyId box = world.createBody({.x = 0, .y = 4, .hw = 5, .hh = 5, .vy = 60});
 };
 
-TEST(DuringStep, DestroyingTheMovingBodyFromACallbackIsSafe) {
-    Scene s;
+// The callback tests hold in either model.
+class DuringStep : public ::testing::TestWithParam<Solver> {};
+
+TEST_P(DuringStep, DestroyingTheMovingBodyFromACallbackIsSafe) {
+    Scene s(GetParam());
     BodyId later = s.world.createBody({.x = 50, .y = 0, .hw = 1, .hh = 1});
     s.world.setPreSolve([&](Collision& c) {
-        s.world.destroyBody(c.a);
-        EXPECT_FALSE(s.world.isValid(c.a));
+        const BodyId moving = c.a == s.box ? c.a : c.b;
+        s.world.destroyBody(moving);
+        EXPECT_FALSE(s.world.isValid(moving));
         return true;
     });
     s.world.step(1.0f / 60);
@@ -201,10 +208,10 @@ TEST(DuringStep, DestroyingTheMovingBodyFromACallbackIsSafe) {
     s.world.step(1.0f / 60);
 }
 
-TEST(DuringStep, DestroyingTheOtherBodyFromACallbackIsSafe) {
-    Scene s;
+TEST_P(DuringStep, DestroyingTheOtherBodyFromACallbackIsSafe) {
+    Scene s(GetParam());
     s.world.setPreSolve([&](Collision& c) {
-        s.world.destroyBody(c.b);
+        s.world.destroyBody(c.a == s.box ? c.b : c.a);
         return true;
     });
     s.world.step(1.0f / 60);
@@ -213,8 +220,8 @@ TEST(DuringStep, DestroyingTheOtherBodyFromACallbackIsSafe) {
     EXPECT_GT(s.world.position(s.box).y, 4.0f);
 }
 
-TEST(DuringStep, BodiesCreatedInACallbackJoinFromTheNextStep) {
-    Scene s;
+TEST_P(DuringStep, BodiesCreatedInACallbackJoinFromTheNextStep) {
+    Scene s(GetParam());
     BodyId spawned;
     s.world.setPreSolve([&](Collision&) {
         if (spawned.isNull()) {
@@ -232,8 +239,8 @@ TEST(DuringStep, BodiesCreatedInACallbackJoinFromTheNextStep) {
     EXPECT_GT(s.world.position(spawned).y, 0.0f);
 }
 
-TEST(DuringStep, SteppingFromACallbackIsRefused) {
-    Scene s;
+TEST_P(DuringStep, SteppingFromACallbackIsRefused) {
+    Scene s(GetParam());
     bool threw = false;
     s.world.setPreSolve([&](Collision&) {
         try {
@@ -311,10 +318,10 @@ TEST(DuringStepDeathTest, DestroyingTheWorldFromItsOwnCallbackStopsWithAMessage)
         "World destroyed from a callback during step");
 }
 
-TEST(DuringStep, AnExceptionFromACallbackLeavesTheWorldUsable) {
-    Scene s;
-    s.world.setPreSolve([&](Collision& c) -> bool {
-        s.world.destroyBody(c.a);
+TEST_P(DuringStep, AnExceptionFromACallbackLeavesTheWorldUsable) {
+    Scene s(GetParam());
+    s.world.setPreSolve([&](Collision&) -> bool {
+        s.world.destroyBody(s.box);
         throw std::runtime_error("game error");
     });
     EXPECT_THROW(s.world.step(1.0f / 60), std::runtime_error);
@@ -323,6 +330,9 @@ TEST(DuringStep, AnExceptionFromACallbackLeavesTheWorldUsable) {
     BodyId again = s.world.createBody({.hw = 1, .hh = 1});
     EXPECT_EQ(again.index, s.box.index); // the destroyed slot was released
 }
+
+INSTANTIATE_TEST_SUITE_P(EitherModel, DuringStep,
+                         ::testing::Values(Solver::Classic, Solver::Physical));
 
 } // namespace
 } // namespace jostle

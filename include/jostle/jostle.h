@@ -193,6 +193,9 @@ typedef struct jostle_physical_options {
     float correction;            ///< in (0, 1], default 0.2
     float restitution_threshold; ///< finite, >= 0; 0 (the default): 2 |gravity| dt
     jostle_friction_mix friction_mix;
+    /// The most bodies a dynamic body touches in a step, moving and at rest each, in
+    /// [1, 65536], default 64: bounds a step's memory (jostle_world_pairs_left_out).
+    int max_contacts_per_body;
 } jostle_physical_options;
 
 /// Everything that describes a world (jostle::WorldDef). Start from
@@ -561,6 +564,9 @@ const jostle_sensor_event* jostle_world_sensor_begins(const jostle_world* world,
 const jostle_sensor_event* jostle_world_sensor_ends(const jostle_world* world, int* count);
 /// Bodies crushed in the last step (physical model): the game decides what happens.
 const jostle_crush_event* jostle_world_crushes(const jostle_world* world, int* count);
+/// Pairs the last step left out because a dynamic body had more than
+/// max_contacts_per_body of them (physical model): 0 in a sane scene.
+uint64_t jostle_world_pairs_left_out(const jostle_world* world);
 
 // === The pre-solve callback ================================================================
 

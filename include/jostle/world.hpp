@@ -87,6 +87,13 @@ struct PhysicalOptions {
     /// not buzz), >= 0. 0 means automatic: twice what gravity adds in one step, 2 |g| dt.
     float restitutionThreshold = 0.0f;
     FrictionMix frictionMix = FrictionMix::Min;
+    /// The most bodies a dynamic body may be in contact with in one step, in [1, 65536]:
+    /// so many moving ones and as many at rest (static or asleep). It bounds a step's
+    /// memory and time, whatever the scene holds: a pile of bodies dropped at one spot
+    /// costs at most bodies × 2 × this many contacts. Pairs beyond it, in the broadphase's
+    /// fixed order, are left out of that step (they pass into each other); World::
+    /// pairsLeftOut() counts them. No sensible scene comes near the default.
+    int maxContactsPerBody = 64;
 };
 
 /// Everything that describes a world. The names are those of scene files.
@@ -368,6 +375,9 @@ public:
     /// Bodies squeezed in the last step between a moving kinematic body and something
     /// that would not give way (physical model): the game decides (crush, or rescue).
     std::span<const CrushEvent> crushes() const;
+    /// Pairs of bodies the last step left out because a dynamic body had more than
+    /// PhysicalOptions::maxContactsPerBody of them (physical model): 0 in a sane scene.
+    std::uint64_t pairsLeftOut() const;
     /// What the body touched in the last step, relative to gravity (physical model).
     Touching touching(BodyId id) const;
 

@@ -109,11 +109,13 @@ inline PhysicalOptions toCpp(const jostle_physical_options& o) {
             .slop = o.slop,
             .correction = o.correction,
             .restitutionThreshold = o.restitution_threshold,
-            .frictionMix = toCpp(o.friction_mix)};
+            .frictionMix = toCpp(o.friction_mix),
+            .maxContactsPerBody = o.max_contacts_per_body};
 }
 inline jostle_physical_options toC(const PhysicalOptions& o) {
     return {o.velocityIterations, o.positionIterations,   o.slop,
-            o.correction,         o.restitutionThreshold, toC(o.frictionMix)};
+            o.correction,         o.restitutionThreshold, toC(o.frictionMix),
+            o.maxContactsPerBody};
 }
 
 inline WorldDef toCpp(const jostle_world_def& d) {

@@ -67,4 +67,8 @@ const jostle_crush_event* jostle_world_crushes(const jostle_world* world, int* c
     return handOut(__func__, world, count, &jostle_world::crushes);
 }
 
+uint64_t jostle_world_pairs_left_out(const jostle_world* world) {
+    return guard(__func__, std::uint64_t{0}, [&] { return worldOf(world).world.pairsLeftOut(); });
+}
+
 } // extern "C"

@@ -216,6 +216,8 @@ PhysicalOptions readPhysical(const Json& value, const std::string& place) {
             options.correction = readFloat(fieldValue, at);
         else if (name == "restitutionThreshold")
             options.restitutionThreshold = readFloat(fieldValue, at);
+        else if (name == "maxContactsPerBody")
+            options.maxContactsPerBody = readInt(fieldValue, at);
         else if (name == "frictionMix")
             options.frictionMix = readFrictionMix(fieldValue, at);
         else

@@ -108,6 +108,7 @@ static void test_defaults(void) {
     CHECK(w.physical.velocity_iterations == 4 && w.physical.position_iterations == 3,
           "physical iterations");
     CHECK(w.physical.friction_mix == JOSTLE_FRICTION_MIX_MIN, "friction mix");
+    CHECK(w.physical.max_contacts_per_body == 64, "contact budget");
     CHECK(!w.classic.mass && !w.classic.coulomb && !w.classic.ccd, "classic options off");
 
     jostle_body_def b = jostle_default_body_def();
@@ -295,11 +296,16 @@ static void test_world_settings(void) {
     physical.velocity_iterations = 12;
     physical.slop = 0.02f;
     physical.friction_mix = JOSTLE_FRICTION_MIX_GEOMETRIC_MEAN;
+    physical.max_contacts_per_body = 8;
     CHECK(jostle_world_set_physical_options(world, physical), "set physical options");
     physical = jostle_world_get_physical_options(world);
     CHECK(physical.velocity_iterations == 12 && physical.slop == 0.02f &&
-              physical.friction_mix == JOSTLE_FRICTION_MIX_GEOMETRIC_MEAN,
+              physical.friction_mix == JOSTLE_FRICTION_MIX_GEOMETRIC_MEAN &&
+              physical.max_contacts_per_body == 8,
           "physical options back");
+    physical.max_contacts_per_body = 0;
+    CHECK(!jostle_world_set_physical_options(world, physical), "a budget of 0 is refused");
+    jostle_clear_error();
     CHECK(jostle_world_destroy(world), "destroy");
     CHECK_NO_ERROR();
 }

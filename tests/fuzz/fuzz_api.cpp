@@ -1727,14 +1727,32 @@ private:
             return true;
         }
         case 4: {
+            // Create a body of any type: clear above the pair, or right where one of it is
+            // (in the way of bodies the step has yet to resolve); and destroy another.
             if (live_.size() >= kMaxBodies || callbackCalls_ > 8)
                 return true;
-            const Vec2 p = world_.position(c.a);
-            if (!inRange(p.y - 20))
+            const int choice = (callbackParam_ >> 2) + callbackCalls_;
+            const BodyType type = std::array{BodyType::Dynamic, BodyType::Static,
+                                             BodyType::Kinematic}[std::size_t(choice % 3)];
+            const Vec2 p = world_.position(choice & 4 ? c.b : c.a);
+            const float lift = choice & 8 ? 0.0f : 20.0f;
+            if (!inRange(p.y - lift))
                 return true;
-            const BodyId id = world_.createBody(
-                {.x = p.x, .y = p.y - 20, .hw = 2, .hh = 2, .vy = 10, .bounce = 0.5f});
+            const bool moves = type != BodyType::Static;
+            const BodyId id = world_.createBody({.type = type,
+                                                 .x = p.x,
+                                                 .y = p.y - lift,
+                                                 .hw = 2,
+                                                 .hh = 2,
+                                                 .vy = moves ? 10.0f : 0.0f,
+                                                 .bounce = 0.5f});
             live_.push_back(id);
+            if (choice & 16 && live_.size() > 1) {
+                const BodyId victim = live_[std::size_t(choice) % (live_.size() - 1)];
+                tamper(victim);
+                world_.destroyBody(victim);
+                buried(victim);
+            }
             return true;
         }
         case 5:

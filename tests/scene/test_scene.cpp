@@ -57,7 +57,8 @@ TEST(SceneParse, EveryFieldIsReadAsWritten) {
         "gravity": [1.5, -800], "maxVelocity": 1000, "dt": 0.01, "solver": "classic",
         "classic": {"mass": true, "coulomb": true, "ccd": true}, "sleeping": false,
         "physical": {"velocityIterations": 4, "positionIterations": 0, "slop": 0.125,
-                     "correction": 0.5, "restitutionThreshold": 2, "frictionMix": "geometricMean"},
+                     "correction": 0.5, "restitutionThreshold": 2, "frictionMix": "geometricMean",
+                     "maxContactsPerBody": 9},
         "bodies": [
           {"id": "floor", "type": "static", "x": -3, "y": 300, "hw": 400, "hh": 10,
            "bounce": 0, "friction": 0.25},
@@ -82,6 +83,7 @@ TEST(SceneParse, EveryFieldIsReadAsWritten) {
     EXPECT_EQ(scene.world.physical.correction, 0.5f);
     EXPECT_EQ(scene.world.physical.restitutionThreshold, 2.0f);
     EXPECT_EQ(scene.world.physical.frictionMix, FrictionMix::GeometricMean);
+    EXPECT_EQ(scene.world.physical.maxContactsPerBody, 9);
 
     ASSERT_EQ(scene.bodies.size(), 3u);
     const SceneBody& floor = scene.bodies[0];

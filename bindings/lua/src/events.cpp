@@ -169,6 +169,13 @@ int worldGetCrushes(lua_State* L) {
         });
 }
 
+/// Pairs the last step left out for want of maxContactsPerBody (0 in a sane scene).
+int worldGetPairsLeftOut(lua_State* L) {
+    const WorldData& world = checkWorld(L, 1, "World:getPairsLeftOut");
+    pushWhole(L, static_cast<std::int64_t>(world.world.pairsLeftOut()));
+    return 1;
+}
+
 // --- The pre-solve callback --------------------------------------------------------------
 
 /// world:setPreSolve(function(c) ... end) or nil to remove it. Changed from inside the
@@ -198,6 +205,7 @@ constexpr luaL_Reg kEventMethods[] = {
     {"getSensorBegins", worldGetSensorBegins},
     {"getSensorEnds", worldGetSensorEnds},
     {"getCrushes", worldGetCrushes},
+    {"getPairsLeftOut", worldGetPairsLeftOut},
     {"setPreSolve", worldSetPreSolve},
     {"getPreSolve", worldGetPreSolve},
     {nullptr, nullptr},

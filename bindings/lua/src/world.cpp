@@ -30,14 +30,15 @@ void readClassic(const Fields& fields, ClassicOptions& options) {
 
 void readPhysical(const Fields& fields, PhysicalOptions& options) {
     static constexpr const char* kNames[] = {
-        "velocityIterations",   "positionIterations", "slop", "correction",
-        "restitutionThreshold", "frictionMix",        nullptr};
+        "velocityIterations", "positionIterations", "slop", "correction", "restitutionThreshold",
+        "frictionMix",        "maxContactsPerBody", nullptr};
     fields.allowOnly(kNames);
     fields.whole("velocityIterations", options.velocityIterations, 1, 1000);
     fields.whole("positionIterations", options.positionIterations, 0, 1000);
     fields.number("slop", options.slop);
     fields.number("correction", options.correction);
     fields.number("restitutionThreshold", options.restitutionThreshold);
+    fields.whole("maxContactsPerBody", options.maxContactsPerBody, 1, 65536);
     int mix = 0;
     if (fields.option("frictionMix", mix, kFrictionMixNames))
         options.frictionMix = mix == 0 ? FrictionMix::Min : FrictionMix::GeometricMean;
@@ -104,7 +105,7 @@ void pushClassicOptions(lua_State* L, const ClassicOptions& options) {
 }
 
 void pushPhysicalOptions(lua_State* L, const PhysicalOptions& options) {
-    lua_createtable(L, 0, 6);
+    lua_createtable(L, 0, 7);
     pushWhole(L, options.velocityIterations);
     lua_setfield(L, -2, "velocityIterations");
     pushWhole(L, options.positionIterations);
@@ -117,6 +118,8 @@ void pushPhysicalOptions(lua_State* L, const PhysicalOptions& options) {
     lua_setfield(L, -2, "restitutionThreshold");
     lua_pushstring(L, kFrictionMixNames[options.frictionMix == FrictionMix::Min ? 0 : 1]);
     lua_setfield(L, -2, "frictionMix");
+    pushWhole(L, options.maxContactsPerBody);
+    lua_setfield(L, -2, "maxContactsPerBody");
 }
 
 // --- Methods -----------------------------------------------------------------------------

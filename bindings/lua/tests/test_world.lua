@@ -281,6 +281,25 @@ test("world settings: gravity, maxVelocity, solver, sleeping, options", function
   t.equal(default:getSolver(), "physical", "default solver")
   t.equal(default:getMaxVelocity(), math.huge, "default maxVelocity")
   t.equal(default:getSleeping(), true, "default sleeping")
+  t.equal(default:getPhysicalOptions().maxContactsPerBody, 64, "default contact budget")
+end)
+
+-- Each dynamic body has a budget of contacts per step (maxContactsPerBody): boxes dropped
+-- at one spot make n (n - 1) / 2 pairs, of which a budget of 4 keeps at most 2 per box.
+test("a pile at one spot keeps to the contact budget and says what it left out", function()
+  local world = jostle.newWorld({gravity = {0, 10}, physical = {maxContactsPerBody = 4}})
+  world:newBody({type = "static", x = 0, y = 1, hw = 100, hh = 1})
+  for _ = 1, 30 do world:newBody({x = 0, y = -0.5, hw = 0.5, hh = 0.5}) end
+  world:step(1 / 60)
+  -- 435 pairs among the boxes; each box takes part in at most 4: at most 30 * 4 / 2 kept.
+  t.truthy(world:getPairsLeftOut() >= 435 - 60, "pairs left out: " .. world:getPairsLeftOut())
+  local quiet = jostle.newWorld({gravity = {0, 10}})
+  quiet:newBody({type = "static", x = 0, y = 1, hw = 100, hh = 1})
+  quiet:newBody({x = 0, y = -0.5, hw = 0.5, hh = 0.5})
+  quiet:step(1 / 60)
+  t.equal(quiet:getPairsLeftOut(), 0, "a sane scene leaves nothing out")
+  t.raises({"World:setPhysicalOptions", "maxContactsPerBody: must be from 1 to 65536"},
+    function() world:setPhysicalOptions({maxContactsPerBody = 0}) end)
 end)
 
 test("maxVelocity clamps a falling body's speed", function()
