@@ -70,44 +70,35 @@ std::uint8_t fillIndex(BodyType type, bool sleeping) {
 }
 
 WorldBox boxOf(const World& world, BodyId body) {
-    const Vec2 centre = world.position(body);
-    const Vec2 half = world.halfExtents(body);
-    return {{centre.x - half.x, centre.y - half.y}, {centre.x + half.x, centre.y + half.y}};
+    return {world.position(body), world.halfExtents(body)};
 }
 
-/// The box that holds every body (tile maps are bodies too), or a 2 × 2 one around the
+/// The view of every body (tile maps are bodies too), or of a 2 × 2 box around the
 /// origin in a world without any.
-WorldBox boundsOf(const World& world) {
-    const auto bodies = world.bodies();
-    if (bodies.empty())
-        return {{-1.0f, -1.0f}, {1.0f, 1.0f}};
-    WorldBox bounds = boxOf(world, bodies.front());
-    for (BodyId body : bodies) {
-        const WorldBox box = boxOf(world, body);
-        bounds.min = {std::min(bounds.min.x, box.min.x), std::min(bounds.min.y, box.min.y)};
-        bounds.max = {std::max(bounds.max.x, box.max.x), std::max(bounds.max.y, box.max.y)};
-    }
-    return bounds;
+View viewOf(const World& world) {
+    std::vector<WorldBox> boxes;
+    for (BodyId body : world.bodies())
+        boxes.push_back(boxOf(world, body));
+    return View::of(boxes);
 }
 
-/// The side not given, from the one given and the shape of the bounds with their margin.
+/// The side not given, from the one given and the shape of the view: 1 to kMaxImageSide.
 int fittedSide(double givenSide, double givenSpan, double otherSpan) {
     const double side = std::round(givenSide * otherSpan / givenSpan);
-    return static_cast<int>(std::clamp(side, 1.0, static_cast<double>(kMaxImageSide)));
+    if (!(side >= 1.0)) // also what is not a number
+        return 1;
+    return static_cast<int>(std::min(side, static_cast<double>(kMaxImageSide)));
 }
 
-void imageSize(const RenderOptions& options, WorldBox bounds, int& width, int& height) {
-    const double spanX = static_cast<double>(bounds.max.x) - static_cast<double>(bounds.min.x);
-    const double spanY = static_cast<double>(bounds.max.y) - static_cast<double>(bounds.min.y);
-    const double margin = 2.0 * std::max(spanX, spanY) * kMarginFraction;
+void imageSize(const RenderOptions& options, const View& view, int& width, int& height) {
     width = static_cast<int>(options.width);
     height = static_cast<int>(options.height);
     if (width == 0 && height == 0)
         width = kDefaultImageWidth;
     if (height == 0)
-        height = fittedSide(width, spanX + margin, spanY + margin);
+        height = fittedSide(width, view.width(), view.height());
     else if (width == 0)
-        width = fittedSide(height, spanY + margin, spanX + margin);
+        width = fittedSide(height, view.height(), view.width());
 }
 
 /// The tick on a segment's blocking side: a sixth of its length, 3 to 8 pixels.
@@ -193,11 +184,11 @@ int render(const RenderOptions& options) {
     addTileMaps(world, scene);
     addBodies(world, scene);
 
-    const WorldBox bounds = boundsOf(world);
+    const View view = viewOf(world);
     int width = 0;
     int height = 0;
-    imageSize(options, bounds, width, height);
-    const Camera camera = Camera::fit(bounds, width, height);
+    imageSize(options, view, width, height);
+    const Camera camera(view, width, height);
     Canvas canvas(width, height);
     const std::vector<Rgb> palette = makePalette();
 
