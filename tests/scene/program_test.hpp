@@ -56,8 +56,17 @@ protected:
 
     /// Runs `jostle ARGS`, capturing the exit status, stdout and stderr.
     ProgramResult run(const std::string& args) {
-        const std::string command = quote(JOSTLE_EXE) + " " + args + " >" + quote(path("stdout")) +
-                                    " 2>" + quote(path("stderr"));
+        std::string redirection = ">";
+        redirection += quote(path("stdout"));
+        return run(args, redirection);
+    }
+
+    /// Runs `jostle ARGS` with stdout sent where the shell's `redirection` says
+    /// (">/dev/full", ">&-" to close it), capturing the exit status and stderr.
+    ProgramResult run(const std::string& args, const std::string& redirection) {
+        std::filesystem::remove(path("stdout"));
+        const std::string command =
+            quote(JOSTLE_EXE) + " " + args + " " + redirection + " 2>" + quote(path("stderr"));
         const int raw = std::system(command.c_str());
         ProgramResult result;
         if (raw != -1 && WIFEXITED(raw))

@@ -401,6 +401,52 @@ TEST_F(Cli, TraceFileThatCannotBeCreated) {
     EXPECT_EQ(r.err, "jostle: error: " + trace + ": cannot write: No such file or directory\n");
 }
 
+// --- Output that cannot be written: exit status 1 and a message saying why -------------
+
+// /dev/full refuses every write with ENOSPC; a closed descriptor with EBADF.
+TEST_F(Cli, SummaryThatCannotBeWritten) {
+    const std::string scene = quote(write("free.json", kFreeScene));
+    const Result full = run("run " + scene + " --steps 1", ">/dev/full");
+    EXPECT_EQ(full.status, 1);
+    EXPECT_EQ(full.err, "jostle: error: cannot write the summary to standard output: No space "
+                        "left on device\n");
+    const Result closed = run("run " + scene + " --steps 1", ">&-");
+    EXPECT_EQ(closed.status, 1);
+    EXPECT_EQ(closed.err,
+              "jostle: error: cannot write the summary to standard output: Bad file descriptor\n");
+}
+
+TEST_F(Cli, TraceThatCannotBeWritten) {
+    const std::string scene = quote(write("floor.json", kFloorScene));
+    // 2,000 steps fill stdio's buffer many times: the run ends at the first write that fails.
+    const Result full = run("run " + scene + " --steps 2000 --trace -", ">/dev/full");
+    EXPECT_EQ(full.status, 1);
+    EXPECT_EQ(full.err, "jostle: error: cannot write the trace to standard output: No space "
+                        "left on device\n");
+    const Result closed = run("run " + scene + " --steps 3 --trace -", ">&-");
+    EXPECT_EQ(closed.status, 1);
+    EXPECT_EQ(closed.err,
+              "jostle: error: cannot write the trace to standard output: Bad file descriptor\n");
+
+    // A trace file on a full disk: a name for /dev/full.
+    const std::string trace = path("trace.csv");
+    std::filesystem::create_symlink("/dev/full", trace);
+    const Result file = run("run " + scene + " --steps 3 --trace " + quote(trace));
+    EXPECT_EQ(file.status, 1);
+    EXPECT_EQ(file.err, "jostle: error: " + trace + ": write failed: No space left on device\n");
+    EXPECT_EQ(file.out, "");
+}
+
+// A closed standard output is not taken by the files the program opens.
+TEST_F(Cli, TraceFileWithStandardOutputClosed) {
+    const std::string scene = write("free.json", kFreeScene);
+    const std::string trace = path("trace.csv");
+    const Result r = run("run " + quote(scene) + " -n 2 --trace " + quote(trace), ">&-");
+    EXPECT_EQ(r.status, 0);
+    EXPECT_EQ(r.err, "");
+    EXPECT_EQ(readAll(trace), "step,id,x,y,vx,vy\n1,ball,1,-2,4,-8\n2,ball,2,-4,4,-8\n");
+}
+
 TEST_F(Cli, BadOptions) {
     const std::string scene = quote(write("free.json", kFreeScene));
     for (const std::string& args : {
