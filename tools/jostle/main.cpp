@@ -179,6 +179,26 @@ int run(const RunOptions& options) {
     return 0;
 }
 
+/// What is wrong with the command line when its first word is neither a command nor
+/// help, naming that word and the commands there are; empty when nothing is.
+std::string commandProblem(CLI::App& app, int argc, char** argv) {
+    const std::string first = argc > 1 ? argv[1] : "";
+    std::string names;
+    bool known = false;
+    for (const CLI::App* command : app.get_subcommands([](CLI::App*) { return true; })) {
+        names += (names.empty() ? "" : ", ") + command->get_name();
+        known = known || command->check_name(first);
+    }
+    const std::string commands = " (commands: " + names + ")";
+    if (argc < 2)
+        return "a command is required" + commands;
+    if (known || app.get_help_ptr()->check_name(first))
+        return {};
+    if (first.starts_with('-'))
+        return "unknown option '" + first + "'" + commands;
+    return "unknown command '" + first + "'" + commands;
+}
+
 /// Keeps the standard descriptors taken: one that is closed is opened on /dev/null the
 /// other way round (input for writing, outputs for reading). So no file the program opens
 /// takes its number, and writing to a closed standard output still fails, with EBADF.
@@ -245,18 +265,23 @@ int main(int argc, char** argv) {
         ->check(atLeast(1));
     addSolverOption(*renderCommand, renderOptions.solver);
 
+    const auto badUsage = [](const std::string& message, const char* command) {
+        printError(message);
+        std::fprintf(stderr, "Run '%s --help' for usage.\n", command);
+        return kBadInput;
+    };
+    // CLI11 says "A subcommand is required" whatever the first word is.
+    if (const std::string problem = commandProblem(app, argc, argv); !problem.empty())
+        return badUsage(problem, "jostle");
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& error) {
         // --help is a ParseError that succeeds; CLI11 prints the help of the right command.
         if (error.get_exit_code() == 0)
             return app.exit(error);
-        printError(error.what());
-        std::fprintf(stderr, "Run '%s --help' for usage.\n",
-                     runCommand->parsed()      ? "jostle run"
-                     : renderCommand->parsed() ? "jostle render"
-                                               : "jostle");
-        return kBadInput;
+        return badUsage(error.what(), runCommand->parsed()      ? "jostle run"
+                                      : renderCommand->parsed() ? "jostle render"
+                                                                : "jostle");
     }
 
     const std::string& scenePath = renderCommand->parsed() ? renderOptions.scene : options.scene;
