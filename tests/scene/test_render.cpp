@@ -297,6 +297,25 @@ TEST_F(Render, ExampleSceneMakesAGifOfTheDefaultWidth) {
     EXPECT_EQ(gif.frames, 5); // the default --every is 2
 }
 
+// A full disk (a name for /dev/full, which refuses every write with ENOSPC) gives the same
+// message for either image, whether the first write that fails is early (a big picture)
+// or the last (a small one, written when the file is closed); exit status 1.
+TEST_F(Render, AnImageThatCannotBeWrittenSaysWhy) {
+    const std::string scene = write("box.json", kOneBox);
+    for (const std::string name : {"full.gif", "full.png"}) {
+        const std::string image = path(name);
+        std::filesystem::create_symlink("/dev/full", image);
+        for (const std::string size : {"--width 8 --height 8 --steps 0", "--width 640"}) {
+            SCOPED_TRACE(name);
+            SCOPED_TRACE(size);
+            const Result result = render(scene + " --out " + image + " " + size);
+            EXPECT_EQ(result.status, 1);
+            EXPECT_EQ(result.err,
+                      "jostle: error: " + image + ": write failed: No space left on device\n");
+        }
+    }
+}
+
 TEST_F(Render, BadInputExitsWith2AndNamesTheProblem) {
     const std::string scene = write("box.json", kOneBox);
     const std::string out = " --out " + path("x.png");

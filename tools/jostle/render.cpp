@@ -215,7 +215,7 @@ int render(const RenderOptions& options) {
 
     GifWriter gif;
     if (const std::string error = gif.open(options.out, width, height, palette); !error.empty()) {
-        printError(options.out + ": cannot write: " + (errno != 0 ? systemMessage(errno) : error));
+        printError(options.out + ": cannot write: " + error);
         return kBadInput;
     }
     const int delay = frameDelay(scene, options.every);
