@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <regex>
 #include <sstream>
 #include <string>
 #include <sys/wait.h>
@@ -17,6 +18,7 @@
 namespace {
 
 using ::testing::HasSubstr;
+using ::testing::Not;
 using ::testing::StartsWith;
 
 using Result = jostle::testing::ProgramResult;
@@ -308,6 +310,58 @@ TEST_F(Cli, TileMapsAreTakenIntoTheWorld) {
     // Resting on the map's floor, whose top is at y = 116, within the slop (0.01 × 8).
     EXPECT_EQ(rows[0].id, "box");
     EXPECT_NEAR(rows[0].y, 116.0f - 8.0f, 0.08f);
+}
+
+// --- Progress: on a terminal only ------------------------------------------------------
+
+// The tests' standard error is a file: no progress in it, however long the run.
+TEST_F(Cli, NoProgressWhenStandardErrorIsNotATerminal) {
+    const std::string scene = quote(write("floor.json", kFloorScene));
+    const Result summary = run("run " + scene + " --steps 3000");
+    EXPECT_EQ(summary.status, 0);
+    EXPECT_EQ(summary.err, "");
+    const Result trace = run("run " + scene + " --steps 3000 --every 1000 --trace -");
+    EXPECT_EQ(trace.status, 0);
+    EXPECT_EQ(trace.err, "");
+    EXPECT_EQ(rowsOf(trace.out).size(), 3u * 3u);
+}
+
+/// True if what the terminal received is progress lines of `label` for `total` steps and
+/// their erasing, nothing else.
+bool onlyProgress(const std::string& received, const std::string& label, int total) {
+    const std::regex line(label + R"(: step \d+ of )" + std::to_string(total) + R"( \(\d+%\)| *)");
+    for (const std::string& piece : split(received, '\r'))
+        if (!std::regex_match(piece, line))
+            return false;
+    return true;
+}
+
+// With standard error on a terminal: "jostle run: step 0 of 50 (0%)" at once, redrawn in
+// place (the line's start, "\r") a few times a second, erased at the end. Standard
+// output, a file here, has the summary or the trace as ever.
+TEST_F(Cli, ProgressOnATerminal) {
+    const std::string scene = quote(write("floor.json", kFloorScene));
+    const Result summary = runOnTerminal("run " + scene + " --steps 50");
+    EXPECT_EQ(summary.status, 0);
+    EXPECT_THAT(summary.err, StartsWith("\rjostle run: step 0 of 50 (0%)"));
+    EXPECT_TRUE(onlyProgress(summary.err, "jostle run", 50)) << summary.err;
+    EXPECT_EQ(jostle::testing::lastLineShown(summary.err), "");
+    EXPECT_THAT(summary.out, HasSubstr("steps      50 of 0.25 s"));
+    EXPECT_THAT(summary.out, Not(HasSubstr("jostle run")));
+
+    const Result trace = runOnTerminal("run " + scene + " --steps 50 --trace -");
+    EXPECT_EQ(trace.status, 0);
+    EXPECT_THAT(trace.err, StartsWith("\rjostle run: step 0 of 50 (0%)"));
+    EXPECT_EQ(jostle::testing::lastLineShown(trace.err), "");
+    EXPECT_EQ(trace.out, run("run " + scene + " --steps 50 --trace -").out);
+}
+
+// A trace to the terminal the progress would be drawn on: no progress, to keep its lines.
+TEST_F(Cli, NoProgressOverATraceOnTheSameTerminal) {
+    const std::string scene = quote(write("free.json", kFreeScene));
+    const Result r = runOnTerminal("run " + scene + " --steps 2 --trace -", true);
+    EXPECT_EQ(r.status, 0);
+    EXPECT_EQ(r.err, "step,id,x,y,vx,vy\r\n1,ball,1,-2,4,-8\r\n2,ball,2,-4,4,-8\r\n");
 }
 
 // --- Bad input: exit status 2 and a message naming the place -----------------------

@@ -316,6 +316,25 @@ TEST_F(Render, AnImageThatCannotBeWrittenSaysWhy) {
     }
 }
 
+// Progress on standard error when it is a terminal, erased at the end; none otherwise.
+TEST_F(Render, ProgressOnATerminalOnly) {
+    const std::string scene = write("box.json", kOneBox);
+    for (const std::string name : {"anim.gif", "last.png"}) {
+        SCOPED_TRACE(name);
+        const std::string args = scene + " --out " + path(name) + " --width 32 --steps 300";
+        const Result quiet = render(args);
+        EXPECT_EQ(quiet.status, 0);
+        EXPECT_EQ(quiet.err, "");
+
+        const Result shown = runOnTerminal("render " + args);
+        EXPECT_EQ(shown.status, 0);
+        EXPECT_THAT(shown.err, ::testing::StartsWith("\rjostle render: step 0 of 300 (0%)"));
+        EXPECT_EQ(jostle::testing::lastLineShown(shown.err), "");
+        EXPECT_EQ(shown.out, "");
+    }
+    EXPECT_EQ(readGif(path("anim.gif")).frames, 151); // the GIF is whole
+}
+
 TEST_F(Render, BadInputExitsWith2AndNamesTheProblem) {
     const std::string scene = write("box.json", kOneBox);
     const std::string out = " --out " + path("x.png");

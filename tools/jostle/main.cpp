@@ -6,8 +6,10 @@
 //
 // Exit status: 0 when all went well; 2 for bad input (options, scene file, a value the
 // world refuses); 1 when the output cannot be written or something unexpected fails.
+// Progress of the steps on standard error when it is a terminal (progress.hpp).
 #include "errors.hpp"
 #include "load_scene.hpp"
+#include "progress.hpp"
 #include "render.hpp"
 #include "summary.hpp"
 #include "trace.hpp"
@@ -160,14 +162,17 @@ int run(const RunOptions& options) {
         jostle::cli::writeTraceHeader(output.get());
     }
 
+    jostle::cli::Progress progress("jostle run", options.steps, output.isStdout() && tracing);
     const auto start = std::chrono::steady_clock::now();
     // A trace that cannot be written ends the run: the steps after it would be lost.
     for (std::int64_t step = 1; step <= options.steps && output.good(); ++step) {
         world.step(scene.dt);
         if (tracing && step % options.every == 0)
             jostle::cli::writeTraceRows(output.get(), step, world, traced);
+        progress.update(step);
     }
     const auto wallTime = std::chrono::steady_clock::now() - start;
+    progress.erase();
 
     if (!tracing && output.good()) {
         errno = 0;

@@ -7,6 +7,7 @@
 #include "errors.hpp"
 #include "image_files.hpp"
 #include "load_scene.hpp"
+#include "progress.hpp"
 
 #include "jostle/scene.hpp"
 #include "shared/drawn_shape.hpp"
@@ -199,8 +200,12 @@ int render(const RenderOptions& options) {
             printError(options.out + ": cannot write: " + systemMessage(errno));
             return kBadInput;
         }
-        for (std::int64_t step = 1; step <= options.steps; ++step)
+        Progress progress("jostle render", options.steps, false);
+        for (std::int64_t step = 1; step <= options.steps; ++step) {
             world.step(scene.dt);
+            progress.update(step);
+        }
+        progress.erase();
         draw(canvas, camera, world);
         std::string error = writePng(file.get(), canvas, palette);
         errno = 0;
@@ -220,14 +225,17 @@ int render(const RenderOptions& options) {
     }
     const int delay = frameDelay(scene, options.every);
     std::string error;
+    Progress progress("jostle render", options.steps, false);
     for (std::int64_t step = 0; step <= options.steps && error.empty(); ++step) {
         if (step > 0)
             world.step(scene.dt);
-        if (step % options.every != 0)
-            continue;
-        draw(canvas, camera, world);
-        error = gif.addFrame(canvas, delay);
+        if (step % options.every == 0) {
+            draw(canvas, camera, world);
+            error = gif.addFrame(canvas, delay);
+        }
+        progress.update(step);
     }
+    progress.erase();
     if (error.empty())
         error = gif.close();
     if (!error.empty()) {
