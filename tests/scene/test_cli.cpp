@@ -457,37 +457,39 @@ TEST_F(Cli, TraceFileThatCannotBeCreated) {
 
 // --- Output that cannot be written: exit status 1 and a message saying why -------------
 
-// /dev/full refuses every write with ENOSPC; a closed descriptor with EBADF.
-TEST_F(Cli, SummaryThatCannotBeWritten) {
-    const std::string scene = quote(write("free.json", kFreeScene));
-    const Result full = run("run " + scene + " --steps 1", ">/dev/full");
-    EXPECT_EQ(full.status, 1);
-    EXPECT_EQ(full.err, "jostle: error: cannot write the summary to standard output: No space "
-                        "left on device\n");
-    const Result closed = run("run " + scene + " --steps 1", ">&-");
-    EXPECT_EQ(closed.status, 1);
-    EXPECT_EQ(closed.err,
-              "jostle: error: cannot write the summary to standard output: Bad file descriptor\n");
-}
-
-TEST_F(Cli, TraceThatCannotBeWritten) {
+// /dev/full refuses every write with ENOSPC; a closed descriptor with EBADF. A summary
+// is written at the end; a trace of 2,000 steps fills stdio's buffer many times, and the
+// run ends at the first write that fails; one of 3 steps is written when it is flushed.
+TEST_F(Cli, OutputThatCannotBeWritten) {
     const std::string scene = quote(write("floor.json", kFloorScene));
-    // 2,000 steps fill stdio's buffer many times: the run ends at the first write that fails.
-    const Result full = run("run " + scene + " --steps 2000 --trace -", ">/dev/full");
-    EXPECT_EQ(full.status, 1);
-    EXPECT_EQ(full.err, "jostle: error: cannot write the trace to standard output: No space "
-                        "left on device\n");
-    const Result closed = run("run " + scene + " --steps 3 --trace -", ">&-");
-    EXPECT_EQ(closed.status, 1);
-    EXPECT_EQ(closed.err,
-              "jostle: error: cannot write the trace to standard output: Bad file descriptor\n");
+    struct Case {
+        std::string args;
+        std::string redirection;
+        std::string message;
+    };
+    const std::string summary = "cannot write the summary to standard output: ";
+    const std::string trace = "cannot write the trace to standard output: ";
+    const std::vector<Case> cases = {
+        {"--steps 1", ">/dev/full", summary + "No space left on device"},
+        {"--steps 1", ">&-", summary + "Bad file descriptor"},
+        {"--steps 2000 --trace -", ">/dev/full", trace + "No space left on device"},
+        {"--steps 3 --trace -", ">/dev/full", trace + "No space left on device"},
+        {"--steps 3 --trace -", ">&-", trace + "Bad file descriptor"},
+    };
+    for (const Case& c : cases) {
+        SCOPED_TRACE(c.args + " " + c.redirection);
+        const Result r = run("run " + scene + " " + c.args, c.redirection);
+        EXPECT_EQ(r.status, 1);
+        EXPECT_EQ(r.err, "jostle: error: " + c.message + "\n");
+    }
 
     // A trace file on a full disk: a name for /dev/full.
-    const std::string trace = path("trace.csv");
-    std::filesystem::create_symlink("/dev/full", trace);
-    const Result file = run("run " + scene + " --steps 3 --trace " + quote(trace));
+    const std::string traceFile = path("trace.csv");
+    std::filesystem::create_symlink("/dev/full", traceFile);
+    const Result file = run("run " + scene + " --steps 3 --trace " + quote(traceFile));
     EXPECT_EQ(file.status, 1);
-    EXPECT_EQ(file.err, "jostle: error: " + trace + ": write failed: No space left on device\n");
+    EXPECT_EQ(file.err,
+              "jostle: error: " + traceFile + ": write failed: No space left on device\n");
     EXPECT_EQ(file.out, "");
 }
 

@@ -107,26 +107,31 @@ protected:
 constexpr const char* kOneBox = R"({"bodies": [
     {"type": "static", "x": 100, "y": -50, "hw": 10, "hh": 10}]})";
 
-TEST_F(Render, PngOfOneBoxHasTheBoxWhereTheCameraRulePutsIt) {
-    const std::string scene = write("box.json", kOneBox);
-    const Result result =
-        render(scene + " --out " + path("box.png") + " --width 110 --height 110 --steps 3");
-    ASSERT_EQ(result.status, 0) << result.err;
-    const Png png = readPng(path("box.png"));
+/// A 110 × 110 picture of a lone box, the view its bounds and their margin: the box in
+/// `fill` from pixel 5 to 104 each way, its outline at 5 and 104, background around it.
+void expectTheBoxFillsTheView(const Png& png, Rgb fill, Rgb outline) {
     ASSERT_EQ(png.width, 110);
     ASSERT_EQ(png.height, 110);
-    EXPECT_EQ(png.at(55, 55), kStatic);
-    EXPECT_EQ(png.at(6, 6), kStatic);
-    EXPECT_EQ(png.at(103, 103), kStatic);
-    EXPECT_EQ(png.at(5, 55), kStaticOutline);
-    EXPECT_EQ(png.at(104, 55), kStaticOutline);
-    EXPECT_EQ(png.at(55, 5), kStaticOutline);
-    EXPECT_EQ(png.at(55, 104), kStaticOutline);
+    EXPECT_EQ(png.at(55, 55), fill);
+    EXPECT_EQ(png.at(6, 6), fill);
+    EXPECT_EQ(png.at(103, 103), fill);
+    EXPECT_EQ(png.at(5, 55), outline);
+    EXPECT_EQ(png.at(104, 55), outline);
+    EXPECT_EQ(png.at(55, 5), outline);
+    EXPECT_EQ(png.at(55, 104), outline);
     EXPECT_EQ(png.at(4, 55), kBackground);
     EXPECT_EQ(png.at(105, 55), kBackground);
     EXPECT_EQ(png.at(55, 4), kBackground);
     EXPECT_EQ(png.at(55, 105), kBackground);
     EXPECT_EQ(png.at(0, 0), kBackground);
+}
+
+TEST_F(Render, PngOfOneBoxHasTheBoxWhereTheCameraRulePutsIt) {
+    const std::string scene = write("box.json", kOneBox);
+    const Result result =
+        render(scene + " --out " + path("box.png") + " --width 110 --height 110 --steps 3");
+    ASSERT_EQ(result.status, 0) << result.err;
+    expectTheBoxFillsTheView(readPng(path("box.png")), kStatic, kStaticOutline);
 }
 
 // A static box above a dynamic one (no gravity, so nothing moves) and a kinematic sensor
@@ -203,15 +208,7 @@ TEST_F(Render, ATinyBodyFarFromTheOriginFillsTheView) {
         render(box + " --out " + path("box.png") + " --width 110 --height 110 --steps 0");
     ASSERT_EQ(result.status, 0) << result.err;
     EXPECT_EQ(result.err, "");
-    const Png png = readPng(path("box.png"));
-    ASSERT_EQ(png.width, 110);
-    EXPECT_EQ(png.at(55, 55), kDynamic);
-    EXPECT_EQ(png.at(6, 6), kDynamic);
-    EXPECT_EQ(png.at(5, 55), kDynamicOutline);
-    EXPECT_EQ(png.at(104, 55), kDynamicOutline);
-    EXPECT_EQ(png.at(55, 104), kDynamicOutline);
-    EXPECT_EQ(png.at(4, 55), kBackground);
-    EXPECT_EQ(png.at(105, 55), kBackground);
+    expectTheBoxFillsTheView(readPng(path("box.png")), kDynamic, kDynamicOutline);
 
     // Neither size given: 640 wide and, as the view is square, 640 high.
     const Result fitted = render(box + " --out " + path("box.gif") + " --steps 1");
