@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <regex>
 #include <sstream>
 #include <string>
 #include <sys/wait.h>
@@ -17,6 +18,7 @@
 namespace {
 
 using ::testing::HasSubstr;
+using ::testing::Not;
 using ::testing::StartsWith;
 
 using Result = jostle::testing::ProgramResult;
@@ -310,6 +312,58 @@ TEST_F(Cli, TileMapsAreTakenIntoTheWorld) {
     EXPECT_NEAR(rows[0].y, 116.0f - 8.0f, 0.08f);
 }
 
+// --- Progress: on a terminal only ------------------------------------------------------
+
+// The tests' standard error is a file: no progress in it, however long the run.
+TEST_F(Cli, NoProgressWhenStandardErrorIsNotATerminal) {
+    const std::string scene = quote(write("floor.json", kFloorScene));
+    const Result summary = run("run " + scene + " --steps 3000");
+    EXPECT_EQ(summary.status, 0);
+    EXPECT_EQ(summary.err, "");
+    const Result trace = run("run " + scene + " --steps 3000 --every 1000 --trace -");
+    EXPECT_EQ(trace.status, 0);
+    EXPECT_EQ(trace.err, "");
+    EXPECT_EQ(rowsOf(trace.out).size(), 3u * 3u);
+}
+
+/// True if what the terminal received is progress lines of `label` for `total` steps and
+/// their erasing, nothing else.
+bool onlyProgress(const std::string& received, const std::string& label, int total) {
+    const std::regex line(label + R"(: step \d+ of )" + std::to_string(total) + R"( \(\d+%\)| *)");
+    for (const std::string& piece : split(received, '\r'))
+        if (!std::regex_match(piece, line))
+            return false;
+    return true;
+}
+
+// With standard error on a terminal: "jostle run: step 0 of 50 (0%)" at once, redrawn in
+// place (the line's start, "\r") a few times a second, erased at the end. Standard
+// output, a file here, has the summary or the trace as ever.
+TEST_F(Cli, ProgressOnATerminal) {
+    const std::string scene = quote(write("floor.json", kFloorScene));
+    const Result summary = runOnTerminal("run " + scene + " --steps 50");
+    EXPECT_EQ(summary.status, 0);
+    EXPECT_THAT(summary.err, StartsWith("\rjostle run: step 0 of 50 (0%)"));
+    EXPECT_TRUE(onlyProgress(summary.err, "jostle run", 50)) << summary.err;
+    EXPECT_EQ(jostle::testing::lastLineShown(summary.err), "");
+    EXPECT_THAT(summary.out, HasSubstr("steps      50 of 0.25 s"));
+    EXPECT_THAT(summary.out, Not(HasSubstr("jostle run")));
+
+    const Result trace = runOnTerminal("run " + scene + " --steps 50 --trace -");
+    EXPECT_EQ(trace.status, 0);
+    EXPECT_THAT(trace.err, StartsWith("\rjostle run: step 0 of 50 (0%)"));
+    EXPECT_EQ(jostle::testing::lastLineShown(trace.err), "");
+    EXPECT_EQ(trace.out, run("run " + scene + " --steps 50 --trace -").out);
+}
+
+// A trace to the terminal the progress would be drawn on: no progress, to keep its lines.
+TEST_F(Cli, NoProgressOverATraceOnTheSameTerminal) {
+    const std::string scene = quote(write("free.json", kFreeScene));
+    const Result r = runOnTerminal("run " + scene + " --steps 2 --trace -", true);
+    EXPECT_EQ(r.status, 0);
+    EXPECT_EQ(r.err, "step,id,x,y,vx,vy\r\n1,ball,1,-2,4,-8\r\n2,ball,2,-4,4,-8\r\n");
+}
+
 // --- Bad input: exit status 2 and a message naming the place -----------------------
 
 TEST_F(Cli, BadSceneNamesFileAndPlace) {
@@ -401,6 +455,54 @@ TEST_F(Cli, TraceFileThatCannotBeCreated) {
     EXPECT_EQ(r.err, "jostle: error: " + trace + ": cannot write: No such file or directory\n");
 }
 
+// --- Output that cannot be written: exit status 1 and a message saying why -------------
+
+// /dev/full refuses every write with ENOSPC; a closed descriptor with EBADF. A summary
+// is written at the end; a trace of 2,000 steps fills stdio's buffer many times, and the
+// run ends at the first write that fails; one of 3 steps is written when it is flushed.
+TEST_F(Cli, OutputThatCannotBeWritten) {
+    const std::string scene = quote(write("floor.json", kFloorScene));
+    struct Case {
+        std::string args;
+        std::string redirection;
+        std::string message;
+    };
+    const std::string summary = "cannot write the summary to standard output: ";
+    const std::string trace = "cannot write the trace to standard output: ";
+    const std::vector<Case> cases = {
+        {"--steps 1", ">/dev/full", summary + "No space left on device"},
+        {"--steps 1", ">&-", summary + "Bad file descriptor"},
+        {"--steps 2000 --trace -", ">/dev/full", trace + "No space left on device"},
+        {"--steps 3 --trace -", ">/dev/full", trace + "No space left on device"},
+        {"--steps 3 --trace -", ">&-", trace + "Bad file descriptor"},
+    };
+    for (const Case& c : cases) {
+        SCOPED_TRACE(c.args + " " + c.redirection);
+        const Result r = run("run " + scene + " " + c.args, c.redirection);
+        EXPECT_EQ(r.status, 1);
+        EXPECT_EQ(r.err, "jostle: error: " + c.message + "\n");
+    }
+
+    // A trace file on a full disk: a name for /dev/full.
+    const std::string traceFile = path("trace.csv");
+    std::filesystem::create_symlink("/dev/full", traceFile);
+    const Result file = run("run " + scene + " --steps 3 --trace " + quote(traceFile));
+    EXPECT_EQ(file.status, 1);
+    EXPECT_EQ(file.err,
+              "jostle: error: " + traceFile + ": write failed: No space left on device\n");
+    EXPECT_EQ(file.out, "");
+}
+
+// A closed standard output is not taken by the files the program opens.
+TEST_F(Cli, TraceFileWithStandardOutputClosed) {
+    const std::string scene = write("free.json", kFreeScene);
+    const std::string trace = path("trace.csv");
+    const Result r = run("run " + quote(scene) + " -n 2 --trace " + quote(trace), ">&-");
+    EXPECT_EQ(r.status, 0);
+    EXPECT_EQ(r.err, "");
+    EXPECT_EQ(readAll(trace), "step,id,x,y,vx,vy\n1,ball,1,-2,4,-8\n2,ball,2,-4,4,-8\n");
+}
+
 TEST_F(Cli, BadOptions) {
     const std::string scene = quote(write("free.json", kFreeScene));
     for (const std::string& args : {
@@ -421,6 +523,23 @@ TEST_F(Cli, BadOptions) {
         EXPECT_THAT(r.err, StartsWith("jostle: error: "));
         EXPECT_EQ(r.out, "");
     }
+}
+
+// Without a command CLI11 would say "A subcommand is required" whatever was typed: the
+// program names what it did not know, and the commands it has.
+TEST_F(Cli, AnUnknownCommandIsNamed) {
+    const std::string usage = "Run 'jostle --help' for usage.\n";
+    const Result walk = run("walk --steps 1");
+    EXPECT_EQ(walk.status, 2);
+    EXPECT_EQ(walk.err, "jostle: error: unknown command 'walk' (commands: run, render)\n" + usage);
+    const Result option = run("--colour run");
+    EXPECT_EQ(option.status, 2);
+    EXPECT_EQ(option.err,
+              "jostle: error: unknown option '--colour' (commands: run, render)\n" + usage);
+    const Result none = run("");
+    EXPECT_EQ(none.status, 2);
+    EXPECT_EQ(none.err, "jostle: error: a command is required (commands: run, render)\n" + usage);
+    EXPECT_EQ(none.out, "");
 }
 
 TEST_F(Cli, Help) {

@@ -39,6 +39,7 @@ constexpr Rgb kBackground{24, 26, 33};
 constexpr Rgb kStatic{150, 150, 150};
 constexpr Rgb kStaticOutline{90, 90, 90};
 constexpr Rgb kDynamic{240, 150, 60};
+constexpr Rgb kDynamicOutline{144, 90, 36};
 constexpr Rgb kKinematicSensor{70, 130, 230};
 
 /// A PNG read back as RGB.
@@ -106,26 +107,31 @@ protected:
 constexpr const char* kOneBox = R"({"bodies": [
     {"type": "static", "x": 100, "y": -50, "hw": 10, "hh": 10}]})";
 
-TEST_F(Render, PngOfOneBoxHasTheBoxWhereTheCameraRulePutsIt) {
-    const std::string scene = write("box.json", kOneBox);
-    const Result result =
-        render(scene + " --out " + path("box.png") + " --width 110 --height 110 --steps 3");
-    ASSERT_EQ(result.status, 0) << result.err;
-    const Png png = readPng(path("box.png"));
+/// A 110 × 110 picture of a lone box, the view its bounds and their margin: the box in
+/// `fill` from pixel 5 to 104 each way, its outline at 5 and 104, background around it.
+void expectTheBoxFillsTheView(const Png& png, Rgb fill, Rgb outline) {
     ASSERT_EQ(png.width, 110);
     ASSERT_EQ(png.height, 110);
-    EXPECT_EQ(png.at(55, 55), kStatic);
-    EXPECT_EQ(png.at(6, 6), kStatic);
-    EXPECT_EQ(png.at(103, 103), kStatic);
-    EXPECT_EQ(png.at(5, 55), kStaticOutline);
-    EXPECT_EQ(png.at(104, 55), kStaticOutline);
-    EXPECT_EQ(png.at(55, 5), kStaticOutline);
-    EXPECT_EQ(png.at(55, 104), kStaticOutline);
+    EXPECT_EQ(png.at(55, 55), fill);
+    EXPECT_EQ(png.at(6, 6), fill);
+    EXPECT_EQ(png.at(103, 103), fill);
+    EXPECT_EQ(png.at(5, 55), outline);
+    EXPECT_EQ(png.at(104, 55), outline);
+    EXPECT_EQ(png.at(55, 5), outline);
+    EXPECT_EQ(png.at(55, 104), outline);
     EXPECT_EQ(png.at(4, 55), kBackground);
     EXPECT_EQ(png.at(105, 55), kBackground);
     EXPECT_EQ(png.at(55, 4), kBackground);
     EXPECT_EQ(png.at(55, 105), kBackground);
     EXPECT_EQ(png.at(0, 0), kBackground);
+}
+
+TEST_F(Render, PngOfOneBoxHasTheBoxWhereTheCameraRulePutsIt) {
+    const std::string scene = write("box.json", kOneBox);
+    const Result result =
+        render(scene + " --out " + path("box.png") + " --width 110 --height 110 --steps 3");
+    ASSERT_EQ(result.status, 0) << result.err;
+    expectTheBoxFillsTheView(readPng(path("box.png")), kStatic, kStaticOutline);
 }
 
 // A static box above a dynamic one (no gravity, so nothing moves) and a kinematic sensor
@@ -192,6 +198,81 @@ TEST_F(Render, ShapesAreDrawnInTheirShape) {
     EXPECT_EQ(png.at(151, 31), kBackground);
 }
 
+// A view is as precise as the bodies in it, wherever they are: a body 2e-9 across at
+// x = y = 1e9, where floats are 64 apart, fills the picture as the box of kOneBox does
+// (its bounds, 2e-9 wide, get a margin of 1e-10 on each side: 110 pixels of 2e-11).
+TEST_F(Render, ATinyBodyFarFromTheOriginFillsTheView) {
+    const std::string box = write("box.json", R"({"gravity": [0, 0], "bodies": [
+        {"x": 1e9, "y": 1e9, "hw": 1e-9, "hh": 1e-9}]})");
+    const Result result =
+        render(box + " --out " + path("box.png") + " --width 110 --height 110 --steps 0");
+    ASSERT_EQ(result.status, 0) << result.err;
+    EXPECT_EQ(result.err, "");
+    expectTheBoxFillsTheView(readPng(path("box.png")), kDynamic, kDynamicOutline);
+
+    // Neither size given: 640 wide and, as the view is square, 640 high.
+    const Result fitted = render(box + " --out " + path("box.gif") + " --steps 1");
+    ASSERT_EQ(fitted.status, 0) << fitted.err;
+    const Gif gif = readGif(path("box.gif"));
+    EXPECT_EQ(gif.width, 640);
+    EXPECT_EQ(gif.height, 640);
+
+    // A circle there: drawn round, 50 pixels in radius, its box's corners empty.
+    const std::string circle = write("circle.json", R"({"gravity": [0, 0], "bodies": [
+        {"x": 1e9, "y": -1e9, "hw": 1e-9, "hh": 1e-9, "radius": 1e-9}]})");
+    const Result round = render(circle + " --out " + path("circle.png") + " --width 110 --steps 0");
+    ASSERT_EQ(round.status, 0) << round.err;
+    const Png disc = readPng(path("circle.png"));
+    ASSERT_EQ(disc.height, 110);
+    EXPECT_EQ(disc.at(55, 55), kDynamic);
+    EXPECT_EQ(disc.at(5, 55), kDynamicOutline); // (5.5, 55.5): 49.5 from the centre
+    EXPECT_EQ(disc.at(4, 55), kBackground);
+    EXPECT_EQ(disc.at(8, 8), kBackground); // 66 from the centre
+}
+
+// Scenes at the edges of the world's range (magnitudes 1e-9 to 1e9) give a picture, with
+// neither an error nor undefined behaviour (the sanitizer build checks the second).
+TEST_F(Render, ScenesAtTheEdgesOfTheRangeRender) {
+    const std::vector<std::string> scenes = {
+        // Tiny bodies far apart: a pixel each.
+        R"([{"x": -1e9, "y": 1e9, "hw": 1e-9, "hh": 1e-9},
+            {"x": 1e9, "y": -1e9, "hw": 1e-9, "hh": 1e-9}])",
+        // The largest bodies, side by side, and a tiny one between them.
+        R"([{"type": "static", "x": -1e9, "y": 0, "hw": 1e9, "hh": 1e9},
+            {"type": "static", "x": 1e9, "y": 0, "hw": 1e9, "hh": 1e9},
+            {"x": 0, "y": 0, "hw": 1e-9, "hh": 1e-9, "radius": 1e-9}])",
+        // A thin line of a scene, 2e9 by 2e-9, and shapes as small as can be.
+        R"([{"type": "static", "x": 0, "y": 1e9, "hw": 1e9, "hh": 1e-9},
+            {"type": "static", "x": 1e9, "y": 1e9, "hw": 1e-9, "hh": 1e-9,
+             "slope": [1, -1]},
+            {"type": "kinematic", "x": -1e9, "y": 1e9, "hw": 1e-9, "hh": 1e-9,
+             "slope": [-1, -1], "segment": true, "vx": 1e9}])",
+        // Every shape tiny, at one spot far away.
+        R"([{"type": "static", "x": 1e9, "y": 1e9, "hw": 1e-9, "hh": 1e-9,
+             "slope": [1, 1], "segment": true},
+            {"type": "static", "x": 1e9, "y": 1e9, "hw": 1e-9, "hh": 1e-9,
+             "slope": [-1, 1]},
+            {"x": 1e9, "y": 1e9, "hw": 1e-9, "hh": 1e-9, "radius": 1e-9, "sensor": true}])",
+    };
+    for (std::size_t i = 0; i < scenes.size(); ++i) {
+        const std::string scene =
+            write("edge" + std::to_string(i) + ".json", R"({"bodies": )" + scenes[i] + "}");
+        for (const std::string out : {"edge.png", "edge.gif"}) {
+            SCOPED_TRACE(scenes[i] + " " + out);
+            const Result result = render(scene + " --out " + path(out) + " --steps 4");
+            EXPECT_EQ(result.status, 0);
+            EXPECT_EQ(result.err, "");
+        }
+        for (const std::string size : {"--width 1", "--height 1", "--width 1 --height 4096"}) {
+            SCOPED_TRACE(scenes[i] + " " + size);
+            const Result result =
+                render(scene + " --out " + path("edge.png") + " --steps 1 " + size);
+            EXPECT_EQ(result.status, 0);
+            EXPECT_EQ(result.err, "");
+        }
+    }
+}
+
 TEST_F(Render, GifHasAFrameForStepZeroAndEveryKthStep) {
     const std::string scene = write("box.json", kOneBox);
     const Result result = render(scene + " --out " + path("anim.gif") +
@@ -211,6 +292,44 @@ TEST_F(Render, ExampleSceneMakesAGifOfTheDefaultWidth) {
     EXPECT_EQ(gif.width, 640);
     EXPECT_GT(gif.height, 0);
     EXPECT_EQ(gif.frames, 5); // the default --every is 2
+}
+
+// A full disk (a name for /dev/full, which refuses every write with ENOSPC) gives the same
+// message for either image, whether the first write that fails is early (a big picture)
+// or the last (a small one, written when the file is closed); exit status 1.
+TEST_F(Render, AnImageThatCannotBeWrittenSaysWhy) {
+    const std::string scene = write("box.json", kOneBox);
+    for (const std::string name : {"full.gif", "full.png"}) {
+        const std::string image = path(name);
+        std::filesystem::create_symlink("/dev/full", image);
+        for (const std::string size : {"--width 8 --height 8 --steps 0", "--width 640"}) {
+            SCOPED_TRACE(name);
+            SCOPED_TRACE(size);
+            const Result result = render(scene + " --out " + image + " " + size);
+            EXPECT_EQ(result.status, 1);
+            EXPECT_EQ(result.err,
+                      "jostle: error: " + image + ": write failed: No space left on device\n");
+        }
+    }
+}
+
+// Progress on standard error when it is a terminal, erased at the end; none otherwise.
+TEST_F(Render, ProgressOnATerminalOnly) {
+    const std::string scene = write("box.json", kOneBox);
+    for (const std::string name : {"anim.gif", "last.png"}) {
+        SCOPED_TRACE(name);
+        const std::string args = scene + " --out " + path(name) + " --width 32 --steps 300";
+        const Result quiet = render(args);
+        EXPECT_EQ(quiet.status, 0);
+        EXPECT_EQ(quiet.err, "");
+
+        const Result shown = runOnTerminal("render " + args);
+        EXPECT_EQ(shown.status, 0);
+        EXPECT_THAT(shown.err, ::testing::StartsWith("\rjostle render: step 0 of 300 (0%)"));
+        EXPECT_EQ(jostle::testing::lastLineShown(shown.err), "");
+        EXPECT_EQ(shown.out, "");
+    }
+    EXPECT_EQ(readGif(path("anim.gif")).frames, 151); // the GIF is whole
 }
 
 TEST_F(Render, BadInputExitsWith2AndNamesTheProblem) {

@@ -4,24 +4,51 @@
 // The rule (docs/scene-format.md, `jostle render`): take the box that holds every body
 // at the start, add a margin of 1/20 of its longer side on each side, and scale it as
 // large as fits the image, centred. World y and image y both grow downward.
+//
+// Any scene of the world's range (magnitudes 1e-9 to 1e9) has a view, drawn as precisely
+// as the bodies in it: coordinates are taken in double, relative to a point of the scene
+// (a body's centre), so that a body 1e-9 across at x = 1e9, where floats are 64 apart,
+// still fills a view of its own size.
 #pragma once
 
 #include "canvas.hpp"
 
 #include "jostle/math.hpp"
 
+#include <span>
+
 namespace jostle::cli {
 
-/// A box of the world by its corners: x from min.x to max.x, y from min.y to max.y.
+/// A box of the world as the world gives it: its centre and half extents.
 struct WorldBox {
-    Vec2 min;
-    Vec2 max;
+    Vec2 centre;
+    Vec2 half;
+};
+
+/// What the camera shows: the box that holds some boxes, with its margin.
+class View {
+public:
+    /// The view of `boxes`; of a 2 × 2 box around the origin when there are none.
+    static View of(std::span<const WorldBox> boxes);
+
+    /// The view's size in world units, the margin included; both > 0.
+    double width() const { return width_; }
+    double height() const { return height_; }
+
+private:
+    friend class Camera;
+    double originX_ = 0.0; ///< the point of the world the others are relative to
+    double originY_ = 0.0;
+    double centreX_ = 0.0; ///< the view's centre, relative to the origin
+    double centreY_ = 0.0;
+    double width_ = 0.0;
+    double height_ = 0.0;
 };
 
 class Camera {
 public:
-    /// Fits `bounds` (plus the margin) into a width × height image.
-    static Camera fit(WorldBox bounds, int width, int height);
+    /// Fits `view` into a width × height image.
+    Camera(const View& view, int width, int height);
 
     /// The pixels a box of the world covers: those whose centre lies inside it, but never
     /// none, so that a body smaller than a pixel still shows as one.
@@ -35,12 +62,17 @@ public:
     double scale() const { return scale_; }
 
 private:
-    Camera(double scale, double offsetX, double offsetY)
-        : scale_(scale), offsetX_(offsetX), offsetY_(offsetY) {}
+    double imageX(double x) const {
+        return ((x - view_.originX_) - view_.centreX_) * scale_ + halfWidth_;
+    }
+    double imageY(double y) const {
+        return ((y - view_.originY_) - view_.centreY_) * scale_ + halfHeight_;
+    }
 
+    View view_;
     double scale_;
-    double offsetX_; ///< image x = world x × scale + offsetX
-    double offsetY_;
+    double halfWidth_; ///< of the image, in pixels
+    double halfHeight_;
 };
 
 /// The margin added to each side of the bodies' box: 1/20 of its longer side.

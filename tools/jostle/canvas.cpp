@@ -43,6 +43,8 @@ void Canvas::line(float fromX, float fromY, float toX, float toY, std::uint8_t v
     const double dy = static_cast<double>(toY) - y0;
     // Far beyond the canvas (a body flung away), a line is not worth a point a pixel.
     const double length = std::max(std::abs(dx), std::abs(dy));
+    if (!std::isfinite(length))
+        return;
     const int steps = static_cast<int>(std::ceil(std::min(length, 1e5)));
     for (int i = 0; i <= steps; ++i) {
         const double t = steps == 0 ? 0.0 : double(i) / double(steps);

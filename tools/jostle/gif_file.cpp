@@ -5,9 +5,8 @@
 
 #include <gif_lib.h>
 
-#include <fcntl.h>
-
 #include <cerrno>
+#include <cstdio>
 #include <vector>
 
 namespace jostle::cli {
@@ -32,19 +31,37 @@ int colourTableSize(std::size_t count) {
 GifWriter::~GifWriter() {
     if (gif_)
         EGifCloseFile(gif_, nullptr);
+    if (file_)
+        std::fclose(file_);
+}
+
+int GifWriter::write(GifFileType* gif, const GifByteType* bytes, int length) {
+    auto* self = static_cast<GifWriter*>(gif->UserData);
+    errno = 0;
+    const std::size_t written =
+        std::fwrite(bytes, 1, static_cast<std::size_t>(length), self->file_);
+    if (written != static_cast<std::size_t>(length) && self->error_ == 0)
+        self->error_ = errno != 0 ? errno : EIO;
+    return static_cast<int>(written);
+}
+
+std::string GifWriter::failure(int gifError) const {
+    return error_ != 0 ? systemMessage(error_) : gifMessage(gifError);
 }
 
 std::string GifWriter::open(const std::string& path, int width, int height,
                             std::span<const Rgb> palette) {
     if (palette.empty() || palette.size() > 256)
         return "a GIF palette holds 1 to 256 colours";
-    int error = 0;
-    // Opened here rather than by EGifOpenFileName, which makes the file readable by its
-    // owner only: an image is made to be shared, so it gets the usual 0666 & ~umask.
-    const int descriptor = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0666);
-    if (descriptor < 0)
+    // A file of ours, written through giflib's output function, so that a write that
+    // fails keeps its errno; and created 0666 & ~umask, as an image to share is, where
+    // EGifOpenFileName makes it readable by its owner only.
+    errno = 0;
+    file_ = std::fopen(path.c_str(), "wb");
+    if (!file_)
         return systemMessage(errno);
-    gif_ = EGifOpenFileHandle(descriptor, &error); // closes the descriptor if it fails
+    int error = 0;
+    gif_ = EGifOpen(this, &GifWriter::write, &error);
     if (!gif_)
         return gifMessage(error);
     EGifSetGifVersion(gif_, true); // GIF89a: needed for delays and looping
@@ -58,7 +75,7 @@ std::string GifWriter::open(const std::string& path, int width, int height,
     const int written = EGifPutScreenDesc(gif_, width, height, map->BitsPerPixel, 0, map);
     GifFreeMapObject(map);
     if (written == GIF_ERROR)
-        return gifMessage(gif_->Error);
+        return failure(gif_->Error);
 
     // The NETSCAPE2.0 extension with a loop count of 0: play again and again.
     static const GifByteType kApplication[] = {'N', 'E', 'T', 'S', 'C', 'A',
@@ -68,7 +85,7 @@ std::string GifWriter::open(const std::string& path, int width, int height,
         EGifPutExtensionBlock(gif_, sizeof kApplication, kApplication) == GIF_ERROR ||
         EGifPutExtensionBlock(gif_, sizeof kLoopForever, kLoopForever) == GIF_ERROR ||
         EGifPutExtensionTrailer(gif_) == GIF_ERROR)
-        return gifMessage(gif_->Error);
+        return failure(gif_->Error);
     return {};
 }
 
@@ -82,21 +99,27 @@ std::string GifWriter::addFrame(const Canvas& canvas, int delayCentiseconds) {
     if (EGifPutExtension(gif_, GRAPHICS_EXT_FUNC_CODE, static_cast<int>(length), extension) ==
             GIF_ERROR ||
         EGifPutImageDesc(gif_, 0, 0, canvas.width(), canvas.height(), false, nullptr) == GIF_ERROR)
-        return gifMessage(gif_->Error);
+        return failure(gif_->Error);
     std::vector<GifPixelType> line(static_cast<std::size_t>(canvas.width()));
     for (int y = 0; y < canvas.height(); ++y) {
         const auto row = canvas.row(y);
         line.assign(row.begin(), row.end()); // giflib wants a writable line
         if (EGifPutLine(gif_, line.data(), canvas.width()) == GIF_ERROR)
-            return gifMessage(gif_->Error);
+            return failure(gif_->Error);
     }
     return {};
 }
 
 std::string GifWriter::close() {
     int error = 0;
-    const int closed = EGifCloseFile(gif_, &error);
-    gif_ = nullptr; // closed or not, giflib has freed it
+    const int closed = EGifCloseFile(gif_, &error); // writes the trailer; leaves file_ open
+    gif_ = nullptr;                                 // closed or not, giflib has freed it
+    errno = 0;
+    if (std::fclose(file_) != 0 && error_ == 0)
+        error_ = errno != 0 ? errno : EIO;
+    file_ = nullptr;
+    if (error_ != 0)
+        return systemMessage(error_);
     return closed == GIF_ERROR ? gifMessage(error) : std::string();
 }
 

@@ -26,15 +26,25 @@ public:
     ~GifWriter();
 
     /// Creates `path` for width × height frames of `palette` (at most 256 colours).
-    /// Returns an empty string, or what went wrong.
+    /// Returns an empty string, or what went wrong (the errno's words for a file or a
+    /// write that failed, as below).
     std::string open(const std::string& path, int width, int height, std::span<const Rgb> palette);
     /// Appends a frame shown for `delayCentiseconds`.
     std::string addFrame(const Canvas& canvas, int delayCentiseconds);
-    /// Writes the trailer and closes the file.
+    /// Writes the trailer and closes the file; the reason of the first write that failed,
+    /// if one did.
     std::string close();
 
 private:
+    /// giflib's output function: writes to file_, keeping the errno of the first failure.
+    static int write(GifFileType* gif, const unsigned char* bytes, int length);
+    /// What a giflib call that failed with `gifError` means: the reason of a failed write
+    /// if there was one (giflib's own words are "Write failed (disk full?)").
+    std::string failure(int gifError) const;
+
+    std::FILE* file_ = nullptr;
     GifFileType* gif_ = nullptr;
+    int error_ = 0; ///< the errno of the first write that failed, or 0
 };
 
 } // namespace jostle::cli

@@ -6,8 +6,10 @@
 //
 // Exit status: 0 when all went well; 2 for bad input (options, scene file, a value the
 // world refuses); 1 when the output cannot be written or something unexpected fails.
+// Progress of the steps on standard error when it is a terminal (progress.hpp).
 #include "errors.hpp"
 #include "load_scene.hpp"
+#include "progress.hpp"
 #include "render.hpp"
 #include "summary.hpp"
 #include "trace.hpp"
@@ -15,6 +17,9 @@
 #include "jostle/scene.hpp"
 
 #include <CLI/CLI.hpp>
+
+#include <fcntl.h>
+#include <unistd.h>
 
 #include <cerrno>
 #include <charconv>
@@ -78,8 +83,9 @@ void addSolverOption(CLI::App& command, std::string& solver) {
         ->check(CLI::IsMember(names));
 }
 
-/// Where the trace goes: stdout, a file of ours, or nowhere.
-class TraceOutput {
+/// Where the trace or the summary goes: stdout or a file of ours. Keeps the reason of the
+/// first write that failed.
+class Output {
 public:
     /// Opens `path` ("-" is stdout); false, with errno set, if it cannot be created.
     bool open(const std::string& path) {
@@ -93,13 +99,28 @@ public:
         return out_ != nullptr;
     }
     std::FILE* get() const { return out_; }
-    /// Flushes and closes; false, with errno set, if anything written was lost.
+    bool isStdout() const { return out_ == stdout; }
+
+    /// True while everything written has gone through. Called right after writing, so
+    /// that errno still holds the reason of a failure.
+    bool good() {
+        if (error_ == 0 && std::ferror(out_))
+            error_ = errno != 0 ? errno : EIO;
+        return error_ == 0;
+    }
+    /// Flushes and closes; false if anything written was lost (error() says why).
     bool finish() {
         errno = 0;
-        const bool flushed = std::fflush(out_) == 0 && !std::ferror(out_);
-        const bool closed = !file_ || std::fclose(file_.release()) == 0;
-        return flushed && closed;
+        if (std::fflush(out_) != 0 && error_ == 0)
+            error_ = errno != 0 ? errno : EIO;
+        good();
+        errno = 0;
+        if (file_ && std::fclose(file_.release()) != 0 && error_ == 0)
+            error_ = errno != 0 ? errno : EIO;
+        return error_ == 0;
     }
+    /// Why writing failed: an errno value.
+    int error() const { return error_; }
 
 private:
     struct Closer {
@@ -107,7 +128,18 @@ private:
     };
     std::unique_ptr<std::FILE, Closer> file_;
     std::FILE* out_ = nullptr;
+    int error_ = 0;
 };
+
+/// Reports that `what` ("the trace", "the summary") could not be written to `output`.
+int writeFailed(const Output& output, const std::string& what, const std::string& path) {
+    const std::string reason = systemMessage(output.error());
+    if (output.isStdout())
+        printError("cannot write " + what + " to standard output: " + reason);
+    else
+        printError(path + ": write failed: " + reason);
+    return kFailure;
+}
 
 int run(const RunOptions& options) {
     const jostle::Scene scene = jostle::cli::loadScene(options.scene, options.solver);
@@ -115,42 +147,76 @@ int run(const RunOptions& options) {
     jostle::addTileMaps(world, scene); // the level first, then what moves in it
     const std::vector<jostle::BodyId> ids = jostle::addBodies(world, scene);
 
-    TraceOutput trace;
+    const bool tracing = !options.trace.empty();
+    Output output;
+    if (!output.open(tracing ? options.trace : "-")) {
+        printError(options.trace + ": cannot write: " + systemMessage(errno));
+        return kBadInput;
+    }
     std::vector<jostle::cli::TracedBody> traced;
-    if (!options.trace.empty()) {
-        if (!trace.open(options.trace)) {
-            printError(options.trace + ": cannot write: " + systemMessage(errno));
-            return kBadInput;
-        }
+    if (tracing) {
         // Static bodies never move: a trace of them would be the scene file again.
         for (std::size_t i = 0; i < ids.size(); ++i)
             if (scene.bodies[i].def.type != jostle::BodyType::Static)
                 traced.push_back({ids[i], jostle::cli::csvField(scene.bodies[i].id)});
-        jostle::cli::writeTraceHeader(trace.get());
+        jostle::cli::writeTraceHeader(output.get());
     }
 
+    jostle::cli::Progress progress("jostle run", options.steps, output.isStdout() && tracing);
     const auto start = std::chrono::steady_clock::now();
-    for (std::int64_t step = 1; step <= options.steps; ++step) {
+    // A trace that cannot be written ends the run: the steps after it would be lost.
+    for (std::int64_t step = 1; step <= options.steps && output.good(); ++step) {
         world.step(scene.dt);
-        if (trace.get() && step % options.every == 0)
-            jostle::cli::writeTraceRows(trace.get(), step, world, traced);
+        if (tracing && step % options.every == 0)
+            jostle::cli::writeTraceRows(output.get(), step, world, traced);
+        progress.update(step);
     }
     const auto wallTime = std::chrono::steady_clock::now() - start;
+    progress.erase();
 
-    if (trace.get()) {
-        if (!trace.finish()) {
-            printError(options.trace + ": write failed: " + systemMessage(errno));
-            return kFailure;
-        }
-        return 0;
+    if (!tracing && output.good()) {
+        errno = 0;
+        jostle::cli::printSummary(output.get(),
+                                  {options.scene, scene, world, ids, options.steps, wallTime});
     }
-    jostle::cli::printSummary(stdout, {options.scene, scene, world, ids, options.steps, wallTime});
-    return std::fflush(stdout) == 0 ? 0 : kFailure;
+    if (!output.finish())
+        return writeFailed(output, tracing ? "the trace" : "the summary", options.trace);
+    return 0;
+}
+
+/// What is wrong with the command line when its first word is neither a command nor
+/// help, naming that word and the commands there are; empty when nothing is.
+std::string commandProblem(CLI::App& app, int argc, char** argv) {
+    const std::string first = argc > 1 ? argv[1] : "";
+    std::string names;
+    bool known = false;
+    for (const CLI::App* command : app.get_subcommands([](CLI::App*) { return true; })) {
+        names += (names.empty() ? "" : ", ") + command->get_name();
+        known = known || command->check_name(first);
+    }
+    const std::string commands = " (commands: " + names + ")";
+    if (argc < 2)
+        return "a command is required" + commands;
+    if (known || app.get_help_ptr()->check_name(first))
+        return {};
+    if (first.starts_with('-'))
+        return "unknown option '" + first + "'" + commands;
+    return "unknown command '" + first + "'" + commands;
+}
+
+/// Keeps the standard descriptors taken: one that is closed is opened on /dev/null the
+/// other way round (input for writing, outputs for reading). So no file the program opens
+/// takes its number, and writing to a closed standard output still fails, with EBADF.
+void holdStandardDescriptors() {
+    for (int descriptor = STDIN_FILENO; descriptor <= STDERR_FILENO; ++descriptor)
+        if (::fcntl(descriptor, F_GETFD) == -1 && errno == EBADF)
+            ::open("/dev/null", descriptor == STDIN_FILENO ? O_WRONLY : O_RDONLY);
 }
 
 } // namespace
 
 int main(int argc, char** argv) {
+    holdStandardDescriptors();
     CLI::App app{"jostle: 2D axis-aligned box collision, from the command line.", "jostle"};
     app.require_subcommand(1);
 
@@ -204,18 +270,23 @@ int main(int argc, char** argv) {
         ->check(atLeast(1));
     addSolverOption(*renderCommand, renderOptions.solver);
 
+    const auto badUsage = [](const std::string& message, const char* command) {
+        printError(message);
+        std::fprintf(stderr, "Run '%s --help' for usage.\n", command);
+        return kBadInput;
+    };
+    // CLI11 says "A subcommand is required" whatever the first word is.
+    if (const std::string problem = commandProblem(app, argc, argv); !problem.empty())
+        return badUsage(problem, "jostle");
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& error) {
         // --help is a ParseError that succeeds; CLI11 prints the help of the right command.
         if (error.get_exit_code() == 0)
             return app.exit(error);
-        printError(error.what());
-        std::fprintf(stderr, "Run '%s --help' for usage.\n",
-                     runCommand->parsed()      ? "jostle run"
-                     : renderCommand->parsed() ? "jostle render"
-                                               : "jostle");
-        return kBadInput;
+        return badUsage(error.what(), runCommand->parsed()      ? "jostle run"
+                                      : renderCommand->parsed() ? "jostle render"
+                                                                : "jostle");
     }
 
     const std::string& scenePath = renderCommand->parsed() ? renderOptions.scene : options.scene;

@@ -7,6 +7,7 @@
 #include "errors.hpp"
 #include "image_files.hpp"
 #include "load_scene.hpp"
+#include "progress.hpp"
 
 #include "jostle/scene.hpp"
 #include "shared/drawn_shape.hpp"
@@ -70,44 +71,35 @@ std::uint8_t fillIndex(BodyType type, bool sleeping) {
 }
 
 WorldBox boxOf(const World& world, BodyId body) {
-    const Vec2 centre = world.position(body);
-    const Vec2 half = world.halfExtents(body);
-    return {{centre.x - half.x, centre.y - half.y}, {centre.x + half.x, centre.y + half.y}};
+    return {world.position(body), world.halfExtents(body)};
 }
 
-/// The box that holds every body (tile maps are bodies too), or a 2 × 2 one around the
+/// The view of every body (tile maps are bodies too), or of a 2 × 2 box around the
 /// origin in a world without any.
-WorldBox boundsOf(const World& world) {
-    const auto bodies = world.bodies();
-    if (bodies.empty())
-        return {{-1.0f, -1.0f}, {1.0f, 1.0f}};
-    WorldBox bounds = boxOf(world, bodies.front());
-    for (BodyId body : bodies) {
-        const WorldBox box = boxOf(world, body);
-        bounds.min = {std::min(bounds.min.x, box.min.x), std::min(bounds.min.y, box.min.y)};
-        bounds.max = {std::max(bounds.max.x, box.max.x), std::max(bounds.max.y, box.max.y)};
-    }
-    return bounds;
+View viewOf(const World& world) {
+    std::vector<WorldBox> boxes;
+    for (BodyId body : world.bodies())
+        boxes.push_back(boxOf(world, body));
+    return View::of(boxes);
 }
 
-/// The side not given, from the one given and the shape of the bounds with their margin.
+/// The side not given, from the one given and the shape of the view: 1 to kMaxImageSide.
 int fittedSide(double givenSide, double givenSpan, double otherSpan) {
     const double side = std::round(givenSide * otherSpan / givenSpan);
-    return static_cast<int>(std::clamp(side, 1.0, static_cast<double>(kMaxImageSide)));
+    if (!(side >= 1.0)) // also what is not a number
+        return 1;
+    return static_cast<int>(std::min(side, static_cast<double>(kMaxImageSide)));
 }
 
-void imageSize(const RenderOptions& options, WorldBox bounds, int& width, int& height) {
-    const double spanX = static_cast<double>(bounds.max.x) - static_cast<double>(bounds.min.x);
-    const double spanY = static_cast<double>(bounds.max.y) - static_cast<double>(bounds.min.y);
-    const double margin = 2.0 * std::max(spanX, spanY) * kMarginFraction;
+void imageSize(const RenderOptions& options, const View& view, int& width, int& height) {
     width = static_cast<int>(options.width);
     height = static_cast<int>(options.height);
     if (width == 0 && height == 0)
         width = kDefaultImageWidth;
     if (height == 0)
-        height = fittedSide(width, spanX + margin, spanY + margin);
+        height = fittedSide(width, view.width(), view.height());
     else if (width == 0)
-        width = fittedSide(height, spanY + margin, spanX + margin);
+        width = fittedSide(height, view.height(), view.width());
 }
 
 /// The tick on a segment's blocking side: a sixth of its length, 3 to 8 pixels.
@@ -193,11 +185,11 @@ int render(const RenderOptions& options) {
     addTileMaps(world, scene);
     addBodies(world, scene);
 
-    const WorldBox bounds = boundsOf(world);
+    const View view = viewOf(world);
     int width = 0;
     int height = 0;
-    imageSize(options, bounds, width, height);
-    const Camera camera = Camera::fit(bounds, width, height);
+    imageSize(options, view, width, height);
+    const Camera camera(view, width, height);
     Canvas canvas(width, height);
     const std::vector<Rgb> palette = makePalette();
 
@@ -208,8 +200,12 @@ int render(const RenderOptions& options) {
             printError(options.out + ": cannot write: " + systemMessage(errno));
             return kBadInput;
         }
-        for (std::int64_t step = 1; step <= options.steps; ++step)
+        Progress progress("jostle render", options.steps, false);
+        for (std::int64_t step = 1; step <= options.steps; ++step) {
             world.step(scene.dt);
+            progress.update(step);
+        }
+        progress.erase();
         draw(canvas, camera, world);
         std::string error = writePng(file.get(), canvas, palette);
         errno = 0;
@@ -224,19 +220,22 @@ int render(const RenderOptions& options) {
 
     GifWriter gif;
     if (const std::string error = gif.open(options.out, width, height, palette); !error.empty()) {
-        printError(options.out + ": cannot write: " + (errno != 0 ? systemMessage(errno) : error));
+        printError(options.out + ": cannot write: " + error);
         return kBadInput;
     }
     const int delay = frameDelay(scene, options.every);
     std::string error;
+    Progress progress("jostle render", options.steps, false);
     for (std::int64_t step = 0; step <= options.steps && error.empty(); ++step) {
         if (step > 0)
             world.step(scene.dt);
-        if (step % options.every != 0)
-            continue;
-        draw(canvas, camera, world);
-        error = gif.addFrame(canvas, delay);
+        if (step % options.every == 0) {
+            draw(canvas, camera, world);
+            error = gif.addFrame(canvas, delay);
+        }
+        progress.update(step);
     }
+    progress.erase();
     if (error.empty())
         error = gif.close();
     if (!error.empty()) {
