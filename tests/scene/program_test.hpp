@@ -33,6 +33,20 @@ inline std::string readAll(const std::filesystem::path& path) {
 }
 
 /// A path for the shell, in single quotes.
+/// Whether this machine gives out pseudo-terminals (a container may have none): tests of
+/// what a terminal shows are skipped where it does not.
+inline bool pseudoTerminalsWork() {
+    const int master = ::posix_openpt(O_RDWR | O_NOCTTY);
+    const bool works = master >= 0 && ::grantpt(master) == 0 && ::unlockpt(master) == 0;
+    if (master >= 0)
+        ::close(master);
+    return works;
+}
+
+#define JOSTLE_SKIP_WITHOUT_A_TERMINAL()                                                           \
+    if (!jostle::testing::pseudoTerminalsWork())                                                   \
+    GTEST_SKIP() << "no pseudo-terminal on this machine"
+
 inline std::string quote(const std::string& text) {
     return "'" + text + "'";
 }

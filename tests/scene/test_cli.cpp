@@ -340,6 +340,7 @@ bool onlyProgress(const std::string& received, const std::string& label, int tot
 // place (the line's start, "\r") a few times a second, erased at the end. Standard
 // output, a file here, has the summary or the trace as ever.
 TEST_F(Cli, ProgressOnATerminal) {
+    JOSTLE_SKIP_WITHOUT_A_TERMINAL();
     const std::string scene = quote(write("floor.json", kFloorScene));
     const Result summary = runOnTerminal("run " + scene + " --steps 50");
     EXPECT_EQ(summary.status, 0);
@@ -358,6 +359,7 @@ TEST_F(Cli, ProgressOnATerminal) {
 
 // A trace to the terminal the progress would be drawn on: no progress, to keep its lines.
 TEST_F(Cli, NoProgressOverATraceOnTheSameTerminal) {
+    JOSTLE_SKIP_WITHOUT_A_TERMINAL();
     const std::string scene = quote(write("free.json", kFreeScene));
     const Result r = runOnTerminal("run " + scene + " --steps 2 --trace -", true);
     EXPECT_EQ(r.status, 0);

@@ -315,6 +315,7 @@ TEST_F(Render, AnImageThatCannotBeWrittenSaysWhy) {
 
 // Progress on standard error when it is a terminal, erased at the end; none otherwise.
 TEST_F(Render, ProgressOnATerminalOnly) {
+    JOSTLE_SKIP_WITHOUT_A_TERMINAL();
     const std::string scene = write("box.json", kOneBox);
     for (const std::string name : {"anim.gif", "last.png"}) {
         SCOPED_TRACE(name);
