@@ -32,6 +32,10 @@ bool sensorNotEvaluated(const WorldState& world, const TouchRecord& record) {
 /// a. A slot holds one body at a time, so within one list the pair of slots names the pair.
 void sortByPair(std::vector<TouchRecord>& records, std::vector<TouchRecord>& scratch,
                 Buckets& buckets, std::size_t slotCount) {
+    // Nothing to sort (no sensors, most steps): leave the buffers, sized by the last
+    // sort, as they are.
+    if (records.size() < 2)
+        return;
     sortByKey(
         records, [](const TouchRecord& r) { return r.b.index; }, slotCount, buckets, scratch);
     sortByKey(

@@ -49,11 +49,6 @@ void integrateAwakeBodies(WorldState& world, float dt) {
     }
 }
 
-Vec2 withinRange(Vec2 velocity) {
-    return {std::clamp(velocity.x, -kMaxMagnitude, kMaxMagnitude),
-            std::clamp(velocity.y, -kMaxMagnitude, kMaxMagnitude)};
-}
-
 bool stopAtTheEdge(Body& body) {
     bool stopped = false;
     auto stop = [&](float& position, float& velocity) {

@@ -4,6 +4,8 @@
 
 #include "jostle/math.hpp"
 
+#include <algorithm>
+
 namespace jostle {
 
 struct Body;
@@ -24,7 +26,10 @@ void integrateAwakeBodies(WorldState& world, float dt);
 
 /// Holds each component of a velocity to ±kMaxMagnitude (math.hpp): no speed beyond it,
 /// so that no later sum overflows.
-Vec2 withinRange(Vec2 velocity);
+inline Vec2 withinRange(Vec2 velocity) {
+    return {std::clamp(velocity.x, -kMaxMagnitude, kMaxMagnitude),
+            std::clamp(velocity.y, -kMaxMagnitude, kMaxMagnitude)};
+}
 
 /// The edge of the world (math.hpp): a body beyond ±kMaxMagnitude on an axis is put back
 /// on it, and loses its speed along that axis. True if it was beyond. The classic model

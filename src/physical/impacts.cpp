@@ -2,9 +2,12 @@
 #include "impacts.hpp"
 
 #include "step_context.hpp"
+#include "support.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <utility>
 #include <vector>
 
 namespace jostle {
@@ -18,7 +21,6 @@ constexpr int kMaxSweeps = 8;
 /// Meeting slower than this fraction of the contact's slop per second is not meeting:
 /// float noise in the velocities of a resting pile.
 constexpr float kStillPerSlop = 5.0f;
-
 
 void applyImpulse(StepContext& step, const Contact& c, Vec2 direction, float impulse) {
     SolverBody& a = step.bodies[c.ia];
@@ -41,6 +43,21 @@ void shiftApart(StepContext& step, const Contact& c, Vec2 normal, float shift) {
         Body& body = step.world.slots[s.slot];
         body.position += normal * by;
     }
+}
+
+/// Whether the pair of `c` approaches faster than the noise of a resting pile: collide's
+/// first test, worked out along the contact's axis (the same comparison, but for the sign
+/// of a zero), so that the many contacts that do not meet cost little.
+inline bool mayMeet(const StepContext& step, const Contact& c) {
+    if (c.axis == Contact::kSloped)
+        return true;
+    const std::vector<Vec2>& gravity = step.scratch.impacts.gravityInStep;
+    const auto along = [&](Vec2 v) { return c.axis == 0 ? v.x : v.y; };
+    const float vn =
+        c.sign * (step.bodies[c.ia].velocity[c.axis] - step.bodies[c.ib].velocity[c.axis]);
+    const float fromGravity =
+        std::min(0.0f, c.sign * (along(gravity[c.ia]) - along(gravity[c.ib])));
+    return fromGravity - vn > kStillPerSlop * c.slop;
 }
 
 /// Collides the pair of `c` if it meets this step; true if it did. `shifted` is set if it
@@ -114,35 +131,29 @@ void resolveImpacts(StepContext& step) {
     // The first sweep looks at every contact.
     s.next.clear();
     for (Contact& c : step.contacts)
-        if (collide(step, c, threshold, shifted))
+        if (mayMeet(step, c) && collide(step, c, threshold, shifted))
             noteChanged(c, 1);
-    if (!s.next.empty()) {
-        // Each later one at the contacts of the bodies the one before changed, in order.
-        s.byBody.reset(bodyCount);
-        for (const Contact& c : step.contacts) {
-            s.byBody.count(c.ia);
-            s.byBody.count(c.ib);
-        }
-        s.contactsOf.resize(s.byBody.endCounting());
-        for (std::uint32_t k = 0; k < step.contacts.size(); ++k) {
-            s.contactsOf[s.byBody.place(step.contacts[k].ia)] = k;
-            s.contactsOf[s.byBody.place(step.contacts[k].ib)] = k;
-        }
-        s.byBody.endPlacing();
-    }
+    // Each later one at the contacts of the bodies the one before changed, in order: the
+    // support order's contact graph lists each body's.
+    const SupportScratch& graph = step.scratch.support;
     for (int sweep = 2; sweep <= kMaxSweeps && !s.next.empty(); ++sweep) {
         s.changed.swap(s.next);
         s.next.clear();
-        s.candidates.clear();
+        // The contacts of the changed bodies, each once, in the order of the contacts.
+        s.queued.resize((step.contacts.size() + 63) / 64); // all 0: each word is cleared as read
         for (std::uint32_t body : s.changed)
-            for (std::uint32_t k = s.byBody.begin(body); k < s.byBody.end(body); ++k)
-                s.candidates.push_back(s.contactsOf[k]);
-        std::sort(s.candidates.begin(), s.candidates.end());
-        s.candidates.erase(std::unique(s.candidates.begin(), s.candidates.end()),
-                           s.candidates.end());
-        for (std::uint32_t k : s.candidates)
-            if (collide(step, step.contacts[k], threshold, shifted))
-                noteChanged(step.contacts[k], sweep);
+            for (std::uint32_t e = graph.graph.begin(body); e < graph.graph.end(body); ++e) {
+                const std::uint32_t k = graph.sortedPlace[graph.edgeContact[e]];
+                s.queued[k / 64] |= std::uint64_t{1} << (k % 64);
+            }
+        for (std::size_t word = 0; word < s.queued.size(); ++word)
+            for (std::uint64_t bits = std::exchange(s.queued[word], 0); bits != 0;
+                 bits &= bits - 1) {
+                const std::size_t k = word * 64 + std::size_t(std::countr_zero(bits));
+                if (mayMeet(step, step.contacts[k]) &&
+                    collide(step, step.contacts[k], threshold, shifted))
+                    noteChanged(step.contacts[k], sweep);
+            }
     }
     // The gaps the contacts may close are those between the bodies as they are now.
     if (shifted)

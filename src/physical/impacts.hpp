@@ -7,7 +7,6 @@
 // (docs/physical-model.md, "Simultaneous collisions").
 #pragma once
 
-#include "../counting_sort.hpp"
 #include "jostle/math.hpp"
 
 #include <cstdint>
@@ -18,12 +17,10 @@ namespace jostle {
 struct StepContext;
 
 struct ImpactsScratch {
-    std::vector<Vec2> gravityInStep; ///< by solver body: what gravity adds to its velocity
-    std::vector<int> changedInSweep; ///< by solver body: the last sweep that changed it
+    std::vector<int> changedInSweep;          ///< by solver body: the last sweep that changed it
     std::vector<std::uint32_t> changed, next; ///< solver bodies changed in a sweep
-    Buckets byBody;                        ///< each solver body's run of contacts
-    std::vector<std::uint32_t> contactsOf; ///< contact indices, by body
-    std::vector<std::uint32_t> candidates; ///< the contacts of a sweep after the first
+    std::vector<Vec2> gravityInStep;          ///< by solver body: what gravity adds to its velocity
+    std::vector<std::uint64_t> queued;        ///< a bit per contact: to look at in this sweep
 };
 
 /// Resolves the step's impacts on the solver bodies' velocities; a pair that closes a gap

@@ -24,9 +24,15 @@ void buildGraph(StepContext& step) {
         s.graph.count(c.ib);
     }
     s.neighbours.resize(s.graph.endCounting());
-    for (const Contact& c : step.contacts) {
-        s.neighbours[s.graph.place(c.ia)] = c.ib;
-        s.neighbours[s.graph.place(c.ib)] = c.ia;
+    s.edgeContact.resize(s.neighbours.size());
+    for (std::uint32_t k = 0; k < step.contacts.size(); ++k) {
+        const Contact& c = step.contacts[k];
+        const std::uint32_t toB = s.graph.place(c.ia);
+        const std::uint32_t toA = s.graph.place(c.ib);
+        s.neighbours[toB] = c.ib;
+        s.neighbours[toA] = c.ia;
+        s.edgeContact[toB] = k;
+        s.edgeContact[toA] = k;
     }
     s.graph.endPlacing();
 }
@@ -123,6 +129,7 @@ void sortByLevel(StepContext& step, std::uint32_t top) {
     s.destination.resize(contacts.size());
     for (std::size_t k = 0; k < contacts.size(); ++k)
         s.destination[k] = s.byLevel.place(bucket(contacts[k]));
+    s.sortedPlace = s.destination;
     for (std::uint32_t k = 0; k < contacts.size(); ++k) {
         while (s.destination[k] != k) {
             const std::uint32_t to = s.destination[k];

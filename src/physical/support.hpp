@@ -15,6 +15,10 @@ struct StepContext;
 struct SupportScratch {
     Buckets graph; ///< the contact graph: each solver body's run of neighbours
     std::vector<std::uint32_t> neighbours;
+    /// Beside each neighbour, the contact it is met by, as its index before the sort;
+    /// sortedPlace maps that to where the sort put it.
+    std::vector<std::uint32_t> edgeContact;
+    std::vector<std::uint32_t> sortedPlace;
     std::vector<std::uint32_t> levels; ///< support level by solver body
     std::vector<std::uint8_t> backing; ///< by solver body: sides touching a static or kinematic one
     std::vector<std::uint32_t> queue;
