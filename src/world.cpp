@@ -8,7 +8,6 @@
 #include "physical/step.hpp"
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -38,15 +37,12 @@ void wakeAll(WorldState& world) {
         wakeIsland(world, id.index);
 }
 
-// Each world's handles start at their own generation, spread over the 32 bits by the
-// golden ratio so that two worlds' generations stay apart however often slots are reused.
-std::uint32_t nextFirstGeneration() {
-    static std::atomic<std::uint32_t> worldsMade{0};
-    const std::uint32_t generation = (worldsMade++ + 1) * 0x9E3779B9u;
-    return generation == 0 ? 1 : generation; // 0 is the null handle's
-}
-
 } // namespace
+
+WorldSerials& worldSerials() {
+    static WorldSerials serials;
+    return serials;
+}
 
 // --- Construction ----------------------------------------------------------------------
 
@@ -54,7 +50,11 @@ World::World(const WorldDef& def) : state_(std::make_unique<WorldState>()) {
     if (auto problem = checkWorldDef(def))
         fail("World", "WorldDef." + problem->field + ": " + problem->problem);
     state_->def = def;
-    state_->firstGeneration = nextFirstGeneration();
+    const std::optional<std::uint32_t> serial = worldSerials().take();
+    if (!serial)
+        fail("World", "this process has made 4294967295 worlds, as many as handles can tell "
+                      "apart (BodyId::world)");
+    state_->serial = *serial;
 }
 
 namespace {

@@ -51,7 +51,7 @@ BodyId World::createBody(const BodyDef& def) {
     if (shape.kind() != ShapeKind::Box && w.def.solver == Solver::Classic)
         fail("createBody", std::string("BodyDef.") + (def.slope != Vec2{} ? "slope" : "radius") +
                                ": the classic model has sharp boxes only");
-    const std::optional<std::uint32_t> taken = takeSlot(w.slots, w.freeSlots, w.firstGeneration);
+    const std::optional<std::uint32_t> taken = takeSlot(w.slots, w.freeSlots);
     if (!taken)
         fail("createBody", "too many bodies");
     const std::uint32_t slot = *taken;
@@ -99,8 +99,8 @@ void World::destroyBody(BodyId id) {
         --w.shapedBodies;
     if (body.snapDown > 0.0f)
         --w.snappingBodies;
-    body.generation = nextGeneration(body.generation);
-    (w.stepping ? w.pendingFree : w.freeSlots).push_back(id.index);
+    if (moveGenerationOn(body))
+        (w.stepping ? w.pendingFree : w.freeSlots).push_back(id.index);
     w.order.erase(std::find(w.order.begin(), w.order.end(), id));
 }
 

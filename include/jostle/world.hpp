@@ -191,7 +191,9 @@ using PreSolveFn = std::function<bool(Collision&)>;
 
 class World {
 public:
-    /// Throws jostle::Error if checkWorldDef(def) finds a problem.
+    /// Throws jostle::Error if checkWorldDef(def) finds a problem, or if this process has
+    /// already made UINT32_MAX (4,294,967,295) worlds: each world takes a serial number
+    /// of its own, never given again, which its handles carry (BodyId::world).
     explicit World(const WorldDef& def = {});
     ~World();
     World(World&&) noexcept;
