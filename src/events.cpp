@@ -128,7 +128,7 @@ void StepEvents::beginStep(const WorldState& world) {
     const Vec2 g = world.def.gravity;
     down = g == Vec2{} ? Vec2{0.0f, 1.0f} : g * (1.0f / length(g));
     // Awake dynamic bodies are evaluated afresh; the others keep their flags.
-    for (BodyId id : world.order) {
+    for (BodyId id : world.order.live()) {
         const Body& body = world.slots[id.index];
         if (body.isDynamic() && !body.asleep)
             touching[id.index] = 0;

@@ -33,7 +33,7 @@ struct StepScope {
 };
 
 void wakeAll(WorldState& world) {
-    for (BodyId id : world.order)
+    for (BodyId id : world.order.live())
         wakeIsland(world, id.index);
 }
 
@@ -154,7 +154,7 @@ void World::step(float dt) {
     StepScope scope(w);
     // A sleeping body keeps the separation of its last awake step: what held it up
     // still does ("grounded" stays true while it sleeps on the ground).
-    for (BodyId id : w.order)
+    for (BodyId id : w.order.live())
         if (!w.slots[id.index].asleep)
             w.slots[id.index].separation = {};
     try {

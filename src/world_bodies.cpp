@@ -82,7 +82,7 @@ BodyId World::createBody(const BodyDef& def) {
     if (slot < w.events.touching.size())
         w.events.touching[slot] = 0; // the slot's last body's flags
     const BodyId id = w.idOf(slot);
-    w.order.push_back(id);
+    w.order.append(id);
     disturb(w, slot);
     return id;
 }
@@ -101,11 +101,15 @@ void World::destroyBody(BodyId id) {
         --w.snappingBodies;
     if (moveGenerationOn(body))
         (w.stepping ? w.pendingFree : w.freeSlots).push_back(id.index);
-    w.order.erase(std::find(w.order.begin(), w.order.end(), id));
+    w.order.remove(id.index);
 }
 
 std::span<const BodyId> World::bodies() const {
-    return state_->order;
+    return state_->order.live();
+}
+
+std::size_t World::bodyCount() const {
+    return state_->order.size();
 }
 
 // --- Body getters and setters ----------------------------------------------------------
@@ -312,9 +316,10 @@ namespace {
 
 /// Copies `member` of each body, in creation order, into `out`, as many as fit.
 std::size_t readEach(const WorldState& w, std::span<Vec2> out, Vec2 Body::*member) {
-    const std::size_t count = std::min(out.size(), w.order.size());
+    const std::span<const BodyId> order = w.order.live();
+    const std::size_t count = std::min(out.size(), order.size());
     for (std::size_t i = 0; i < count; ++i)
-        out[i] = w.slots[w.order[i].index].*member;
+        out[i] = w.slots[order[i].index].*member;
     return count;
 }
 

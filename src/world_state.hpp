@@ -3,6 +3,7 @@
 
 #include "box_grid.hpp"
 #include "broadphase.hpp"
+#include "creation_order.hpp"
 #include "events.hpp"
 #include "geometry.hpp"
 #include "handles.hpp"
@@ -138,7 +139,7 @@ struct WorldState {
     /// Slots free for reuse.
     std::vector<std::uint32_t> freeSlots;
     /// Live bodies in creation order: the order every solver processes them in.
-    std::vector<BodyId> order;
+    CreationOrder order;
 
     /// True while step() runs. Slots freed meanwhile wait in pendingFree, so that no
     /// slot a solver still refers to is reused before the step ends.

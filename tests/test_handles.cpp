@@ -1,5 +1,6 @@
-// Handles of other worlds and of destroyed bodies, and the end of the ranges of world
-// serial numbers and of generations. (Basic handle checks: test_world.cpp.)
+// Handles of other worlds and of destroyed bodies, the end of the ranges of world serial
+// numbers and of generations, and the creation order of bodies() through creates and
+// destroys. (Basic handle checks: test_world.cpp.)
 #include "jostle/query.hpp"
 #include "jostle/tilemap.hpp"
 #include "jostle/world.hpp"
@@ -13,6 +14,7 @@
 #include <functional>
 #include <optional>
 #include <set>
+#include <span>
 #include <string>
 #include <thread>
 #include <vector>
@@ -208,6 +210,140 @@ TEST(Handles, ATileMapSlotAtTheLastGenerationIsRetiredNotReused) {
     EXPECT_FALSE(world.isValid(first));
     EXPECT_FALSE(world.isValid(last));
     EXPECT_TRUE(world.isValid(next));
+}
+
+// --- Creation order -------------------------------------------------------------------------
+
+// A generator of our own, so that the sequence does not depend on the standard library.
+class Lcg {
+public:
+    std::uint32_t next() {
+        state_ = state_ * 6364136223846793005ULL + 1442695040888963407ULL;
+        return static_cast<std::uint32_t>(state_ >> 33);
+    }
+
+private:
+    std::uint64_t state_ = 2024;
+};
+
+/// The world's bodies() against `expected`, and the same order from every other way of
+/// listing the bodies: readPositions, and a query over all of them.
+void expectOrder(const World& world, const std::vector<BodyId>& expected,
+                 const std::vector<Vec2>& positions) {
+    const std::span<const BodyId> listed = world.bodies();
+    ASSERT_EQ(std::vector<BodyId>(listed.begin(), listed.end()), expected);
+    ASSERT_EQ(world.bodyCount(), expected.size());
+    std::vector<Vec2> read(expected.size() + 1);
+    ASSERT_EQ(world.readPositions(read), expected.size());
+    read.pop_back();
+    ASSERT_EQ(read, positions);
+    ASSERT_EQ(queryRect(world, {-1e6f, -1e6f}, {1e6f, 1e6f}), expected);
+}
+
+TEST(CreationOrder, StaysCreationOrderThroughInterleavedCreatesAndDestroys) {
+    World world(WorldDef{.gravity = {0, 0}});
+    Lcg random;
+    std::vector<BodyId> expected;
+    std::vector<Vec2> positions;
+    float next = 0;
+    for (int round = 0; round < 3000; ++round) {
+        const std::uint32_t what = random.next() % 8;
+        if (what < 5 || expected.empty()) { // create, a few at a time
+            for (std::uint32_t n = random.next() % 8; n-- > 0;) {
+                const Vec2 at{3 * next++, 0};
+                expected.push_back(world.createBody(boxAt(at.x, at.y)));
+                positions.push_back(at);
+            }
+        } else if (what < 7) { // destroy anywhere: first, last, or in between
+            const std::size_t victim = random.next() % expected.size();
+            world.destroyBody(expected[victim]);
+            expected.erase(expected.begin() + static_cast<std::ptrdiff_t>(victim));
+            positions.erase(positions.begin() + static_cast<std::ptrdiff_t>(victim));
+        } else { // destroy a run, which leaves many gaps at once
+            const std::size_t begin = random.next() % expected.size();
+            const std::size_t end = std::min(expected.size(), begin + random.next() % 20);
+            for (std::size_t i = begin; i < end; ++i)
+                world.destroyBody(expected[i]);
+            expected.erase(expected.begin() + static_cast<std::ptrdiff_t>(begin),
+                           expected.begin() + static_cast<std::ptrdiff_t>(end));
+            positions.erase(positions.begin() + static_cast<std::ptrdiff_t>(begin),
+                            positions.begin() + static_cast<std::ptrdiff_t>(end));
+        }
+        ASSERT_EQ(world.bodyCount(), expected.size());
+        if (round % 7 == 0) {
+            expectOrder(world, expected, positions);
+            if (HasFatalFailure())
+                return;
+        }
+        if (round % 50 == 0)
+            world.step(1.0f / 60.0f); // no gravity, no velocity: nothing moves
+    }
+    EXPECT_GT(expected.size(), 1000u); // the list grew, with gaps anywhere in it
+    expectOrder(world, expected, positions);
+}
+
+TEST(CreationOrder, DestroyingInCreationOrderAndInReverseKeepsTheRestInOrder) {
+    for (const bool reverse : {false, true}) {
+        World world;
+        std::vector<BodyId> ids;
+        std::vector<Vec2> positions;
+        for (int i = 0; i < 1000; ++i) {
+            ids.push_back(world.createBody(boxAt(3.0f * float(i), 0)));
+            positions.push_back({3.0f * float(i), 0});
+        }
+        while (!ids.empty()) {
+            world.destroyBody(reverse ? ids.back() : ids.front());
+            if (reverse) {
+                ids.pop_back();
+                positions.pop_back();
+            } else {
+                ids.erase(ids.begin());
+                positions.erase(positions.begin());
+            }
+            if (ids.size() % 97 == 0) {
+                expectOrder(world, ids, positions);
+                if (HasFatalFailure())
+                    return;
+            }
+        }
+        EXPECT_TRUE(world.bodies().empty());
+        // The slots are reused, and the order starts over.
+        const BodyId again = world.createBody(boxAt(0, 0));
+        EXPECT_EQ(std::vector<BodyId>(world.bodies().begin(), world.bodies().end()),
+                  std::vector<BodyId>{again});
+    }
+}
+
+TEST(CreationOrder, BodiesDestroyedInACallbackLeaveTheOrderAtOnce) {
+    World world(WorldDef{.gravity = {0, 100}});
+    world.createBody({.type = BodyType::Static, .x = 0, .y = 10, .hw = 100, .hh = 1});
+    std::vector<BodyId> boxes;
+    for (int i = 0; i < 20; ++i)
+        boxes.push_back(world.createBody(boxAt(-50.0f + 5.0f * float(i), 8.5f)));
+    std::vector<BodyId> expected = {world.bodies().begin(), world.bodies().end()};
+    bool destroyed = false;
+    std::vector<BodyId> seenInCallback;
+    world.setPreSolve([&](Collision&) {
+        if (!destroyed) {
+            destroyed = true;
+            for (std::size_t i = 0; i < boxes.size(); i += 2)
+                world.destroyBody(boxes[i]);
+            seenInCallback.assign(world.bodies().begin(), world.bodies().end());
+        }
+        return true;
+    });
+    world.step(1.0f / 60.0f);
+    ASSERT_TRUE(destroyed);
+    for (std::size_t i = 0; i < boxes.size(); i += 2)
+        std::erase(expected, boxes[i]);
+    EXPECT_EQ(seenInCallback, expected);
+    EXPECT_EQ(std::vector<BodyId>(world.bodies().begin(), world.bodies().end()), expected);
+    for (std::size_t i = 1; i < boxes.size(); i += 2)
+        EXPECT_TRUE(world.isValid(boxes[i]));
+    world.step(1.0f / 60.0f); // the freed slots are reusable after the step
+    const BodyId late = world.createBody(boxAt(0, -20));
+    expected.push_back(late);
+    EXPECT_EQ(std::vector<BodyId>(world.bodies().begin(), world.bodies().end()), expected);
 }
 
 } // namespace
