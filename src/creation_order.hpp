@@ -1,6 +1,6 @@
 // The live bodies of a world in creation order: World::bodies(), and the order every
 // solver, event list and query result follows. Appending and removing a body cost O(1)
-// (amortised) whatever the number of bodies.
+// (amortised) whatever the number of bodies. (creation_order.cpp: closing the gaps.)
 #pragma once
 
 #include "jostle/body.hpp"
@@ -52,26 +52,17 @@ public:
     /// the next append or remove: a loop over it must not destroy bodies nor call the
     /// game's code, which may (the solvers' and queries' loops do neither).
     std::span<const BodyId> live() const {
-        if (gaps_.load(std::memory_order_acquire) != 0) {
-            std::lock_guard<std::mutex> lock(mutex_);
-            if (gaps_.load(std::memory_order_relaxed) != 0)
-                close();
-        }
+        if (gaps_.load(std::memory_order_acquire) != 0)
+            closeUnderLock();
         return entries_;
     }
 
 private:
     /// Moves every live body down over the gaps, in order, and notes where each went.
-    void close() const {
-        std::size_t kept = 0;
-        for (const BodyId id : entries_)
-            if (!id.isNull()) {
-                positions_[id.index] = static_cast<std::uint32_t>(kept);
-                entries_[kept++] = id;
-            }
-        entries_.resize(kept);
-        gaps_.store(0, std::memory_order_release);
-    }
+    void close() const;
+    /// close(), under mutex_, unless another thread did it meanwhile. Out of line: the
+    /// loops that call live() stay small.
+    void closeUnderLock() const;
 
     // Mutable: live() closes the gaps. Changed only by World's non-const functions, which
     // no other call runs beside, and by the first live() after them, under mutex_.
