@@ -5,11 +5,13 @@
 //     jostle-bench --scene rain_100k    one case; --scene rain: all of a family
 //     jostle-bench --series gas --csv series.csv   one family at several sizes
 //     jostle-bench --markdown           the table for docs/benchmarks.md
+//     jostle-bench --lifecycle 1000000  creating and destroying a million bodies, timed
 //
 // Progress goes to standard error, the table to standard output. Exit status: 0 when
 // all ran; 2 for bad options; 1 when something failed (the CSV file cannot be written).
 #include "catalog.hpp"
 #include "engine.hpp"
+#include "lifecycle.hpp"
 #include "report.hpp"
 #include "runner.hpp"
 
@@ -40,6 +42,7 @@ struct Options {
     std::string csv;
     bool markdown = false;
     bool list = false;
+    int lifecycle = 0;
 };
 
 const std::vector<EngineKind>& allEngines() {
@@ -176,6 +179,10 @@ int main(int argc, char** argv) {
     app.add_flag("--markdown", options.markdown,
                  "Print only the table, as markdown (for docs/benchmarks.md)");
     app.add_flag("--list", options.list, "List the cases that would run, and stop");
+    app.add_option("--lifecycle", options.lifecycle,
+                   "Instead of the scenes: create this many bodies in jostle and destroy them "
+                   "all, in creation order then in reverse order, and print the times")
+        ->check(CLI::Range(1, 100'000'000));
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& error) {
@@ -184,6 +191,10 @@ int main(int argc, char** argv) {
     }
 
     try {
+        if (options.lifecycle > 0) {
+            runLifecycle(stdout, options.lifecycle);
+            return 0;
+        }
         return runAll(options);
     } catch (const std::invalid_argument& error) {
         std::fprintf(stderr, "jostle-bench: error: %s\n", error.what());

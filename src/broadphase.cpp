@@ -16,7 +16,7 @@ void refreshRestingGrid(WorldState& world) {
     world.restingSlots.clear();
     std::vector<Box>& boxes = world.boundsScratch;
     boxes.clear();
-    for (BodyId id : world.order) {
+    for (BodyId id : world.order.live()) {
         const Body& body = world.slots[id.index];
         if (world.isResting(body)) {
             world.restingSlots.push_back(id.index);
@@ -95,7 +95,7 @@ private:
         w_.movingDynamic.clear();
         std::vector<Box>& bounds_ = w_.boundsScratch;
         bounds_.clear();
-        for (BodyId id : w_.order) {
+        for (BodyId id : w_.order.live()) {
             const Body& body = w_.slots[id.index];
             if (!w_.isResting(body)) {
                 w_.movingSlots.push_back(id.index);

@@ -60,7 +60,7 @@ template <class Visit> void Candidates::inGrid(const Box& region, Visit&& visit)
 
 template <class Visit> void Candidates::outsideGrid(Visit&& visit) const {
     if (!gridUsable_) {
-        for (BodyId id : w_.order)
+        for (BodyId id : w_.order.live())
             visit(id.index);
         return;
     }

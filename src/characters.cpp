@@ -44,7 +44,7 @@ bool slidesDown(const WorldState& world, BodyId id, Vec2 right) {
 
 void walkCharacters(WorldState& world) {
     const Vec2 right = rightOf(world.events.down);
-    for (BodyId id : world.order) {
+    for (BodyId id : world.order.live()) {
         Body& body = world.slots[id.index];
         if (!body.isCharacter() || body.asleep)
             continue;

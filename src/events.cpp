@@ -13,8 +13,8 @@ namespace {
 
 /// A contact the step did not look at: neither body is an awake dynamic body.
 bool contactNotEvaluated(const WorldState& world, const TouchRecord& record) {
-    auto resting = [&](BodyId id) {
-        const Body& body = world.slots[id.index];
+    auto resting = [&](SlotRef ref) {
+        const Body& body = world.slots[ref.index];
         return !body.isDynamic() || body.asleep;
     };
     return world.isCurrent(record.a) && world.isCurrent(record.b) && resting(record.a) &&
@@ -86,10 +86,10 @@ void recordContact(WorldState& world, std::uint32_t body, std::uint32_t other, V
     // Listed with the body created first as `a`, the normal pointing towards it.
     if (world.createdBefore(body, other))
         events.contactsNow.push_back(
-            {world.idOf(body), world.idOf(other), normal, approachSpeed, impulse});
+            {world.refOf(body), world.refOf(other), normal, approachSpeed, impulse});
     else
         events.contactsNow.push_back(
-            {world.idOf(other), world.idOf(body), -normal, approachSpeed, impulse});
+            {world.refOf(other), world.refOf(body), -normal, approachSpeed, impulse});
 }
 
 Vec2 pointOf(const WorldState& world, const TouchRecord& record) {
@@ -115,7 +115,7 @@ GroundRecord groundOf(const WorldState& world, BodyId id) {
 }
 
 void recordSensor(WorldState& world, std::uint32_t sensor, std::uint32_t visitor) {
-    world.events.sensorsNow.push_back({world.idOf(sensor), world.idOf(visitor), {}, 0.0f});
+    world.events.sensorsNow.push_back({world.refOf(sensor), world.refOf(visitor), {}, 0.0f});
 }
 
 void StepEvents::beginStep(const WorldState& world) {
@@ -132,7 +132,7 @@ void StepEvents::beginStep(const WorldState& world) {
     const Vec2 g = world.def.gravity;
     down = g == Vec2{} ? Vec2{0.0f, 1.0f} : g * (1.0f / length(g));
     // Awake dynamic bodies are evaluated afresh; the others keep their flags.
-    for (BodyId id : world.order) {
+    for (BodyId id : world.order.live()) {
         const Body& body = world.slots[id.index];
         if (body.isDynamic() && !body.asleep)
             touching[id.index] = 0;
@@ -159,10 +159,11 @@ void StepEvents::publish(const WorldState& world, bool anyAwake) {
     compare(
         world, contactsNow, contactsBefore_, scratch_, contactNotEvaluated,
         [&](const TouchRecord& r) {
-            begins.push_back({r.a, r.b, r.normal, r.approachSpeed, pointOf(world, r)});
+            begins.push_back(
+                {world.idFor(r.a), world.idFor(r.b), r.normal, r.approachSpeed, pointOf(world, r)});
         },
         [&](const TouchRecord& r) {
-            ends.push_back({r.a, r.b, r.normal, 0.0f, Vec2{}});
+            ends.push_back({world.idFor(r.a), world.idFor(r.b), r.normal, 0.0f, Vec2{}});
         });
     {
         std::lock_guard<std::mutex> lock(indexMutex_);
@@ -172,10 +173,10 @@ void StepEvents::publish(const WorldState& world, bool anyAwake) {
     compare(
         world, sensorsNow, sensorsBefore_, scratch_, sensorNotEvaluated,
         [&](const TouchRecord& r) {
-            sensorBegins.push_back({r.a, r.b});
+            sensorBegins.push_back({world.idFor(r.a), world.idFor(r.b)});
         },
         [&](const TouchRecord& r) {
-            sensorEnds.push_back({r.a, r.b});
+            sensorEnds.push_back({world.idFor(r.a), world.idFor(r.b)});
         });
 }
 

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "counting_sort.hpp"
+#include "handles.hpp"
 #include "jostle/world.hpp"
 
 #include <cstdint>
@@ -16,13 +17,14 @@ struct WorldState;
 
 /// A pair touching (or, for sensors, overlapping) at the end of a step.
 struct TouchRecord {
-    BodyId a, b; ///< contacts: a created first; sensors: a is the sensor
+    SlotRef a, b; ///< contacts: a created first; sensors: a is the sensor
     Vec2 normal;
     float approachSpeed = 0.0f;
     float impulse = 0.0f; ///< contacts: the normal impulse between them in the step
 
     std::uint64_t key() const { return std::uint64_t(a.index) << 32 | b.index; }
 };
+static_assert(sizeof(TouchRecord) == 32, "a record of the bodies' slots, not their handles");
 
 /// Touching bits, by slot.
 enum TouchingBit : std::uint8_t {

@@ -40,7 +40,7 @@ void applyForces(WorldState& world, float dt) {
 }
 
 void integrateAwakeBodies(WorldState& world, float dt) {
-    for (BodyId id : world.order) {
+    for (BodyId id : world.order.live()) {
         Body& body = world.slots[id.index];
         if (body.isDynamic() && !body.asleep) {
             integrateVelocity(world.def, body, dt);
@@ -64,7 +64,7 @@ bool stopAtTheEdge(Body& body) {
 }
 
 void keepInsideTheWorld(WorldState& world) {
-    for (BodyId id : world.order) {
+    for (BodyId id : world.order.live()) {
         Body& b = world.slots[id.index];
         // Sleeping bodies too: a body can fall asleep in the very step that carried it
         // past the edge (slow enough to rest, with a long enough dt).

@@ -11,6 +11,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
+#include <string>
 
 namespace jostle {
 
@@ -29,9 +31,11 @@ bool passes(const WorldState& w, std::uint32_t slot, const QueryFilter& filter) 
 // --- Argument checks ---------------------------------------------------------------------
 
 void checkFilter(const WorldState& w, const QueryFilter& filter, const char* function) {
-    if (!filter.ignore.isNull() && !w.isCurrent(filter.ignore))
-        fail(function, "QueryFilter.ignore: stale or foreign BodyId (the body was destroyed "
-                       "or is not of this world)");
+    if (filter.ignore.isNull())
+        return;
+    if (std::optional<std::string> problem =
+            handleProblem(w.slots, w.serial, filter.ignore, "BodyId", "body"))
+        fail(function, "QueryFilter.ignore: " + *problem);
 }
 
 void checkBox(const char* function, Vec2 centre, Vec2 half, bool sizeZeroAllowed) {

@@ -44,7 +44,8 @@ std::optional<std::string> rampInClassic(const World& world, const TileMapDef& d
 
 TileMapData& lookUp(WorldState& world, TileMapId id, const char* function) {
     std::vector<TileMapData>& maps = world.tileMaps.maps;
-    if (std::optional<std::string> problem = handleProblem(maps, id, "TileMapId", "map"))
+    if (std::optional<std::string> problem =
+            handleProblem(maps, world.serial, id, "TileMapId", "map"))
         fail(function, *problem);
     return maps[id.index];
 }
@@ -275,8 +276,7 @@ TileMapId createTileMap(World& world, const TileMapDef& def) {
         fail("createTileMap", "TileMapDef." + *ramp + ": " + kNoRampsInClassic);
 
     TileMaps& maps = WorldAccess::state(world).tileMaps;
-    const std::optional<std::uint32_t> taken =
-        takeSlot(maps.maps, maps.freeMaps, WorldAccess::state(world).firstGeneration);
+    const std::optional<std::uint32_t> taken = takeSlot(maps.maps, maps.freeMaps);
     if (!taken)
         fail("createTileMap", "too many tile maps");
     const std::uint32_t index = *taken;
@@ -297,7 +297,7 @@ TileMapId createTileMap(World& world, const TileMapDef& def) {
         }
     map.boxAt.assign(map.solid.size(), TileMapData::kNoBox);
 
-    const TileMapId id{index, generation};
+    const TileMapId id{index, generation, WorldAccess::state(world).serial};
     buildAll(world, id);
     return id;
 }
@@ -307,12 +307,14 @@ void destroyTileMap(World& world, TileMapId id) {
     Boxes(world, id).removeAll();
     const std::uint32_t generation = map.generation;
     map = TileMapData{};
-    map.generation = nextGeneration(generation);
-    WorldAccess::state(world).tileMaps.freeMaps.push_back(id.index);
+    map.generation = generation;
+    if (moveGenerationOn(map))
+        WorldAccess::state(world).tileMaps.freeMaps.push_back(id.index);
 }
 
 bool World::isValid(TileMapId id) const {
-    return isCurrent(WorldAccess::state(*this).tileMaps.maps, id);
+    const WorldState& state = WorldAccess::state(*this);
+    return isCurrent(state.tileMaps.maps, state.serial, id);
 }
 
 // --- Tiles -------------------------------------------------------------------------------

@@ -8,7 +8,6 @@
 #include "physical/step.hpp"
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -34,19 +33,16 @@ struct StepScope {
 };
 
 void wakeAll(WorldState& world) {
-    for (BodyId id : world.order)
+    for (BodyId id : world.order.live())
         wakeIsland(world, id.index);
 }
 
-// Each world's handles start at their own generation, spread over the 32 bits by the
-// golden ratio so that two worlds' generations stay apart however often slots are reused.
-std::uint32_t nextFirstGeneration() {
-    static std::atomic<std::uint32_t> worldsMade{0};
-    const std::uint32_t generation = (worldsMade++ + 1) * 0x9E3779B9u;
-    return generation == 0 ? 1 : generation; // 0 is the null handle's
-}
-
 } // namespace
+
+WorldSerials& worldSerials() {
+    static WorldSerials serials;
+    return serials;
+}
 
 // --- Construction ----------------------------------------------------------------------
 
@@ -54,7 +50,11 @@ World::World(const WorldDef& def) : state_(std::make_unique<WorldState>()) {
     if (auto problem = checkWorldDef(def))
         fail("World", "WorldDef." + problem->field + ": " + problem->problem);
     state_->def = def;
-    state_->firstGeneration = nextFirstGeneration();
+    const std::optional<std::uint32_t> serial = worldSerials().take();
+    if (!serial)
+        fail("World", "this process has made 4294967295 worlds, as many as handles can tell "
+                      "apart (BodyId::world)");
+    state_->serial = *serial;
 }
 
 namespace {
@@ -158,7 +158,7 @@ void World::step(float dt) {
     StepScope scope(w);
     // A sleeping body keeps the separation of its last awake step: what held it up
     // still does ("grounded" stays true while it sleeps on the ground).
-    for (BodyId id : w.order)
+    for (BodyId id : w.order.live())
         if (!w.slots[id.index].asleep)
             w.slots[id.index].separation = {};
     try {

@@ -45,7 +45,8 @@ inline void requireSize(const char* function, const char* what, float value) {
 
 /// The live body `id` names, or jostle::Error (null, stale or foreign handle).
 inline Body& lookUp(WorldState& world, BodyId id, const char* function) {
-    if (std::optional<std::string> problem = handleProblem(world.slots, id, "BodyId", "body"))
+    if (std::optional<std::string> problem =
+            handleProblem(world.slots, world.serial, id, "BodyId", "body"))
         fail(function, *problem);
     return world.slots[id.index];
 }

@@ -51,7 +51,7 @@ BodyId World::createBody(const BodyDef& def) {
     if (shape.kind() != ShapeKind::Box && w.def.solver == Solver::Classic)
         fail("createBody", std::string("BodyDef.") + (def.slope != Vec2{} ? "slope" : "radius") +
                                ": the classic model has sharp boxes only");
-    const std::optional<std::uint32_t> taken = takeSlot(w.slots, w.freeSlots, w.firstGeneration);
+    const std::optional<std::uint32_t> taken = takeSlot(w.slots, w.freeSlots);
     if (!taken)
         fail("createBody", "too many bodies");
     const std::uint32_t slot = *taken;
@@ -85,7 +85,7 @@ BodyId World::createBody(const BodyDef& def) {
     if (slot < w.events.touching.size())
         w.events.touching[slot] = 0; // the slot's last body's flags
     const BodyId id = w.idOf(slot);
-    w.order.push_back(id);
+    w.order.append(id);
     disturb(w, slot);
     return id;
 }
@@ -102,13 +102,17 @@ void World::destroyBody(BodyId id) {
         --w.shapedBodies;
     if (body.snapDown > 0.0f)
         --w.snappingBodies;
-    body.generation = nextGeneration(body.generation);
-    (w.stepping ? w.pendingFree : w.freeSlots).push_back(id.index);
-    w.order.erase(std::find(w.order.begin(), w.order.end(), id));
+    if (moveGenerationOn(body))
+        (w.stepping ? w.pendingFree : w.freeSlots).push_back(id.index);
+    w.order.remove(id.index);
 }
 
 std::span<const BodyId> World::bodies() const {
-    return state_->order;
+    return state_->order.live();
+}
+
+std::size_t World::bodyCount() const {
+    return state_->order.size();
 }
 
 // --- Body getters and setters ----------------------------------------------------------
@@ -315,9 +319,10 @@ namespace {
 
 /// Copies `member` of each body, in creation order, into `out`, as many as fit.
 std::size_t readEach(const WorldState& w, std::span<Vec2> out, Vec2 Body::*member) {
-    const std::size_t count = std::min(out.size(), w.order.size());
+    const std::span<const BodyId> order = w.order.live();
+    const std::size_t count = std::min(out.size(), order.size());
     for (std::size_t i = 0; i < count; ++i)
-        out[i] = w.slots[w.order[i].index].*member;
+        out[i] = w.slots[order[i].index].*member;
     return count;
 }
 

@@ -3,6 +3,7 @@
 
 #include "box_grid.hpp"
 #include "broadphase.hpp"
+#include "creation_order.hpp"
 #include "events.hpp"
 #include "geometry.hpp"
 #include "handles.hpp"
@@ -37,7 +38,8 @@ struct alignas(64) Body {
     std::uint32_t mask = 0xFFFFFFFF;
     /// One-way platform: outward normal of the blocking face, or {0, 0}.
     Vec2 oneWay;
-    /// Counts the slot's reuses; a BodyId matches only the generation it was made with.
+    /// Counts the slot's reuses; a BodyId matches only the generation it was made with
+    /// (handles.hpp).
     std::uint32_t generation = 1;
     BodyType type = BodyType::Dynamic;
     /// The slot holds a live body. Cleared at once by destroyBody, even mid-step.
@@ -127,18 +129,17 @@ struct WorldState {
     WorldDef def;
     PreSolveFn preSolve;
 
-    /// The generation a new slot starts at, for bodies and tile maps alike: different in
-    /// every world of the process, so that a handle of another world does not match
-    /// (World::isValid is false and every other function throws). Handles are the only
-    /// thing it touches: nothing in the simulation depends on it.
-    std::uint32_t firstGeneration = 1;
+    /// This world's serial number, unique in the process (handles.hpp): every BodyId and
+    /// TileMapId it gives carries it. Handles are the only thing it touches: nothing in
+    /// the simulation depends on it.
+    std::uint32_t serial = 0;
 
     /// Bodies by slot index; a BodyId's index points here.
     std::vector<Body> slots;
     /// Slots free for reuse.
     std::vector<std::uint32_t> freeSlots;
     /// Live bodies in creation order: the order every solver processes them in.
-    std::vector<BodyId> order;
+    CreationOrder order;
 
     /// True while step() runs. Slots freed meanwhile wait in pendingFree, so that no
     /// slot a solver still refers to is reused before the step ends.
@@ -203,18 +204,27 @@ struct WorldState {
     /// const World.
     mutable QueryIndex queries;
 
-    BodyId idOf(std::uint32_t slot) const { return {slot, slots[slot].generation}; }
-    /// True if `id` still names a live body (its slot not reused since).
-    bool isCurrent(BodyId id) const { return jostle::isCurrent(slots, id); }
+    /// The handle of the body in `slot`.
+    BodyId idOf(std::uint32_t slot) const { return {slot, slots[slot].generation, serial}; }
+    /// The handle of the body `ref` names.
+    BodyId idFor(SlotRef ref) const { return {ref.index, ref.generation, serial}; }
+    SlotRef refOf(std::uint32_t slot) const { return {slot, slots[slot].generation}; }
+    /// True if `id` names a live body of this world.
+    bool isCurrent(BodyId id) const { return jostle::isCurrent(slots, serial, id); }
+    /// True if `ref` still names a live body (its slot not reused since).
+    bool isCurrent(SlotRef ref) const {
+        return jostle::isCurrent(slots, ref.index, ref.generation);
+    }
     bool isLive(std::uint32_t slot) const { return slots[slot].alive; }
     bool isResting(const Body& body) const { return body.type == BodyType::Static || body.asleep; }
     /// Calls visit(other, normal, record) for each body that `id` touched at the end of the
     /// last step and that is still there; `normal` points from `other` towards `id`.
     template <class Visit> void forEachContactOf(BodyId id, Visit&& visit) const {
+        const SlotRef self{id.index, id.generation};
         events.forEachTouchOf(id.index, [&](const TouchRecord& r) {
-            const bool isA = r.a == id;
-            if ((isA || r.b == id) && isCurrent(isA ? r.b : r.a))
-                visit(isA ? r.b : r.a, isA ? r.normal : -r.normal, r);
+            const bool isA = r.a == self;
+            if ((isA || r.b == self) && isCurrent(isA ? r.b : r.a))
+                visit(idFor(isA ? r.b : r.a), isA ? r.normal : -r.normal, r);
         });
     }
     /// Whether the body in slot `a` was created before the one in slot `b`.

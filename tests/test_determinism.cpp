@@ -80,8 +80,9 @@ public:
         add(v.x);
         add(v.y);
     }
-    // The slot, not the generation: generations differ from world to world on purpose
-    // (a world rejects another's handles), and nothing in the simulation depends on them.
+    // The slot alone: a handle's world (its serial number) differs from world to world
+    // and with the worlds made before, and nothing in the simulation depends on it or on
+    // the generation.
     void add(BodyId id) { add(id.index); }
     std::uint64_t value() const { return value_; }
 

@@ -32,15 +32,18 @@ std::optional<BodyType> bodyTypeFromString(const std::string& name);
 
 /// A handle to a body of one world. A default-constructed BodyId is the null handle.
 ///
-/// The index names a storage slot and the generation counts how often that slot was
-/// reused, so a handle to a destroyed body is detected (World::isValid returns false and
-/// every other World function throws jostle::Error), never mistaken for a newer body.
-/// Each world starts its generations at its own value, so a handle of another world is
-/// detected the same way. Handles are compared, never ordered: their values say nothing
-/// about creation order and differ from world to world.
+/// It names the world that made it, a storage slot of that world, and a generation that
+/// counts how often the slot was reused. So a handle is never mistaken for another body:
+/// World::isValid returns false, and every other World function throws jostle::Error,
+/// for a handle of a destroyed body ("stale BodyId") and for a handle of another world
+/// ("BodyId of another world"), however many worlds and bodies the process made.
+/// Handles are compared, never ordered: their values say nothing about creation order.
 struct BodyId {
     std::uint32_t index = 0;
     std::uint32_t generation = 0; ///< 0 only in the null handle
+    /// The serial number of the world that made it, unique in the process; 0 only in the
+    /// null handle (World::World).
+    std::uint32_t world = 0;
 
     constexpr bool isNull() const { return generation == 0; }
     friend constexpr bool operator==(BodyId a, BodyId b) = default;

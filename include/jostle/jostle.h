@@ -42,9 +42,10 @@
 // same way, by jostle_default_query_filter().
 //
 // Handles. Worlds and fixed-step clocks are opaque pointers you create and destroy.
-// Bodies and tile maps are small value handles (jostle_body_id, jostle_tile_map_id) with
-// a generation count: a handle to a destroyed body is detected, never mistaken for a
-// newer body. The null handle is all zeros.
+// Bodies and tile maps are small value handles (jostle_body_id, jostle_tile_map_id) that
+// carry the world that made them and a generation count: a handle to a destroyed body,
+// or a body of another world, is detected, never mistaken for a body of this world. The
+// null handle is all zeros.
 //
 // Units and axes are yours (pixels are fine); y grows downward in the examples, but
 // only gravity decides what a "floor" is. Floats throughout. Same inputs give the same
@@ -132,30 +133,35 @@ typedef struct jostle_vec2 {
     float y;
 } jostle_vec2;
 
-/// A handle to a body of one world (mirrors jostle::BodyId). The null handle is {0, 0}:
-/// generation is 0 only there.
+/// A handle to a body of one world (mirrors jostle::BodyId). The null handle is
+/// {0, 0, 0}: generation is 0 only there. A handle of a destroyed body is stale, and
+/// one of another world is foreign: given to a function, either is misuse ("stale
+/// BodyId", "BodyId of another world"), and jostle_body_is_valid says false.
 typedef struct jostle_body_id {
     uint32_t index;      ///< the storage slot
     uint32_t generation; ///< how often the slot was reused; 0 only in the null handle
+    uint32_t world;      ///< the serial number of the world that made it; 0 only in null
 } jostle_body_id;
 
-/// A handle to a tile map of one world (mirrors jostle::TileMapId), null = {0, 0}.
+/// A handle to a tile map of one world (mirrors jostle::TileMapId), null = {0, 0, 0};
+/// checked as a jostle_body_id is.
 typedef struct jostle_tile_map_id {
     uint32_t index;
     uint32_t generation;
+    uint32_t world;
 } jostle_tile_map_id;
 
 static inline bool jostle_body_id_is_null(jostle_body_id id) {
     return id.generation == 0;
 }
 static inline bool jostle_body_id_equal(jostle_body_id a, jostle_body_id b) {
-    return a.index == b.index && a.generation == b.generation;
+    return a.index == b.index && a.generation == b.generation && a.world == b.world;
 }
 static inline bool jostle_tile_map_id_is_null(jostle_tile_map_id id) {
     return id.generation == 0;
 }
 static inline bool jostle_tile_map_id_equal(jostle_tile_map_id a, jostle_tile_map_id b) {
-    return a.index == b.index && a.generation == b.generation;
+    return a.index == b.index && a.generation == b.generation && a.world == b.world;
 }
 
 // === Worlds ================================================================================
@@ -218,7 +224,8 @@ jostle_world_def jostle_default_world_def(void);
 
 /// A new, empty world, or NULL on misuse (def NULL, not made by jostle_default_world_def,
 /// or a field out of range: "jostle_world_create: World: WorldDef.maxVelocity: must be
-/// > 0").
+/// > 0") and when the process has made UINT32_MAX worlds already (each takes a serial
+/// number of its own, never given again, which its handles carry).
 jostle_world* jostle_world_create(const jostle_world_def* def);
 
 /// Frees the world with all its bodies and tile maps; every handle to them, and every
@@ -335,7 +342,7 @@ jostle_body_id jostle_body_create(jostle_world* world, const jostle_body_def* de
 /// out of the rest of the step.
 bool jostle_body_destroy(jostle_world* world, jostle_body_id body);
 
-/// True if `body` names a live body of this world. A stale or null handle is an
+/// True if `body` names a live body of this world. A stale, foreign or null handle is an
 /// ordinary false, not misuse; only a NULL world is.
 bool jostle_body_is_valid(const jostle_world* world, jostle_body_id body);
 
@@ -848,7 +855,8 @@ jostle_tile_map_id jostle_tile_map_create(jostle_world* world, const jostle_tile
 /// Destroys the map and all its bodies; what rests on them wakes and falls.
 bool jostle_tile_map_destroy(jostle_world* world, jostle_tile_map_id map);
 
-/// True if `map` names a live tile map of this world; stale or null is an ordinary false.
+/// True if `map` names a live tile map of this world; stale, foreign or null is an
+/// ordinary false.
 bool jostle_tile_map_is_valid(const jostle_world* world, jostle_tile_map_id map);
 
 /// Makes the tile at (column, row) solid or empty; the tile must be inside the map.

@@ -30,10 +30,12 @@ namespace jostle {
 class World;
 
 /// A handle to a tile map of one world, checked like a BodyId: using one after its map
-/// is destroyed throws jostle::Error. A default-constructed TileMapId is the null handle.
+/// is destroyed, or in another world, throws jostle::Error. A default-constructed
+/// TileMapId is the null handle.
 struct TileMapId {
     std::uint32_t index = 0;
     std::uint32_t generation = 0; ///< 0 only in the null handle
+    std::uint32_t world = 0;      ///< the world that made it, as in BodyId
 
     constexpr bool isNull() const { return generation == 0; }
     friend constexpr bool operator==(TileMapId a, TileMapId b) = default;

@@ -198,7 +198,9 @@ using PreSolveFn = std::function<bool(Collision&)>;
 
 class World {
 public:
-    /// Throws jostle::Error if checkWorldDef(def) finds a problem.
+    /// Throws jostle::Error if checkWorldDef(def) finds a problem, or if this process has
+    /// already made UINT32_MAX (4,294,967,295) worlds: each world takes a serial number
+    /// of its own, never given again, which its handles carry (BodyId::world).
     explicit World(const WorldDef& def = {});
     ~World();
     World(World&&) noexcept;
@@ -215,7 +217,8 @@ public:
 
     /// Removes a body; its handle and every copy of it become stale at once.
     /// Safe from a callback during step(): the body is left out of the rest of the step
-    /// and its storage is reclaimed when the step ends.
+    /// and its storage is reclaimed when the step ends. Costs the same whatever the
+    /// number of bodies (amortised: see bodies()).
     void destroyBody(BodyId id);
 
     /// True if `id` names a body of this world that has not been destroyed.
@@ -225,8 +228,12 @@ public:
     bool isValid(TileMapId id) const;
 
     /// The live bodies, in creation order. Invalidated by createBody and destroyBody.
+    /// destroyBody leaves a gap in the list, which the next call of this function (or
+    /// of step(), or a query) closes, in time proportional to the number of bodies; so
+    /// does destroyBody itself once gaps are half the list.
     std::span<const BodyId> bodies() const;
-    std::size_t bodyCount() const { return bodies().size(); }
+    /// How many bodies are alive: bodies().size(), without closing gaps.
+    std::size_t bodyCount() const;
 
     /// Copies the positions of the bodies, in the order of bodies(), into `out`: as many
     /// as fit (all of them if out.size() >= bodyCount()). Returns how many. One call

@@ -29,17 +29,17 @@ inline jostle_vec2 toC(Vec2 v) {
 }
 
 inline BodyId toCpp(jostle_body_id id) {
-    return {id.index, id.generation};
+    return {id.index, id.generation, id.world};
 }
 inline jostle_body_id toC(BodyId id) {
-    return {id.index, id.generation};
+    return {id.index, id.generation, id.world};
 }
 
 inline TileMapId toCpp(jostle_tile_map_id id) {
-    return {id.index, id.generation};
+    return {id.index, id.generation, id.world};
 }
 inline jostle_tile_map_id toC(TileMapId id) {
-    return {id.index, id.generation};
+    return {id.index, id.generation, id.world};
 }
 
 // Enums from C may hold any int: each is checked before it becomes a C++ enum.

@@ -47,7 +47,7 @@ public:
         w_.events.beginStep(w_);
         // The tutorial keeps two lists, statics and dynamics, in creation order. Kinematic
         // bodies go with the statics: the dynamic bodies collide with them the same way.
-        for (BodyId id : w_.order) {
+        for (BodyId id : w_.order.live()) {
             (w_.slots[id.index].isDynamic() ? dynamics_ : statics_).push_back(id.index);
         }
 

@@ -52,7 +52,7 @@ void carryRiders(StepContext& step) {
 
 void rememberPlatformVelocities(StepContext& step) {
     WorldState& w = step.world;
-    for (BodyId id : w.order) {
+    for (BodyId id : w.order.live()) {
         Body& body = w.slots[id.index];
         if (body.type == BodyType::Kinematic)
             body.lastStepVelocity = body.velocity;

@@ -374,7 +374,7 @@ static void test_body_properties(void) {
     // The body list, in creation order, with the buffer rule.
     CHECK(jostle_world_body_count(world) == 3, "three bodies");
     CHECK(jostle_world_bodies(world, NULL, 0) == 3, "the count alone");
-    jostle_body_id list[3] = {{0, 0}, {0, 0}, {0, 0}};
+    jostle_body_id list[3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
     CHECK(jostle_world_bodies(world, list, 2) == 3, "the full count with a small buffer");
     CHECK(same(list[0], a) && same(list[1], b) && jostle_body_id_is_null(list[2]),
           "the first two, and nothing beyond the capacity");
@@ -771,7 +771,7 @@ static void test_contacts_now(void) {
     CHECK_NEAR(contacts[0].impulse, 1000.0, 1.0);
 
     // The floor's, with the buffer rule: in the order of the bodies they pair with.
-    const jostle_body_id sentinel = {77, 77};
+    const jostle_body_id sentinel = {77, 77, 77};
     contacts[1].other = sentinel;
     CHECK(jostle_body_contacts(world, floor, NULL, 0) == 2, "the count alone");
     CHECK(jostle_body_contacts(world, floor, contacts, 1) == 2, "the full count, one copied");
@@ -881,7 +881,7 @@ static void test_queries(void) {
     // Points: inside the crate; on the seam of crate and floor, which belongs to both.
     CHECK(jostle_query_point(world, (jostle_vec2){0, 80}, NULL, found, 4) == 1, "one body");
     CHECK(same(found[0], crate), "the crate");
-    jostle_body_id sentinel = {77, 77};
+    jostle_body_id sentinel = {77, 77, 77};
     found[1] = sentinel;
     CHECK(jostle_query_point(world, (jostle_vec2){0, 90}, NULL, found, 1) == 2,
           "both on the seam, counted though only one fits");
@@ -1721,7 +1721,7 @@ static void test_misuse(void) {
     CHECK_ERROR("jostle_world_step", "world is NULL");
     CHECK(jostle_body_id_is_null(jostle_body_create(NULL, &def)), "create");
     CHECK_ERROR("jostle_body_create", "world is NULL");
-    jostle_body_id some = {1, 1};
+    jostle_body_id some = {1, 1, 1};
     jostle_vec2 p = jostle_body_get_position(NULL, some);
     CHECK(p.x == 0 && p.y == 0, "a zero vector");
     CHECK_ERROR("jostle_body_get_position", "world is NULL");
@@ -1738,7 +1738,7 @@ static void test_misuse(void) {
     int count = 5;
     CHECK(jostle_world_contact_begins(NULL, &count) == NULL && count == 0, "events");
     CHECK_ERROR("jostle_world_contact_begins", "world is NULL");
-    CHECK(jostle_tile_map_rows(NULL, (jostle_tile_map_id){1, 1}) == 0, "tile map");
+    CHECK(jostle_tile_map_rows(NULL, (jostle_tile_map_id){1, 1, 1}) == 0, "tile map");
     CHECK_ERROR("jostle_tile_map_rows", "world is NULL");
     CHECK(jostle_world_destroy(NULL), "destroying NULL is not an error, as with free");
     CHECK_NO_ERROR();
@@ -1821,7 +1821,7 @@ static void test_misuse(void) {
     CHECK(!jostle_body_is_valid(world, box), "stale");
     CHECK_NO_ERROR();
     CHECK(!jostle_body_set_position(world, box, (jostle_vec2){0, 0}), "stale");
-    CHECK_ERROR("jostle_body_set_position", "stale or foreign BodyId");
+    CHECK_ERROR("jostle_body_set_position", "stale BodyId (the body was destroyed)");
     CHECK(!jostle_body_destroy(world, box), "twice");
     CHECK_ERROR("jostle_body_destroy", "stale");
     p = jostle_body_get_velocity(world, box);
@@ -1832,7 +1832,7 @@ static void test_misuse(void) {
     jostle_body_def gone = jostle_body_get_def(world, box);
     CHECK(gone.hw == 0 && gone.internal_cookie == 0, "all zeros");
     CHECK_ERROR("jostle_body_get_def", "stale");
-    jostle_body_id null_id = {0, 0};
+    jostle_body_id null_id = {0, 0, 0};
     CHECK(!jostle_body_wake(world, null_id), "null handle");
     CHECK_ERROR("jostle_body_wake", "null BodyId");
 
@@ -1914,6 +1914,79 @@ static void test_misuse(void) {
     CHECK_NO_ERROR();
 }
 
+// --- Handles of other worlds ---------------------------------------------------------------
+
+/// A world with one box at (x, 0), in slot 0.
+static jostle_world* world_with_a_box(float x, jostle_body_id* box) {
+    jostle_world* world = make_world(0);
+    *box = add_box(world, JOSTLE_BODY_DYNAMIC, x, 0, 1, 1);
+    CHECK(box->index == 0, "slot 0");
+    return world;
+}
+
+/// Issue 19: a handle of another world is refused, even where its slot and generation
+/// name a live body of this world. Until each handle carried its world, the world made
+/// 28,657 worlds after another started its generations 52,777 above the other's, so that
+/// after as many reuses of slot 0 the two worlds' handles there were equal and
+/// jostle_body_set_position moved this world's own body.
+static void test_a_handle_of_another_world(void) {
+    jostle_body_id mine;
+    jostle_world* world = world_with_a_box(0, &mine);
+    for (int i = 1; i < 28657; ++i) {
+        jostle_world_def def = jostle_default_world_def();
+        CHECK(jostle_world_destroy(jostle_world_create(&def)), "an intervening world");
+    }
+    jostle_body_id theirs;
+    jostle_world* other = world_with_a_box(5, &theirs);
+    for (int i = 0; i < 52777; ++i) {
+        CHECK(jostle_body_destroy(world, mine), "destroyed");
+        mine = add_box(world, JOSTLE_BODY_DYNAMIC, 0, 0, 1, 1);
+    }
+    CHECK(mine.index == theirs.index, "the same slot");
+    CHECK(!jostle_body_is_valid(world, theirs), "another world's handle is not valid here");
+    CHECK_NO_ERROR();
+    CHECK(!jostle_body_set_position(world, theirs, (jostle_vec2){100, 100}), "refused");
+    CHECK_ERROR("jostle_body_set_position", "BodyId of another world");
+    CHECK(at(jostle_body_get_position(world, mine), 0, 0), "this world's body did not move");
+    CHECK(at(jostle_body_get_position(other, theirs), 5, 0), "nor the other world's");
+    CHECK(jostle_world_destroy(other), "destroy");
+
+    // Two worlds' first bodies: the same slot and generation, told apart by their world.
+    jostle_world* third = world_with_a_box(7, &theirs);
+    jostle_body_id first;
+    jostle_world* fourth = world_with_a_box(9, &first);
+    CHECK(theirs.index == first.index && theirs.generation == first.generation,
+          "the same slot and generation");
+    CHECK(theirs.world != first.world && !jostle_body_id_equal(theirs, first), "not equal");
+    CHECK(!jostle_body_is_valid(fourth, theirs) && !jostle_body_is_valid(third, first),
+          "neither valid in the other world");
+    CHECK(!jostle_body_destroy(fourth, theirs), "refused");
+    CHECK_ERROR("jostle_body_destroy", "BodyId of another world");
+    CHECK(jostle_world_body_count(fourth) == 1, "nothing destroyed");
+
+    // Tile maps too.
+    static const unsigned char cells[2] = {'#', '#'};
+    jostle_tile_map_def map_def = jostle_default_tile_map_def();
+    map_def.tile = 4;
+    map_def.columns = 2;
+    map_def.rows = 1;
+    map_def.cells = cells;
+    const jostle_tile_map_id map = jostle_tile_map_create(third, &map_def);
+    const jostle_tile_map_id other_map = jostle_tile_map_create(fourth, &map_def);
+    CHECK(map.index == other_map.index && map.generation == other_map.generation,
+          "the same slot and generation");
+    CHECK(!jostle_tile_map_id_equal(map, other_map), "not equal");
+    CHECK(!jostle_tile_map_is_valid(fourth, map), "another world's map");
+    CHECK_NO_ERROR();
+    CHECK(!jostle_tile_map_set_tile(fourth, map, 0, 0, false), "refused");
+    CHECK_ERROR("jostle_tile_map_set_tile", "TileMapId of another world");
+
+    CHECK(jostle_world_destroy(third) && jostle_world_destroy(fourth) &&
+              jostle_world_destroy(world),
+          "destroy");
+    CHECK_NO_ERROR();
+}
+
 int main(void) {
     test_defaults();
     test_free_fall();
@@ -1943,6 +2016,7 @@ int main(void) {
     test_fixed_step();
     test_draw_positions();
     test_misuse();
+    test_a_handle_of_another_world();
     printf("test_c_api: all checks passed\n");
     return 0;
 }

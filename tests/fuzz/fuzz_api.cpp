@@ -373,6 +373,9 @@ private:
     World world_;
     std::vector<BodyId> live_; ///< the fuzzer's own list, in creation order
     std::vector<BodyId> dead_; ///< the last kMaxDead destroyed handles
+    /// The world's serial number (BodyId::world), as its bodies carry it: forged handles
+    /// are of this world or another.
+    std::uint32_t serial_ = 0;
     struct Map {
         TileMapId id;
         std::vector<std::string> rows;
@@ -467,6 +470,8 @@ private:
             if (const BodyDef d = world_.bodyDef(listed[i]); d.slope != Vec2{} || d.radius > 0)
                 shaped_.insert(std::uint64_t{listed[i].index} << 32 | listed[i].generation);
         live_.assign(listed.begin(), listed.end());
+        if (!listed.empty())
+            serial_ = listed.front().world;
     }
 
     bool isShaped(BodyId id) const {
@@ -493,8 +498,10 @@ private:
             return dead_[kind % dead_.size()];
         if (kind < 240)
             return {};
-        // Forged: any index and generation, which may even name a live body.
-        return {in_.bits() % 128, in_.bits() % 4};
+        // Forged: any index and generation, of this world or another (bit 7 of the
+        // index's bits), which may even name a live body.
+        const std::uint32_t bits = in_.bits();
+        return {bits % 128, in_.bits() % 4, (bits & 128) != 0 ? serial_ ^ 1 : serial_};
     }
 
     TileMapId pickMap() {
@@ -505,7 +512,8 @@ private:
             return deadMaps_[kind % deadMaps_.size()];
         if (kind < 240)
             return {};
-        return {in_.bits() % 8, in_.bits() % 4};
+        const std::uint32_t bits = in_.bits();
+        return {bits % 8, in_.bits() % 4, (bits & 128) != 0 ? serial_ ^ 1 : serial_};
     }
 
     Map* findMap(TileMapId id) {

@@ -16,7 +16,8 @@
 namespace jostle::check {
 
 inline std::string describe(BodyId id) {
-    return "body {" + std::to_string(id.index) + ", " + std::to_string(id.generation) + "}";
+    return "body {" + std::to_string(id.index) + ", " + std::to_string(id.generation) + ", " +
+           std::to_string(id.world) + "}";
 }
 
 inline std::string describe(Vec2 v) {

@@ -242,8 +242,8 @@ int bodyGetWorld(lua_State* L) {
     return 1;
 }
 
-/// The storage slot and generation: for debugging and logs, not needed to identify a
-/// body (the userdata itself does).
+/// The storage slot, generation and world serial number: for debugging and logs, not
+/// needed to identify a body (the userdata itself does).
 int bodyGetId(lua_State* L) {
     const auto* body = static_cast<BodyHandle*>(luaL_testudata(L, 1, kBodyType));
     if (!body)
@@ -251,7 +251,8 @@ int bodyGetId(lua_State* L) {
               typeName(L, 1));
     pushWhole(L, body->id.index);
     pushWhole(L, body->id.generation);
-    return 2;
+    pushWhole(L, body->id.world);
+    return 3;
 }
 
 int bodyGetType(lua_State* L) {
