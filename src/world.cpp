@@ -156,6 +156,7 @@ void World::step(float dt) {
         fail("step", "dt must be in [1e-9, 1e9] (math.hpp)");
 
     StepScope scope(w);
+    w.pairsLeftOut = 0; // the physical model's broadphase counts them
     // A sleeping body keeps the separation of its last awake step: what held it up
     // still does ("grounded" stays true while it sleeps on the ground).
     for (BodyId id : w.order.live())

@@ -216,6 +216,25 @@ TEST_F(Cli, SummaryWithoutTrace) {
         << r.out;
 }
 
+// Bodies piled at one spot beyond the contact budget: the run goes on, its output whole,
+// and a warning says how much was left out; a sane scene says nothing.
+TEST_F(Cli, APileBeyondTheContactBudgetIsReported) {
+    std::string bodies = R"({"type": "static", "x": 0, "y": 1, "hw": 100, "hh": 1})";
+    for (int i = 0; i < 20; ++i)
+        bodies += R"(, {"x": 0, "y": -0.5, "hw": 0.5, "hh": 0.5})";
+    const std::string scene = write(
+        "pile.json", R"({"gravity": [0, 10], "physical": {"maxContactsPerBody": 4}, "bodies": [)" +
+                         bodies + "]}");
+    const Result r = run("run " + quote(scene) + " --steps 2");
+    EXPECT_EQ(r.status, 0);
+    EXPECT_THAT(r.out, HasSubstr("20 dynamic"));
+    // 190 pairs among the boxes, at most 20 * 4 / 2 = 40 of them kept in a step.
+    EXPECT_THAT(r.err, StartsWith("jostle: warning: " + scene +
+                                  ": bodies piled on each other beyond the contact budget"));
+    EXPECT_THAT(r.err, HasSubstr("in 2 steps"));
+    EXPECT_EQ(run("run " + quote(write("floor.json", kFloorScene)) + " --steps 60").err, "");
+}
+
 // The summary is for people: its numbers have five significant digits at the scene's
 // size (the largest |coordinate| of its boxes), so float noise next to that scale reads
 // as 0, never as -1.4013e-45, 1.17e-19 or "-0". The trace keeps every float exact.

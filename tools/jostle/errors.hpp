@@ -15,6 +15,11 @@ inline void printError(const std::string& message) {
     std::fprintf(stderr, "jostle: error: %s\n", message.c_str());
 }
 
+/// A warning: the run goes on, and its output is whole, but something in it is off.
+inline void printWarning(const std::string& message) {
+    std::fprintf(stderr, "jostle: warning: %s\n", message.c_str());
+}
+
 /// The words for an errno value, e.g. "No such file or directory".
 inline std::string systemMessage(int error) {
     return std::error_code(error, std::generic_category()).message();

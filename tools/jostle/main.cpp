@@ -37,6 +37,7 @@ namespace {
 using jostle::cli::kBadInput;
 using jostle::cli::kFailure;
 using jostle::cli::printError;
+using jostle::cli::printWarning;
 using jostle::cli::systemMessage;
 
 struct RunOptions {
@@ -164,15 +165,23 @@ int run(const RunOptions& options) {
 
     jostle::cli::Progress progress("jostle run", options.steps, output.isStdout() && tracing);
     const auto start = std::chrono::steady_clock::now();
+    std::uint64_t pairsLeftOut = 0;
+    std::int64_t stepsLeavingOut = 0;
     // A trace that cannot be written ends the run: the steps after it would be lost.
     for (std::int64_t step = 1; step <= options.steps && output.good(); ++step) {
         world.step(scene.dt);
+        pairsLeftOut += world.pairsLeftOut();
+        stepsLeavingOut += world.pairsLeftOut() > 0 ? 1 : 0;
         if (tracing && step % options.every == 0)
             jostle::cli::writeTraceRows(output.get(), step, world, traced);
         progress.update(step);
     }
     const auto wallTime = std::chrono::steady_clock::now() - start;
     progress.erase();
+    if (pairsLeftOut > 0)
+        printWarning(options.scene + ": bodies piled on each other beyond the contact budget (" +
+                     "physical.maxContactsPerBody): " + std::to_string(pairsLeftOut) +
+                     " pairs left out in " + std::to_string(stepsLeavingOut) + " steps");
 
     if (!tracing && output.good()) {
         errno = 0;
