@@ -6,18 +6,11 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <functional>
 #include <limits>
-#include <unordered_set>
-#include <vector>
 
 namespace jostle::json {
 
 namespace {
-
-// The format needs four levels (scene, tilemaps, tile map, rows); anything much deeper is
-// not a scene, and refusing it early bounds the memory spent on hostile input.
-constexpr int kMaxDepth = 32;
 
 // Error messages quote what they cite, at most this many bytes of it.
 constexpr std::size_t kMaxQuoted = 200;
@@ -63,65 +56,7 @@ std::string got(const Json& value) {
 
 namespace {
 
-// --- Syntax: parsing with duplicate fields and depth refused -------------------------
-
-/// Follows the parser through the document, knowing the place of the value being read,
-/// to refuse with that place what nlohmann-json would accept: a duplicate field (it
-/// would keep the last of two, and {"hw": 1, "hw": -1} should not mean whatever the
-/// parser picks) and nesting beyond kMaxDepth. It also names the place of a number the
-/// parser itself refuses.
-class PlaceTracker {
-public:
-    bool operator()(int depth, Json::parse_event_t event, Json& parsed) {
-        switch (event) {
-        case Json::parse_event_t::object_start:
-        case Json::parse_event_t::array_start:
-            if (depth >= kMaxDepth)
-                fail(childPlace(), "nested deeper than " + std::to_string(kMaxDepth) + " levels");
-            containers_.push_back(
-                {childPlace(), event == Json::parse_event_t::object_start, {}, {}, 0});
-            break;
-        case Json::parse_event_t::object_end:
-        case Json::parse_event_t::array_end:
-            containers_.pop_back();
-            if (!containers_.empty() && !containers_.back().isObject)
-                ++containers_.back().elements;
-            break;
-        case Json::parse_event_t::key: {
-            Container& object = containers_.back();
-            object.lastKey = parsed.get<std::string>();
-            if (!object.keys.insert(object.lastKey).second)
-                fail(object.place, "duplicate field " + quoteName(object.lastKey));
-            break;
-        }
-        case Json::parse_event_t::value:
-            if (!containers_.empty() && !containers_.back().isObject)
-                ++containers_.back().elements;
-            break;
-        }
-        return true; // keep every value
-    }
-
-    /// The place of the value being read now.
-    std::string childPlace() const {
-        if (containers_.empty())
-            return "";
-        const Container& parent = containers_.back();
-        return parent.isObject ? field(parent.place, parent.lastKey)
-                               : element(parent.place, parent.elements);
-    }
-
-private:
-    struct Container {
-        std::string place;
-        bool isObject;
-        std::unordered_set<std::string> keys;
-        std::string lastKey;
-        std::size_t elements;
-    };
-
-    std::vector<Container> containers_;
-};
+// --- Syntax --------------------------------------------------------------------------
 
 /// The length of the valid UTF-8 sequence at the start of `text`, or 0 if there is none.
 std::size_t utf8Length(std::string_view text) {
@@ -163,7 +98,7 @@ std::string printable(std::string_view text) {
 
 /// "[json.exception.parse_error.101] parse error at line 2, column 7: syntax error ..."
 /// becomes "invalid JSON at line 2, column 7: syntax error ...".
-std::string describe(const nlohmann::json::parse_error& error) {
+std::string describe(const nlohmann::json::exception& error) {
     std::string message = error.what();
     const std::string marker = "parse error ";
     if (const std::size_t at = message.find(marker); at != std::string::npos)
@@ -176,21 +111,19 @@ std::string describe(const nlohmann::json::parse_error& error) {
 
 } // namespace
 
-Json parse(std::string_view text) {
-    PlaceTracker tracker;
-    try {
-        // No comments: a scene file is plain JSON, readable by every other tool.
-        return Json::parse(text.begin(), text.end(), std::ref(tracker),
-                           /*allow_exceptions=*/true, /*ignore_comments=*/false);
-    } catch (const nlohmann::json::parse_error& error) {
-        throw SceneError(describe(error));
-    } catch (const nlohmann::json::out_of_range& error) {
-        // The parser refuses numbers beyond a double (1e400) itself, while reading the
-        // value whose place the tracker knows.
-        if (error.id == 406)
-            fail(tracker.childPlace(), "must be a finite number");
-        throw;
-    }
+void parse(Input& input, nlohmann::json_sax<Json>& handler) {
+    // No comments: a scene file is plain JSON, readable by every other tool. Strict: nothing
+    // but whitespace after the value.
+    Json::sax_parse(input.begin(), input.end(), &handler, nlohmann::json::input_format_t::json,
+                    /*strict=*/true, /*ignore_comments=*/false);
+}
+
+void failSyntax(const Input&, const nlohmann::json::exception& error, const std::string& place) {
+    // The parser refuses numbers beyond a double (1e400) itself, while reading the value at
+    // `place`.
+    if (error.id == 406)
+        fail(place, "must be a finite number");
+    throw SceneError(describe(error));
 }
 
 // --- Values --------------------------------------------------------------------------
@@ -212,9 +145,13 @@ Vec2 readVec2(const Json& value, const std::string& place) {
     if (!value.is_array())
         fail(place, "expected an array of 2 numbers" + got(value));
     if (value.size() != 2)
-        fail(place, "expected an array of 2 numbers, got " + std::to_string(value.size()) +
-                        (value.size() == 1 ? " number" : " numbers"));
+        failVec2Size(place, value.size());
     return {readFloat(value[0], element(place, 0)), readFloat(value[1], element(place, 1))};
+}
+
+void failVec2Size(const std::string& place, std::size_t size) {
+    fail(place, "expected an array of 2 numbers, got " + std::to_string(size) +
+                    (size == 1 ? " number" : " numbers"));
 }
 
 /// Bit fields (category, mask): a whole number from 0 to 2^32 - 1.
@@ -239,16 +176,8 @@ const std::string& readString(const Json& value, const std::string& place) {
     return value.get_ref<const std::string&>();
 }
 
-const Json::object_t& readObject(const Json& value, const std::string& place) {
-    if (!value.is_object())
-        fail(place, "expected an object" + got(value));
-    return value.get_ref<const Json::object_t&>();
-}
-
-const Json::array_t& readArray(const Json& value, const std::string& place) {
-    if (!value.is_array())
-        fail(place, "expected an array" + got(value));
-    return value.get_ref<const Json::array_t&>();
+void failType(const Json& value, const std::string& place, const char* what) {
+    fail(place, std::string("expected ") + what + got(value));
 }
 
 /// An int option: a whole number. Those beyond an int are kept as INT_MIN or INT_MAX,

@@ -1,13 +1,16 @@
-// JSON as scene files read it: parsed with every value's place known ("bodies[3].hw"),
-// duplicate fields and deep nesting refused, and values read by type, each problem a
-// SceneError that names the place. scene.cpp reads a scene from it.
+// JSON as scene files read it: the text handed to nlohmann-json's SAX parser, what the
+// parser refuses turned into a SceneError that says where, and values read by type, each
+// problem a SceneError that names the place ("bodies[3].hw"). scene.cpp reads a scene from
+// the parser's events.
 #pragma once
 
 #include "jostle/math.hpp"
 
 #include <nlohmann/json.hpp>
 
+#include <cstddef>
 #include <cstdint>
+#include <iterator>
 #include <string>
 #include <string_view>
 
@@ -30,18 +33,93 @@ std::string quoteName(const std::string& name);
 /// ", got <type>": the end of a message about a value of the wrong type.
 std::string got(const Json& value);
 
-/// The document, or a SceneError naming the place of the problem.
-Json parse(std::string_view text);
+// --- The text ------------------------------------------------------------------------
+
+/// The bytes of a scene, handed to the parser one at a time.
+class Input {
+public:
+    class Iterator;
+
+    /// Text in memory, which must outlive the Input.
+    explicit Input(std::string_view text) : buffer_(text) {}
+
+    Input(const Input&) = delete;
+    Input& operator=(const Input&) = delete;
+
+    Iterator begin();
+    Iterator end();
+
+private:
+    /// True when every byte has been handed out.
+    bool atEnd() const { return next_ == buffer_.size(); }
+    char peek() const { return buffer_[next_]; }
+    void advance() { ++next_; }
+
+    std::string_view buffer_; ///< the bytes at hand
+    std::size_t next_ = 0;    ///< the next byte of buffer_ to hand out
+};
+
+/// An input iterator over the bytes of an Input, for nlohmann-json's iterator input.
+class Input::Iterator {
+public:
+    using iterator_category = std::input_iterator_tag;
+    using value_type = char;
+    using difference_type = std::ptrdiff_t;
+    using pointer = const char*;
+    using reference = char;
+
+    Iterator() = default; ///< the end
+    explicit Iterator(Input* input) : input_(input) {}
+
+    char operator*() const { return input_->peek(); }
+    Iterator& operator++() {
+        input_->advance();
+        return *this;
+    }
+    Iterator operator++(int) {
+        Iterator before = *this;
+        ++*this;
+        return before;
+    }
+    /// Iterators are equal when both are at the end or neither is.
+    friend bool operator==(const Iterator& a, const Iterator& b) { return a.done() == b.done(); }
+
+private:
+    bool done() const { return !input_ || input_->atEnd(); }
+
+    Input* input_ = nullptr;
+};
+
+inline Input::Iterator Input::begin() {
+    return Iterator(this);
+}
+inline Input::Iterator Input::end() {
+    return Iterator();
+}
+
+/// Parses `input` as one JSON value (RFC 8259, nothing after it but whitespace), telling
+/// `handler` what it reads. The handler's parse_error must call failSyntax.
+void parse(Input& input, nlohmann::json_sax<Json>& handler);
+
+/// Throws the SceneError for text the parser refused: "invalid JSON at line 2, column 3:
+/// ...", with what was read last in printable form, or for a number beyond a double,
+/// "<place>: must be a finite number".
+[[noreturn]] void failSyntax(const Input& input, const nlohmann::json::exception& error,
+                             const std::string& place);
+
+// --- Values --------------------------------------------------------------------------
 
 // Values of each type; each fails with the place when the value is not of it.
 float readFloat(const Json& value, const std::string& place);
 Vec2 readVec2(const Json& value, const std::string& place);
+/// Fails with the message for an array of `size` elements where two numbers belong.
+[[noreturn]] void failVec2Size(const std::string& place, std::size_t size);
 /// Bit fields (category, mask): a whole number from 0 to 2^32 - 1.
 std::uint32_t readBits(const Json& value, const std::string& place);
 bool readBool(const Json& value, const std::string& place);
 const std::string& readString(const Json& value, const std::string& place);
-const Json::object_t& readObject(const Json& value, const std::string& place);
-const Json::array_t& readArray(const Json& value, const std::string& place);
+/// Fails with "expected <what>, got <type of value>".
+[[noreturn]] void failType(const Json& value, const std::string& place, const char* what);
 /// An int option: a whole number. Those beyond an int are kept as INT_MIN or INT_MAX,
 /// which every int option's range (checked by checkWorldDef) refuses.
 int readInt(const Json& value, const std::string& place);

@@ -247,6 +247,47 @@ TEST(SceneErrors, DeepNestingIsRefusedWithoutACrash) {
     EXPECT_THAT(errorOf(std::string(1'000'000, '{')), HasSubstr("invalid JSON"));
 }
 
+TEST(SceneErrors, UnknownFieldsAreRefusedAtTheirName) {
+    // Nothing after the name is read, neither the value nor the rest of the file: a long
+    // value costs nothing before the refusal.
+    EXPECT_EQ(errorOf(R"({"bodies": [], "colour": [1, 2, )"), R"(unknown field "colour")");
+    EXPECT_EQ(errorOf(R"({"bodies": [{"hw": 1, "colour": {"r": )"),
+              R"(bodies[0]: unknown field "colour")");
+    EXPECT_EQ(errorOf(R"({"bodies": [], "classic": {"masses": x)"),
+              R"(classic: unknown field "masses")");
+    EXPECT_EQ(errorOf(R"({"bodies": [], "physical": {"iterations": [)"),
+              R"(physical: unknown field "iterations")");
+    EXPECT_EQ(errorOf(R"({"bodies": [], "tilemaps": [{"tile": 1, "colour": "#)"),
+              R"(tilemaps[0]: unknown field "colour")");
+}
+
+TEST(SceneErrors, ProblemsAreReportedInFileOrder) {
+    // The first problem met reading from the top, invalid JSON after it or not.
+    EXPECT_EQ(errorOf(R"({"bodies": [{"hw": 0, "hh": 1}], x)"), "bodies[0].hw: must be > 0");
+    EXPECT_EQ(errorOf(R"({"bodies": [], "gravity": {"a": 1}, x)"),
+              "gravity: expected an array of 2 numbers, got object");
+    // A value's own problems (its type) when it ends: invalid JSON within it comes first.
+    EXPECT_THAT(errorOf(R"({"bodies": [], "gravity": {"a": [1, 2}})"),
+                StartsWith("invalid JSON at line 1, column 38:"));
+    // An object's problems (missing fields, checkBodyDef) when it ends.
+    EXPECT_EQ(errorOf(withBodies(R"({"hw": -1, "hh": 1, "colour": 1})")),
+              R"(bodies[0]: unknown field "colour")");
+    EXPECT_EQ(errorOf(withBodies(R"({"hw": -1, "x": "left", "hh": 1})")),
+              "bodies[0].x: expected a number, got string");
+    // The file's (a missing "bodies", the model's shapes) at its end.
+    EXPECT_THAT(errorOf(R"({"gravity": [0, 1]} x)"), StartsWith("invalid JSON"));
+}
+
+TEST(SceneErrors, LongValuesOfTheWrongTypeAreCountedNotKept) {
+    std::string numbers = "0";
+    for (int i = 1; i < 100'000; ++i)
+        numbers += ", " + std::to_string(i);
+    EXPECT_EQ(errorOf(withTop(R"("gravity": [)" + numbers + "]")),
+              "gravity: expected an array of 2 numbers, got 100000 numbers");
+    EXPECT_EQ(errorOf(withBodies(R"({"hw": 1, "hh": 1, "x": [)" + numbers + "]}")),
+              "bodies[0].x: expected a number, got array");
+}
+
 TEST(SceneErrors, GarbageGivesPrintableMessages) {
     const std::string garbage = "\xff\xfe\x01garbage";
     const std::string message = errorOf(garbage);
@@ -292,6 +333,25 @@ TEST(SceneErrors, RandomMutationsGiveSceneErrorsOrScenes) {
             ADD_FAILURE() << "not a SceneError for: " << text;
         }
     }
+}
+
+// --- Scale ------------------------------------------------------------------------------
+
+// Loading takes time in proportion to the file. Half a million bodies took minutes when
+// each body cost as much as all those before it; tests/scene/CMakeLists.txt gives this
+// test a timeout. How long a million bodies take: jostle-bench-load (docs/benchmarks.md).
+TEST(SceneScale, HalfAMillionBodiesLoad) {
+    constexpr int kBodies = 500'000;
+    std::string text = R"({"gravity": [0, 10], "bodies": [)";
+    for (int i = 0; i < kBodies; ++i)
+        text += (i == 0 ? "" : ",\n") + std::string(R"({"x": )") + std::to_string(i % 1000) +
+                R"(, "y": )" + std::to_string(i / 1000) + R"(, "hw": 0.5, "hh": 0.5})";
+    text += "]}";
+    const Scene scene = parseScene(text);
+    ASSERT_EQ(scene.bodies.size(), static_cast<std::size_t>(kBodies));
+    EXPECT_EQ(scene.bodies.back().id, std::to_string(kBodies - 1));
+    EXPECT_EQ(scene.bodies.back().def.x, 999.0f);
+    EXPECT_EQ(scene.bodies.back().def.y, 499.0f);
 }
 
 // --- Errors: the top level -------------------------------------------------------------
