@@ -4,9 +4,11 @@
 #include "jostle/scene.hpp"
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <system_error>
 
 namespace jostle::json {
 
@@ -110,6 +112,41 @@ std::string describe(const nlohmann::json::exception& error) {
 }
 
 } // namespace
+
+namespace {
+
+/// Bytes read from a file at a time.
+constexpr std::size_t kChunkBytes = std::size_t{1} << 16;
+
+} // namespace
+
+Input::Input(std::FILE* file) : file_(file), chunk_(new char[kChunkBytes]) {}
+
+bool Input::refill() {
+    if (!file_ || fileEnded_)
+        return false;
+    errno = 0;
+    const std::size_t count = std::fread(chunk_.get(), 1, kChunkBytes, file_);
+    if (count == 0) {
+        // Opening a directory succeeds; reading it is where EISDIR shows.
+        if (std::ferror(file_))
+            throw SceneError("cannot read: " +
+                             std::error_code(errno, std::generic_category()).message());
+        fileEnded_ = true;
+        return false;
+    }
+    read_ += count;
+    if (read_ > kMaxSceneBytes)
+        throw SceneError(tooLarge());
+    buffer_ = std::string_view(chunk_.get(), count);
+    next_ = 0;
+    return true;
+}
+
+std::string tooLarge() {
+    return "too large: a scene file holds at most " + std::to_string(kMaxSceneBytes) +
+           " bytes (1 GiB)";
+}
 
 void parse(Input& input, nlohmann::json_sax<Json>& handler) {
     // No comments: a scene file is plain JSON, readable by every other tool. Strict: nothing

@@ -10,7 +10,9 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <cstdio>
 #include <iterator>
+#include <memory>
 #include <string>
 #include <string_view>
 
@@ -35,13 +37,17 @@ std::string got(const Json& value);
 
 // --- The text ------------------------------------------------------------------------
 
-/// The bytes of a scene, handed to the parser one at a time.
+/// The bytes of a scene, in memory or read from a file as the parser asks for them, handed
+/// to the parser one at a time.
 class Input {
 public:
     class Iterator;
 
     /// Text in memory, which must outlive the Input.
     explicit Input(std::string_view text) : buffer_(text) {}
+    /// A file, read in chunks from where it stands (not closed). Reading throws
+    /// SceneError("cannot read: ..."), and so does a file longer than kMaxSceneBytes.
+    explicit Input(std::FILE* file);
 
     Input(const Input&) = delete;
     Input& operator=(const Input&) = delete;
@@ -50,14 +56,23 @@ public:
     Iterator end();
 
 private:
-    /// True when every byte has been handed out.
-    bool atEnd() const { return next_ == buffer_.size(); }
+    /// True when every byte has been handed out (after reading more of the file).
+    bool atEnd() { return next_ == buffer_.size() && !refill(); }
     char peek() const { return buffer_[next_]; }
     void advance() { ++next_; }
+    /// Reads the next chunk of the file; false at its end.
+    bool refill();
 
-    std::string_view buffer_; ///< the bytes at hand
+    std::string_view buffer_; ///< the bytes at hand: the text, or the chunk read last
     std::size_t next_ = 0;    ///< the next byte of buffer_ to hand out
+    std::FILE* file_ = nullptr;
+    std::unique_ptr<char[]> chunk_;
+    bool fileEnded_ = false;
+    std::size_t read_ = 0; ///< bytes read from the file so far
 };
+
+/// The rule a file longer than kMaxSceneBytes breaks: "too large: ...".
+std::string tooLarge();
 
 /// An input iterator over the bytes of an Input, for nlohmann-json's iterator input.
 class Input::Iterator {

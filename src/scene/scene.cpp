@@ -17,10 +17,12 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <filesystem>
 #include <functional>
 #include <iterator>
 #include <limits>
 #include <memory>
+#include <new>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -668,28 +670,6 @@ Scene SceneReader::finish() {
     return std::move(scene_);
 }
 
-/// The whole file, or a SceneError saying why not (in the words of the system).
-std::string readFile(const std::string& path) {
-    const auto cannotRead = [&](int error) {
-        fail(path, "cannot read: " + std::error_code(error, std::generic_category()).message());
-    };
-    struct Closer {
-        void operator()(std::FILE* file) const { std::fclose(file); }
-    };
-    errno = 0;
-    std::unique_ptr<std::FILE, Closer> file(std::fopen(path.c_str(), "rb"));
-    if (!file)
-        cannotRead(errno);
-    std::string text;
-    char buffer[1 << 16];
-    while (std::size_t count = std::fread(buffer, 1, sizeof buffer, file.get()))
-        text.append(buffer, count);
-    // Opening a directory succeeds; reading it is where EISDIR shows.
-    if (std::ferror(file.get()))
-        cannotRead(errno);
-    return text;
-}
-
 /// The scene `input` holds.
 Scene readScene(json::Input& input) {
     try {
@@ -706,16 +686,34 @@ Scene readScene(json::Input& input) {
 } // namespace
 
 Scene parseScene(std::string_view json) {
+    if (json.size() > kMaxSceneBytes)
+        throw SceneError(json::tooLarge());
     json::Input input(json);
     return readScene(input);
 }
 
 Scene loadScene(const std::string& path) {
-    const std::string text = readFile(path);
     try {
-        return parseScene(text);
+        // A regular file says its size: one too large is refused before it is read. Others
+        // (a pipe) are refused when they pass the limit.
+        std::error_code error;
+        if (std::filesystem::is_regular_file(path, error) &&
+            std::filesystem::file_size(path, error) > kMaxSceneBytes && !error)
+            throw SceneError(json::tooLarge());
+        struct Closer {
+            void operator()(std::FILE* file) const { std::fclose(file); }
+        };
+        errno = 0;
+        std::unique_ptr<std::FILE, Closer> file(std::fopen(path.c_str(), "rb"));
+        if (!file)
+            throw SceneError("cannot read: " +
+                             std::error_code(errno, std::generic_category()).message());
+        json::Input input(file.get());
+        return readScene(input);
     } catch (const SceneError& error) {
         throw SceneError(path + ": " + error.what());
+    } catch (const std::bad_alloc&) {
+        throw SceneError(path + ": cannot load: out of memory");
     }
 }
 

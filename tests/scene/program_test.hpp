@@ -55,10 +55,19 @@ protected:
     }
 
     /// Runs `jostle ARGS`, capturing the exit status, stdout and stderr.
-    ProgramResult run(const std::string& args) {
-        const std::string command = quote(JOSTLE_EXE) + " " + args + " >" + quote(path("stdout")) +
-                                    " 2>" + quote(path("stderr"));
-        const int raw = std::system(command.c_str());
+    ProgramResult run(const std::string& args) { return runShell(quote(JOSTLE_EXE) + " " + args); }
+
+    /// Runs `jostle ARGS` with standard input a pipe from the shell command `producer`.
+    ProgramResult runPiped(const std::string& producer, const std::string& args) {
+        return runShell("(" + producer + ") | " + quote(JOSTLE_EXE) + " " + args);
+    }
+
+private:
+    /// Runs the shell command `command`, capturing its exit status, stdout and stderr.
+    ProgramResult runShell(const std::string& command) {
+        const std::string redirected =
+            command + " >" + quote(path("stdout")) + " 2>" + quote(path("stderr"));
+        const int raw = std::system(redirected.c_str());
         ProgramResult result;
         if (raw != -1 && WIFEXITED(raw))
             result.status = WEXITSTATUS(raw);
@@ -67,7 +76,6 @@ protected:
         return result;
     }
 
-private:
     std::filesystem::path dir_;
 };
 

@@ -829,6 +829,20 @@ TEST_F(SceneFiles, MissingFilesAndDirectoriesCannotBeRead) {
     }
 }
 
+TEST_F(SceneFiles, FilesBeyondTheLimitAreRefusedBeforeReading) {
+    // A sparse file: a gigabyte of holes takes no room on the disk.
+    const std::string path = (dir_ / "huge.json").string();
+    { std::ofstream(path, std::ios::binary) << "{"; }
+    std::filesystem::resize_file(path, kMaxSceneBytes + 1);
+    try {
+        loadScene(path);
+        FAIL() << "no SceneError";
+    } catch (const SceneError& error) {
+        EXPECT_EQ(std::string(error.what()),
+                  path + ": too large: a scene file holds at most 1073741824 bytes (1 GiB)");
+    }
+}
+
 // --- addBodies -------------------------------------------------------------------------
 
 TEST(AddBodies, CreatesTheBodiesInFileOrder) {
