@@ -148,14 +148,33 @@ std::string tooLarge() {
            " bytes (1 GiB)";
 }
 
+namespace {
+
+/// JSON text never holds a NUL byte (in a string it is written \u0000): one is an error
+/// wherever it is, after the value too.
+[[noreturn]] void failNul(const Input& input, bool afterTheValue) {
+    throw SceneError("invalid JSON at line " + std::to_string(input.line()) + ", column " +
+                     std::to_string(input.column()) + ": unexpected NUL byte (0x00)" +
+                     (afterTheValue ? "; expected end of input" : ""));
+}
+
+} // namespace
+
 void parse(Input& input, nlohmann::json_sax<Json>& handler) {
     // No comments: a scene file is plain JSON, readable by every other tool. Strict: nothing
     // but whitespace after the value.
     Json::sax_parse(input.begin(), input.end(), &handler, nlohmann::json::input_format_t::json,
                     /*strict=*/true, /*ignore_comments=*/false);
+    // The parser stops at a NUL byte as at the end of the text.
+    if (input.endedAtNul())
+        failNul(input, true);
 }
 
-void failSyntax(const Input&, const nlohmann::json::exception& error, const std::string& place) {
+void failSyntax(const Input& input, const nlohmann::json::exception& error,
+                const std::string& place) {
+    // The parser stops at a NUL byte as at the end of the text, and says so.
+    if (input.endedAtNul())
+        failNul(input, false);
     // The parser refuses numbers beyond a double (1e400) itself, while reading the value at
     // `place`.
     if (error.id == 406)

@@ -38,7 +38,8 @@ std::string got(const Json& value);
 // --- The text ------------------------------------------------------------------------
 
 /// The bytes of a scene, in memory or read from a file as the parser asks for them, handed
-/// to the parser one at a time.
+/// to the parser one at a time. It knows where the last byte handed out was: the parser
+/// takes a NUL byte for the end of the text, and only the input can tell that it was not.
 class Input {
 public:
     class Iterator;
@@ -55,11 +56,24 @@ public:
     Iterator begin();
     Iterator end();
 
+    /// True if the last byte handed out was a NUL.
+    bool endedAtNul() const { return handedOut_ > 0 && last_ == '\0'; }
+    /// The line and column (from 1, in bytes) of the last byte handed out.
+    std::size_t line() const { return line_; }
+    std::size_t column() const { return handedOut_ - lineStart_; }
+
 private:
     /// True when every byte has been handed out (after reading more of the file).
     bool atEnd() { return next_ == buffer_.size() && !refill(); }
     char peek() const { return buffer_[next_]; }
-    void advance() { ++next_; }
+    void advance() {
+        last_ = buffer_[next_++];
+        ++handedOut_;
+        if (last_ == '\n') {
+            ++line_;
+            lineStart_ = handedOut_;
+        }
+    }
     /// Reads the next chunk of the file; false at its end.
     bool refill();
 
@@ -69,6 +83,11 @@ private:
     std::unique_ptr<char[]> chunk_;
     bool fileEnded_ = false;
     std::size_t read_ = 0; ///< bytes read from the file so far
+
+    std::size_t handedOut_ = 0;
+    char last_ = '\0';
+    std::size_t line_ = 1;
+    std::size_t lineStart_ = 0; ///< handedOut_ at the start of the line
 };
 
 /// The rule a file longer than kMaxSceneBytes breaks: "too large: ...".
@@ -117,8 +136,8 @@ inline Input::Iterator Input::end() {
 void parse(Input& input, nlohmann::json_sax<Json>& handler);
 
 /// Throws the SceneError for text the parser refused: "invalid JSON at line 2, column 3:
-/// ...", with what was read last in printable form, or for a number beyond a double,
-/// "<place>: must be a finite number".
+/// ...", with what was read last in printable form; a NUL byte named as such; for a
+/// number beyond a double, "<place>: must be a finite number".
 [[noreturn]] void failSyntax(const Input& input, const nlohmann::json::exception& error,
                              const std::string& place);
 

@@ -409,6 +409,17 @@ TEST_F(Cli, AnUnknownFieldIsRefusedBeforeItsValueIsRead) {
     EXPECT_EQ(r.err, "jostle: error: /dev/stdin: unknown field \"colour\"\n");
 }
 
+TEST_F(Cli, EndlessDevicesAreRefusedAtTheirFirstBytes) {
+    const Result zero = run("run /dev/zero --steps 1");
+    EXPECT_EQ(zero.status, 2);
+    EXPECT_EQ(zero.err, "jostle: error: /dev/zero: invalid JSON at line 1, column 1: unexpected "
+                        "NUL byte (0x00)\n");
+    const Result random = run("run /dev/urandom --steps 1");
+    EXPECT_EQ(random.status, 2);
+    EXPECT_THAT(random.err, StartsWith("jostle: error: /dev/urandom: "));
+    EXPECT_EQ(random.err.find('\n'), random.err.size() - 1); // one line
+}
+
 TEST_F(Cli, TraceFileThatCannotBeCreated) {
     const std::string scene = write("free.json", kFreeScene);
     const std::string trace = path("no/such/dir/trace.csv");

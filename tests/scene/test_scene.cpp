@@ -218,6 +218,34 @@ TEST(SceneErrors, InvalidJsonNamesLineAndColumn) {
     EXPECT_THAT(errorOf(R"({"bodies": [)"), StartsWith("invalid JSON at line 1, column 13:"));
 }
 
+TEST(SceneErrors, NothingButWhitespaceFollowsTheValue) {
+    for (int byte = 0; byte < 256; ++byte) {
+        const char c = static_cast<char>(byte);
+        if (c == ' ' || c == '\t' || c == '\n' || c == '\r')
+            continue;
+        SCOPED_TRACE(byte);
+        EXPECT_THAT(errorOf(R"({"bodies": []})" + std::string(1, c) + R"({"gravty": 1, garbage)"),
+                    StartsWith("invalid JSON at line 1, column 1"));
+    }
+}
+
+TEST(SceneErrors, NulBytesAreErrorsWhereverTheyAre) {
+    // The parser stops at a NUL as at the end of the text; what follows must not be lost.
+    using namespace std::string_literals;
+    EXPECT_EQ(errorOf("{\"bodies\": []}\0{\"gravty\": 1, garbage"s),
+              "invalid JSON at line 1, column 15: unexpected NUL byte (0x00); expected end of "
+              "input");
+    EXPECT_EQ(
+        errorOf("{\"bodies\": []}\n  \0"s),
+        "invalid JSON at line 2, column 3: unexpected NUL byte (0x00); expected end of input");
+    EXPECT_EQ(errorOf("{\"bodies\":\0[]}"s),
+              "invalid JSON at line 1, column 11: unexpected NUL byte (0x00)");
+    EXPECT_EQ(errorOf("{\"bodies\": [], \"a\0\": 1}"s),
+              "invalid JSON at line 1, column 18: unexpected NUL byte (0x00)");
+    EXPECT_EQ(errorOf("{\"bodies\": [1\0]}"s), "bodies[0]: expected an object, got number");
+    EXPECT_EQ(errorOf("\0"s), "invalid JSON at line 1, column 1: unexpected NUL byte (0x00)");
+}
+
 TEST(SceneErrors, CommentsAreNotJson) {
     // `{"bodies": [] // none`: the first slash is character 15.
     EXPECT_THAT(errorOf("{\"bodies\": [] // none\n}"),
