@@ -33,33 +33,6 @@ std::string element(const std::string& place, std::size_t index) {
 
 namespace {
 
-/// Cuts `text` to at most kMaxQuoted bytes, never inside a UTF-8 sequence.
-std::string clip(std::string text) {
-    if (text.size() <= kMaxQuoted)
-        return text;
-    std::size_t end = kMaxQuoted;
-    while (end > 0 && (static_cast<unsigned char>(text[end]) & 0xC0u) == 0x80u)
-        --end;
-    text.resize(end);
-    return text + "...";
-}
-
-} // namespace
-
-/// A name as JSON spells it, quotes and escapes included, so that odd names stay
-/// readable in a one-line message.
-std::string quoteName(const std::string& name) {
-    return clip(Json(name).dump(-1, ' ', false, Json::error_handler_t::replace));
-}
-
-std::string got(const Json& value) {
-    return std::string(", got ") + value.type_name();
-}
-
-namespace {
-
-// --- Syntax --------------------------------------------------------------------------
-
 /// The length of the valid UTF-8 sequence at the start of `text`, or 0 if there is none.
 std::size_t utf8Length(std::string_view text) {
     const auto byte = [&](std::size_t i) { return static_cast<unsigned char>(text[i]); };
@@ -76,6 +49,77 @@ std::size_t utf8Length(std::string_view text) {
             return 0;
     return length;
 }
+
+/// The code point of the valid UTF-8 sequence of `length` bytes at the start of `text`.
+char32_t codePoint(std::string_view text, std::size_t length) {
+    const auto byte = [&](std::size_t i) {
+        return static_cast<char32_t>(static_cast<unsigned char>(text[i]));
+    };
+    if (length == 1)
+        return byte(0);
+    char32_t c = byte(0) & (0x7Fu >> length);
+    for (std::size_t i = 1; i < length; ++i)
+        c = (c << 6) | (byte(i) & 0x3Fu);
+    return c;
+}
+
+/// The control characters: C0 (U+0000 to U+001F), DEL and C1 (U+007F to U+009F).
+bool isControl(char32_t c) {
+    return c < 0x20 || (c >= 0x7F && c <= 0x9F);
+}
+
+/// Cuts `text` to at most kMaxQuoted bytes, never inside a UTF-8 sequence.
+std::string clip(std::string text) {
+    if (text.size() <= kMaxQuoted)
+        return text;
+    std::size_t end = kMaxQuoted;
+    while (end > 0 && (static_cast<unsigned char>(text[end]) & 0xC0u) == 0x80u)
+        --end;
+    text.resize(end);
+    return text + "...";
+}
+
+} // namespace
+
+/// A name as JSON spells it, quotes and escapes included, so that odd names stay
+/// readable in a one-line message: every control character escaped (JSON escapes those
+/// below U+0020 itself, not DEL and C1).
+std::string quoteName(const std::string& name) {
+    const std::string json = Json(name).dump(-1, ' ', false, Json::error_handler_t::replace);
+    std::string quoted;
+    for (std::string_view rest = json; !rest.empty();) {
+        const std::size_t valid = utf8Length(rest);
+        const std::size_t length = std::max<std::size_t>(valid, 1);
+        if (const char32_t c = codePoint(rest, length); valid > 0 && c >= 0x7F && isControl(c)) {
+            char escaped[16];
+            std::snprintf(escaped, sizeof escaped, "\\u%04x", static_cast<unsigned>(c));
+            quoted += escaped;
+        } else {
+            quoted.append(rest.substr(0, length));
+        }
+        rest.remove_prefix(length);
+    }
+    return clip(quoted);
+}
+
+bool hasControlCharacter(std::string_view text) {
+    while (!text.empty()) {
+        const std::size_t valid = utf8Length(text);
+        const std::size_t length = std::max<std::size_t>(valid, 1);
+        if (valid > 0 && isControl(codePoint(text, length)))
+            return true;
+        text.remove_prefix(length);
+    }
+    return false;
+}
+
+std::string got(const Json& value) {
+    return std::string(", got ") + value.type_name();
+}
+
+namespace {
+
+// --- Syntax --------------------------------------------------------------------------
 
 /// `text` with every byte that is not part of valid UTF-8 spelt as <0xNN>: the parser
 /// quotes what it last read, and a message must stay printable text even when the

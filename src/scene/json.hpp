@@ -32,6 +32,9 @@ std::string element(const std::string& place, std::size_t index);
 /// A name as JSON spells it, quotes and escapes included, cut to a readable length.
 std::string quoteName(const std::string& name);
 
+/// True if `text` (UTF-8) holds a control character: U+0000 to U+001F, U+007F to U+009F.
+bool hasControlCharacter(std::string_view text);
+
 /// ", got <type>": the end of a message about a value of the wrong type.
 std::string got(const Json& value);
 

@@ -474,6 +474,9 @@ void SceneReader::take(const Json& v) {
             frame.body.id = readString(v, at);
             if (frame.body.id.empty())
                 fail(at, "must not be empty");
+            // Ids are printed in traces and summaries, where "a\u0000b" would read "a".
+            if (hasControlCharacter(frame.body.id))
+                fail(at, "must not contain control characters, got " + quoteName(frame.body.id));
         } else {
             readField(frame.body.def, properties::kBodyFields[frame.field], v, at);
         }

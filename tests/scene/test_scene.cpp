@@ -638,6 +638,25 @@ TEST(SceneErrors, Ids) {
     EXPECT_EQ(errorOf(withBodies(body + R"(""})")), "bodies[0].id: must not be empty");
 }
 
+TEST(SceneErrors, IdsHoldNoControlCharacters) {
+    // "a\u0000b" printed as "a" in traces and summaries, beside a body whose id is "a".
+    const std::string body = R"({"hw": 1, "hh": 1, "id": )";
+    EXPECT_EQ(errorOf(withBodies(body + R"("a"}, )" + kBox + ", " + body + R"("a\u0000b"})")),
+              R"(bodies[2].id: must not contain control characters, got "a\u0000b")");
+    EXPECT_EQ(errorOf(withBodies(body + R"("tab\there"})")),
+              R"(bodies[0].id: must not contain control characters, got "tab\there")");
+    // DEL and the C1 controls, escaped or written as they are.
+    EXPECT_EQ(errorOf(withBodies(body + R"("a\u007f"})")),
+              R"(bodies[0].id: must not contain control characters, got "a\u007f")");
+    EXPECT_EQ(errorOf(withBodies(body + "\"a\x7f\"}")),
+              R"(bodies[0].id: must not contain control characters, got "a\u007f")");
+    EXPECT_EQ(errorOf(withBodies(body + "\"next\xc2\x85line\"}")),
+              R"(bodies[0].id: must not contain control characters, got "next\u0085line")");
+    // Other characters are names like any other.
+    const Scene scene = parseScene(withBodies(body + R"("caf\u00e9 \u00a0 \ud83d\ude00"})"));
+    EXPECT_EQ(scene.bodies[0].id, "caf\xc3\xa9 \xc2\xa0 \xf0\x9f\x98\x80");
+}
+
 TEST(SceneErrors, OddNamesAreQuotedAsJson) {
     EXPECT_EQ(errorOf(withTop(R"("a\"b\n": 1)")), R"(unknown field "a\"b\n")");
 }
