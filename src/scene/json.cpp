@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <optional>
 #include <system_error>
 
 namespace jostle::json {
@@ -254,14 +255,59 @@ void failVec2Size(const std::string& place, std::size_t size) {
                     (size == 1 ? " number" : " numbers"));
 }
 
-/// Bit fields (category, mask): a whole number from 0 to 2^32 - 1.
+std::string numberText(const Json& value) {
+    if (value.is_number_unsigned())
+        return std::to_string(value.get<std::uint64_t>());
+    if (value.is_number_integer())
+        return std::to_string(value.get<std::int64_t>());
+    // A whole double in digits while that stays short (18446744073709551616), else as JSON
+    // writes it (1.5, 1e+300).
+    const double number = value.get<double>();
+    if (number == std::floor(number) && std::fabs(number) < 1e21) {
+        char digits[32];
+        std::snprintf(digits, sizeof digits, "%.0f", number);
+        return digits;
+    }
+    return value.dump();
+}
+
+namespace {
+
+/// The whole number `value` holds, checked for type and fraction; nullopt for a whole
+/// number beyond an int64.
+std::optional<std::int64_t> wholeNumber(const Json& value, const std::string& place) {
+    if (!value.is_number())
+        fail(place, "expected a whole number" + got(value));
+    if (value.is_number_unsigned()) {
+        const std::uint64_t number = value.get<std::uint64_t>();
+        if (number > static_cast<std::uint64_t>(std::numeric_limits<std::int64_t>::max()))
+            return std::nullopt;
+        return static_cast<std::int64_t>(number);
+    }
+    if (value.is_number_integer())
+        return value.get<std::int64_t>();
+    const double number = value.get<double>();
+    if (number != std::floor(number))
+        fail(place, "expected a whole number, got " + numberText(value));
+    // 2^63: the first double beyond an int64.
+    if (!(std::fabs(number) < 0x1p63))
+        return std::nullopt;
+    return static_cast<std::int64_t>(number);
+}
+
+} // namespace
+
+std::int64_t readWhole(const Json& value, const std::string& place, std::int64_t lowest,
+                       std::int64_t highest) {
+    const std::optional<std::int64_t> number = wholeNumber(value, place);
+    if (!number || *number < lowest || *number > highest)
+        fail(place, "must be in [" + std::to_string(lowest) + ", " + std::to_string(highest) +
+                        "], got " + numberText(value));
+    return *number;
+}
+
 std::uint32_t readBits(const Json& value, const std::string& place) {
-    if (!value.is_number_integer())
-        fail(place, "expected a whole number from 0 to 4294967295" + got(value));
-    if (value.is_number_unsigned() ? value.get<std::uint64_t>() > 0xFFFFFFFFull
-                                   : value.get<std::int64_t>() < 0)
-        fail(place, "must be a whole number from 0 to 4294967295");
-    return static_cast<std::uint32_t>(value.get<std::uint64_t>());
+    return static_cast<std::uint32_t>(readWhole(value, place, 0, 0xFFFFFFFF));
 }
 
 bool readBool(const Json& value, const std::string& place) {
@@ -280,17 +326,13 @@ void failType(const Json& value, const std::string& place, const char* what) {
     fail(place, std::string("expected ") + what + got(value));
 }
 
-/// An int option: a whole number. Those beyond an int are kept as INT_MIN or INT_MAX,
-/// which every int option's range (checked by checkWorldDef) refuses.
 int readInt(const Json& value, const std::string& place) {
-    if (!value.is_number())
-        fail(place, "expected a whole number" + got(value));
-    const double number = value.get<double>();
-    if (number != std::floor(number))
-        fail(place, "expected a whole number");
-    constexpr double lowest = std::numeric_limits<int>::min();
-    constexpr double highest = std::numeric_limits<int>::max();
-    return static_cast<int>(std::clamp(number, lowest, highest));
+    const std::optional<std::int64_t> number = wholeNumber(value, place);
+    const bool negative = number ? *number < 0 : value.get<double>() < 0;
+    const std::int64_t lowest = std::numeric_limits<int>::min();
+    const std::int64_t highest = std::numeric_limits<int>::max();
+    return static_cast<int>(number ? std::clamp(*number, lowest, highest)
+                                   : (negative ? lowest : highest));
 }
 
 } // namespace jostle::json

@@ -151,14 +151,21 @@ float readFloat(const Json& value, const std::string& place);
 Vec2 readVec2(const Json& value, const std::string& place);
 /// Fails with the message for an array of `size` elements where two numbers belong.
 [[noreturn]] void failVec2Size(const std::string& place, std::size_t size);
+/// A whole number: a number whose value is an integer, written with or without a fraction
+/// or an exponent (4, 4.0, 4e0), from `lowest` to `highest`. "expected a whole number, got
+/// 1.5", "must be in [0, 4294967295], got -1".
+std::int64_t readWhole(const Json& value, const std::string& place, std::int64_t lowest,
+                       std::int64_t highest);
 /// Bit fields (category, mask): a whole number from 0 to 2^32 - 1.
 std::uint32_t readBits(const Json& value, const std::string& place);
 bool readBool(const Json& value, const std::string& place);
 const std::string& readString(const Json& value, const std::string& place);
 /// Fails with "expected <what>, got <type of value>".
 [[noreturn]] void failType(const Json& value, const std::string& place, const char* what);
-/// An int option: a whole number. Those beyond an int are kept as INT_MIN or INT_MAX,
-/// which every int option's range (checked by checkWorldDef) refuses.
+/// An int option: a whole number, as readWhole takes it. Those beyond an int are kept as
+/// INT_MIN or INT_MAX, which every int option's range (checked by checkWorldDef) refuses.
 int readInt(const Json& value, const std::string& place);
+/// A number as messages show it: "-1", "2.5", "18446744073709551616", "1e+300".
+std::string numberText(const Json& value);
 
 } // namespace jostle::json

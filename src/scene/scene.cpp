@@ -303,6 +303,9 @@ private:
     Scene scene_;
     std::uint64_t sceneFields_ = 0;  ///< the top level's Frame::given, once it has ended
     std::vector<std::size_t> order_; ///< "bodies", "tilemap", "tilemaps" in file order
+    /// The whole numbers of the world's options as written, by place, for checkWorldDef's
+    /// messages.
+    std::vector<std::pair<std::string, std::string>> written_;
     /// Ids name bodies in traces, so two bodies must never share one.
     IdTable ids_{scene_.bodies};
 };
@@ -552,9 +555,11 @@ void SceneReader::takePhysicalField(const Frame& frame, const Json& v) {
     switch (frame.field) {
     case 0:
         options.velocityIterations = readInt(v, at);
+        written_.emplace_back(at, numberText(v));
         break;
     case 1:
         options.positionIterations = readInt(v, at);
+        written_.emplace_back(at, numberText(v));
         break;
     case 2:
         options.slop = readFloat(v, at);
@@ -654,8 +659,13 @@ std::optional<FieldError> modelProblem(Solver solver, const std::vector<TileMapD
 Scene SceneReader::finish() {
     if ((sceneFields_ >> kBodies & 1u) == 0)
         fail("", R"(missing field "bodies")");
-    if (auto problem = checkWorldDef(scene_.world))
-        fail(problem->field, problem->problem);
+    if (auto problem = checkWorldDef(scene_.world)) {
+        std::string rule = problem->problem;
+        for (const auto& [place, text] : written_)
+            if (place == problem->field)
+                rule += ", got " + text;
+        fail(problem->field, rule);
+    }
     // Only now is the model known ("solver" may come last); its problems are looked for
     // in file order, bodies and tile maps alike.
     for (const std::size_t name : order_) {
