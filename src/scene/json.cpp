@@ -69,6 +69,17 @@ bool isControl(char32_t c) {
     return c < 0x20 || (c >= 0x7F && c <= 0x9F);
 }
 
+/// Characters that show as nothing, or move what follows: controls, the default-ignorable
+/// ones (soft hyphen, zero-width space and joiners, the byte-order mark, variation
+/// selectors, tags), the line and paragraph separators and the bidirectional controls.
+bool isInvisible(char32_t c) {
+    const auto in = [c](char32_t first, char32_t last) { return c >= first && c <= last; };
+    return isControl(c) || c == 0x00AD || c == 0x034F || c == 0x061C || in(0x115F, 0x1160) ||
+           in(0x17B4, 0x17B5) || in(0x180B, 0x180F) || in(0x200B, 0x200F) || in(0x2028, 0x202E) ||
+           in(0x2060, 0x206F) || c == 0x3164 || in(0xFE00, 0xFE0F) || c == 0xFEFF || c == 0xFFA0 ||
+           in(0xFFF0, 0xFFFB) || in(0xE0000, 0xE0FFF);
+}
+
 /// Cuts `text` to at most kMaxQuoted bytes, never inside a UTF-8 sequence.
 std::string clip(std::string text) {
     if (text.size() <= kMaxQuoted)
@@ -83,18 +94,27 @@ std::string clip(std::string text) {
 } // namespace
 
 /// A name as JSON spells it, quotes and escapes included, so that odd names stay
-/// readable in a one-line message: every control character escaped (JSON escapes those
-/// below U+0020 itself, not DEL and C1).
+/// readable in a one-line message: every invisible character escaped (JSON escapes the
+/// controls below U+0020 itself, not DEL, C1, U+FEFF, ...).
 std::string quoteName(const std::string& name) {
     const std::string json = Json(name).dump(-1, ' ', false, Json::error_handler_t::replace);
     std::string quoted;
     for (std::string_view rest = json; !rest.empty();) {
         const std::size_t valid = utf8Length(rest);
         const std::size_t length = std::max<std::size_t>(valid, 1);
-        if (const char32_t c = codePoint(rest, length); valid > 0 && c >= 0x7F && isControl(c)) {
-            char escaped[16];
-            std::snprintf(escaped, sizeof escaped, "\\u%04x", static_cast<unsigned>(c));
-            quoted += escaped;
+        if (const char32_t c = codePoint(rest, length); valid > 0 && c >= 0x7F && isInvisible(c)) {
+            // Beyond U+FFFF, JSON escapes a character as its UTF-16 surrogate pair.
+            const auto escape = [&quoted](char32_t unit) {
+                char escaped[16];
+                std::snprintf(escaped, sizeof escaped, "\\u%04x", static_cast<unsigned>(unit));
+                quoted += escaped;
+            };
+            if (c > 0xFFFF) {
+                escape(0xD800 + ((c - 0x10000) >> 10));
+                escape(0xDC00 + ((c - 0x10000) & 0x3FF));
+            } else {
+                escape(c);
+            }
         } else {
             quoted.append(rest.substr(0, length));
         }
@@ -122,19 +142,22 @@ namespace {
 
 // --- Syntax --------------------------------------------------------------------------
 
-/// `text` with every byte that is not part of valid UTF-8 spelt as <0xNN>: the parser
-/// quotes what it last read, and a message must stay printable text even when the
-/// file is binary garbage.
+/// `text` with every byte that is not part of valid UTF-8 spelt as <0xNN>, and every
+/// invisible character as <U+FEFF>: the parser quotes what it last read, and a message
+/// must stay visible, printable text even when the file is binary garbage.
 std::string printable(std::string_view text) {
     std::string result;
     while (!text.empty()) {
         std::size_t length = utf8Length(text);
+        char escaped[16];
         if (length == 0) {
-            char escaped[8];
             std::snprintf(escaped, sizeof escaped, "<0x%02X>",
                           static_cast<unsigned>(static_cast<unsigned char>(text[0])));
             result += escaped;
             length = 1;
+        } else if (const char32_t c = codePoint(text, length); isInvisible(c)) {
+            std::snprintf(escaped, sizeof escaped, "<U+%04X>", static_cast<unsigned>(c));
+            result += escaped;
         } else {
             result.append(text.substr(0, length));
         }
@@ -180,12 +203,18 @@ bool Input::refill() {
         fileEnded_ = true;
         return false;
     }
+    if (read_ == 0)
+        head_.assign(chunk_.get(), std::min(count, kHeadBytes));
     read_ += count;
     if (read_ > kMaxSceneBytes)
         throw SceneError(tooLarge());
     buffer_ = std::string_view(chunk_.get(), count);
     next_ = 0;
     return true;
+}
+
+bool Input::startsWithTwoByteOrderMarks() const {
+    return head_ == "\xEF\xBB\xBF\xEF\xBB\xBF";
 }
 
 std::string tooLarge() {
@@ -220,6 +249,9 @@ void failSyntax(const Input& input, const nlohmann::json::exception& error,
     // The parser stops at a NUL byte as at the end of the text, and says so.
     if (input.endedAtNul())
         failNul(input, false);
+    // It skips one byte-order mark, and would quote the first (invisible) with the second.
+    if (input.startsWithTwoByteOrderMarks())
+        throw SceneError("invalid JSON at line 1, column 4: a second byte-order mark (EF BB BF)");
     // The parser refuses numbers beyond a double (1e400) itself, while reading the value at
     // `place`.
     if (error.id == 406)

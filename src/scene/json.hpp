@@ -8,6 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <cstdio>
@@ -48,7 +49,8 @@ public:
     class Iterator;
 
     /// Text in memory, which must outlive the Input.
-    explicit Input(std::string_view text) : buffer_(text) {}
+    explicit Input(std::string_view text)
+        : buffer_(text), head_(text.substr(0, std::min(text.size(), kHeadBytes))) {}
     /// A file, read in chunks from where it stands (not closed). Reading throws
     /// SceneError("cannot read: ..."), and so does a file longer than kMaxSceneBytes.
     explicit Input(std::FILE* file);
@@ -59,6 +61,8 @@ public:
     Iterator begin();
     Iterator end();
 
+    /// True if the text starts with two byte-order marks (EF BB BF EF BB BF).
+    bool startsWithTwoByteOrderMarks() const;
     /// True if the last byte handed out was a NUL.
     bool endedAtNul() const { return handedOut_ > 0 && last_ == '\0'; }
     /// The line and column (from 1, in bytes) of the last byte handed out.
@@ -86,6 +90,9 @@ private:
     std::unique_ptr<char[]> chunk_;
     bool fileEnded_ = false;
     std::size_t read_ = 0; ///< bytes read from the file so far
+
+    static constexpr std::size_t kHeadBytes = 6;
+    std::string head_; ///< the first kHeadBytes bytes of the text (fewer if it is shorter)
 
     std::size_t handedOut_ = 0;
     char last_ = '\0';
@@ -139,8 +146,8 @@ inline Input::Iterator Input::end() {
 void parse(Input& input, nlohmann::json_sax<Json>& handler);
 
 /// Throws the SceneError for text the parser refused: "invalid JSON at line 2, column 3:
-/// ...", with what was read last in printable form; a NUL byte named as such; for a
-/// number beyond a double, "<place>: must be a finite number".
+/// ...", with what was read last in printable form; a NUL byte and a second byte-order
+/// mark named as such; for a number beyond a double, "<place>: must be a finite number".
 [[noreturn]] void failSyntax(const Input& input, const nlohmann::json::exception& error,
                              const std::string& place);
 

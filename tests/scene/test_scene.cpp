@@ -329,6 +329,22 @@ TEST(SceneErrors, GarbageGivesPrintableMessages) {
     EXPECT_LT(errorOf(longToken).size(), 400u);
 }
 
+TEST(SceneErrors, MessagesShowInvisibleCharacters) {
+    // One byte-order mark is skipped; a second one is named, not quoted invisibly.
+    EXPECT_EQ(errorOf("\xEF\xBB\xBF\xEF\xBB\xBF{\"bodies\": []}"),
+              "invalid JSON at line 1, column 4: a second byte-order mark (EF BB BF)");
+    // In a name, as JSON escapes.
+    EXPECT_EQ(errorOf(withTop("\"\xEF\xBB\xBFgravity\": [0, 1]")),
+              R"(unknown field "\ufeffgravity")");
+    EXPECT_EQ(errorOf(withTop("\"soft\xC2\xADhyphen\": 1, \"x\": 1")),
+              R"(unknown field "soft\u00adhyphen")");
+    EXPECT_EQ(errorOf(withTop("\"tag\xF3\xA0\x80\x81\": 1")), R"(unknown field "tag\udb40\udc01")");
+    // In what the parser read last, as <U+...>.
+    const std::string message = errorOf("{\"bodies\": [], \"zero\xE2\x80\x8Bwidth\x01\": 1}");
+    EXPECT_THAT(message, StartsWith("invalid JSON at line 1, column 29:"));
+    EXPECT_THAT(message, HasSubstr("zero<U+200B>width<U+0001>"));
+}
+
 TEST(SceneErrors, RandomMutationsGiveSceneErrorsOrScenes) {
     // Never anything but a Scene or a SceneError, whatever the bytes.
     const std::string valid = R"({"gravity": [0, 800], "dt": 0.02, "solver": "classic",
