@@ -13,6 +13,7 @@
 #include "jostle/tilemap.hpp"
 #include "jostle/world.hpp"
 
+#include <cstddef>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -42,10 +43,17 @@ public:
     using std::runtime_error::runtime_error;
 };
 
-/// Reads a scene from JSON text. Throws SceneError.
+/// The longest scene file, in bytes: 1 GiB. Loading reads a file as it goes: it holds the
+/// scene, and of the text only what the parser holds (a string being read, a run of
+/// whitespace and brackets between two strings or numbers).
+inline constexpr std::size_t kMaxSceneBytes = std::size_t{1} << 30;
+
+/// Reads a scene from JSON text of at most kMaxSceneBytes. Throws SceneError.
 Scene parseScene(std::string_view json);
 
-/// Reads a scene file. Throws SceneError (also when the file cannot be read).
+/// Reads a scene file: a regular file, or anything that can be read to its end (a pipe,
+/// /dev/stdin), of at most kMaxSceneBytes. Throws SceneError whose what() starts with
+/// the path (also when the file cannot be read, or is too large).
 Scene loadScene(const std::string& path);
 
 /// Creates the scene's bodies in `world`, in file order; returns their handles.

@@ -17,14 +17,19 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <filesystem>
 #include <functional>
+#include <iterator>
 #include <limits>
 #include <memory>
+#include <new>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <system_error>
-#include <unordered_map>
-#include <unordered_set>
+#include <type_traits>
+#include <utility>
+#include <variant>
 #include <vector>
 
 namespace jostle {
@@ -58,80 +63,565 @@ void readValue(const Json& value, const std::string& place, std::uint32_t& out) 
     out = readBits(value, place);
 }
 
-/// Reads the field `name` of `def`; false if `def` has no field of that name that a file
-/// can give.
-template <class Def, class F, std::size_t N>
-bool readField(Def& def, const F (&fields)[N], const std::string& name, const Json& value,
-               const std::string& place) {
-    const F* field = properties::find(fields, name);
-    auto read = [&](auto member) {
-        if constexpr (requires { readValue(value, place, def.*member); }) {
-            readValue(value, place, def.*member);
-            return true;
-        } else {
-            return false;
-        }
-    };
-    return field && std::visit(read, field->member);
+template <class T, class Def, class U> constexpr bool isMemberOf(U Def::*) {
+    return std::is_same_v<T, U>;
 }
 
-/// Fails unless the object `value` has every field its definition requires, in table order.
+/// True if a file can give the field: all but a pointer (userData).
+template <class F> bool inFile(const F& field) {
+    return std::visit([](auto member) { return !isMemberOf<void*>(member); }, field.member);
+}
+
+/// True if the field's value is an array of 2 numbers (oneWay, slope).
+template <class F> bool isVec2(const F& field) {
+    return std::visit([](auto member) { return isMemberOf<Vec2>(member); }, field.member);
+}
+
+/// Reads `field` of `def` from `value`; the field is one a file can give.
+template <class Def, class F>
+void readField(Def& def, const F& field, const Json& value, const std::string& place) {
+    std::visit(
+        [&](auto member) {
+            if constexpr (requires { readValue(value, place, def.*member); })
+                readValue(value, place, def.*member);
+        },
+        field.member);
+}
+
+constexpr std::size_t kNone = std::numeric_limits<std::size_t>::max();
+
+/// The index in `fields` of the field a file calls `name`, or kNone.
 template <class F, std::size_t N>
-void requireFields(const Json& value, const std::string& place, const F (&fields)[N]) {
-    for (const F& field : fields)
-        if (field.property->required && !value.contains(field.property->name))
-            fail(place, std::string("missing field \"") + field.property->name + "\"");
+std::size_t fileFieldIndex(const F (&fields)[N], std::string_view name) {
+    const F* field = properties::find(fields, name);
+    return field && inFile(*field) ? static_cast<std::size_t>(field - fields) : kNone;
 }
 
-// --- Bodies --------------------------------------------------------------------------
+/// The index of `name` in `names`, or kNone.
+template <std::size_t N>
+std::size_t indexOf(const std::string_view (&names)[N], std::string_view name) {
+    for (std::size_t i = 0; i < N; ++i)
+        if (names[i] == name)
+            return i;
+    return kNone;
+}
 
-SceneBody readBody(const Json& value, const std::string& place, std::size_t index) {
-    const Json::object_t& fields = readObject(value, place);
-    SceneBody body;
-    body.id = std::to_string(index);
+// --- Reading the parser's events ------------------------------------------------------
 
-    for (const auto& [name, fieldValue] : fields) {
-        const std::string at = field(place, name);
-        if (name == "id") {
-            body.id = readString(fieldValue, at);
-            if (body.id.empty())
-                fail(at, "must not be empty");
-        } else if (!readField(body.def, properties::kBodyFields, name, fieldValue, at)) {
-            fail(place, "unknown field " + quoteName(name));
+/// The format needs four levels (scene, tilemaps, tile map, rows); anything much deeper is
+/// not a scene, and refusing it early bounds what hostile input costs.
+constexpr std::size_t kMaxDepth = 32;
+
+/// The fields of the top level, and of "classic" and "physical", by index.
+constexpr std::string_view kSceneFields[] = {"gravity", "maxVelocity", "dt",       "solver",
+                                             "classic", "physical",    "sleeping", "bodies",
+                                             "tilemap", "tilemaps"};
+enum SceneField : std::size_t {
+    kGravity,
+    kMaxVelocity,
+    kDt,
+    kSolver,
+    kClassic,
+    kPhysical,
+    kSleeping,
+    kBodies,
+    kTileMap,
+    kTileMaps
+};
+constexpr std::string_view kClassicFields[] = {"mass", "coulomb", "ccd"};
+constexpr std::string_view kPhysicalFields[] = {
+    "velocityIterations", "positionIterations", "slop", "correction", "restitutionThreshold",
+    "frictionMix",        "maxContactsPerBody"};
+/// A body's "id" and a tile map's "rows", after the fields of their definitions.
+constexpr std::size_t kIdField = std::size(properties::kBodyFields);
+constexpr std::size_t kRowsField = std::size(properties::kTileMapFields);
+static_assert(kIdField < 64 && kRowsField < 64, "Frame::given has a bit for each field");
+
+/// What belongs at a place of the file, and so what the reader does with the value there.
+enum class Kind : std::uint8_t {
+    Scene,    ///< the top-level object
+    Classic,  ///< "classic"
+    Physical, ///< "physical"
+    Body,     ///< an element of "bodies"
+    TileMap,  ///< "tilemap", an element of "tilemaps"
+    Bodies,   ///< "bodies"
+    TileMaps, ///< "tilemaps"
+    Rows,     ///< a tile map's "rows"
+    Vec2,     ///< an array of 2 numbers (gravity, oneWay, slope)
+    Scalar,   ///< a number, string, boolean (never a container)
+    Skip,     ///< a container where none or another belongs: read to its end, kept empty
+};
+
+/// What the value of each field of kSceneFields is.
+constexpr Kind kSceneFieldKinds[] = {Kind::Vec2,    Kind::Scalar,   Kind::Scalar, Kind::Scalar,
+                                     Kind::Classic, Kind::Physical, Kind::Scalar, Kind::Bodies,
+                                     Kind::TileMap, Kind::TileMaps};
+static_assert(std::size(kSceneFieldKinds) == std::size(kSceneFields));
+
+bool isObjectKind(Kind kind) {
+    return kind == Kind::Scene || kind == Kind::Classic || kind == Kind::Physical ||
+           kind == Kind::Body || kind == Kind::TileMap;
+}
+
+bool isArrayKind(Kind kind) {
+    return kind == Kind::Bodies || kind == Kind::TileMaps || kind == Kind::Rows ||
+           kind == Kind::Vec2;
+}
+
+/// A name as part of a place: as it is if it is a plain word, else quoted as JSON.
+std::string placeName(const std::string& name) {
+    const bool plain = !name.empty() && std::all_of(name.begin(), name.end(), [](char c) {
+        return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
+               c == '_';
+    });
+    return plain ? name : quoteName(name);
+}
+
+/// The ids of the bodies read so far, each by the body's index in `bodies`: a table of
+/// (hash, index) with open addressing, so that a lookup is one slot or a few neighbours
+/// and a new id allocates nothing.
+class IdTable {
+public:
+    explicit IdTable(const std::vector<SceneBody>& bodies) : bodies_(bodies) {}
+
+    /// The index of the body whose id is bodies[index].id, if one came before; else kNone,
+    /// and bodies[index] is in the table.
+    std::size_t insert(std::size_t index) {
+        if (2 * (count_ + 1) > slots_.size())
+            grow();
+        const std::string& id = bodies_[index].id;
+        const std::size_t hash = std::hash<std::string>{}(id);
+        for (std::size_t at = hash & (slots_.size() - 1);; at = (at + 1) & (slots_.size() - 1)) {
+            Slot& slot = slots_[at];
+            if (slot.index == kNone) {
+                slot = {hash, index};
+                ++count_;
+                return kNone;
+            }
+            if (slot.hash == hash && bodies_[slot.index].id == id)
+                return slot.index;
         }
     }
-    requireFields(value, place, properties::kBodyFields); // hw, hh: a box has no default size
+
+private:
+    struct Slot {
+        std::size_t hash = 0;
+        std::size_t index = kNone;
+    };
+
+    void grow() {
+        std::vector<Slot> old(std::max<std::size_t>(64, 2 * slots_.size()));
+        old.swap(slots_);
+        for (const Slot& slot : old) {
+            if (slot.index == kNone)
+                continue;
+            std::size_t at = slot.hash & (slots_.size() - 1);
+            while (slots_[at].index != kNone)
+                at = (at + 1) & (slots_.size() - 1);
+            slots_[at] = slot;
+        }
+    }
+
+    const std::vector<SceneBody>& bodies_;
+    std::vector<Slot> slots_; ///< a power of two of them, at most half used
+    std::size_t count_ = 0;
+};
+
+/// An object or array being read: where it is, what it is, and what has been read of it.
+struct Frame {
+    Kind kind = Kind::Skip;
+    bool object = false; ///< an object, else an array
+    std::string place;
+    // An object's:
+    std::size_t field = kNone; ///< the index of the field whose value comes next
+    std::string key;           ///< its name
+    std::uint64_t given = 0;   ///< bit i: field i was given
+    // An array's:
+    std::size_t count = 0; ///< the elements read so far
+    // A Vec2's first two elements.
+    Json elements[2];
+    // A body's and a tile map's definition, as read so far.
+    SceneBody body;
+    TileMapDef map;
+
+    bool has(std::size_t index) const { return index != kNone && (given >> index & 1u) != 0; }
+};
+
+/// Reads a scene from the parser's events as they come, keeping only what the scene keeps:
+/// each body and tile map is checked when its object ends, a field that does not belong is
+/// refused at its name, and a value of the wrong type is read to its end (for its syntax)
+/// but not kept. So memory is that of the scene, and the first problem reported is the
+/// first in the file: a value's own problems when the value ends, an object's (missing
+/// fields, rules between fields, checkBodyDef) when the object ends, the whole file's
+/// (missing "bodies", checkWorldDef, the model's shapes) at the end of the text.
+class SceneReader final : public nlohmann::json_sax<Json> {
+public:
+    explicit SceneReader(const Input& input) : input_(input) {}
+
+    /// The scene, after json::parse has read the whole text without a problem.
+    Scene finish();
+
+    bool null() override { return value(Json()); }
+    bool boolean(bool v) override { return value(Json(v)); }
+    bool number_integer(number_integer_t v) override { return value(Json(v)); }
+    bool number_unsigned(number_unsigned_t v) override { return value(Json(v)); }
+    bool number_float(number_float_t v, const string_t&) override { return value(Json(v)); }
+    bool string(string_t& v) override { return value(ignored() ? Json() : Json(std::move(v))); }
+    bool binary(binary_t&) override { return value(Json()); } // JSON text has none
+    bool start_object(std::size_t) override { return open(true); }
+    bool key(string_t& name) override;
+    bool end_object() override { return close(); }
+    bool start_array(std::size_t) override { return open(false); }
+    bool end_array() override { return close(); }
+    bool parse_error(std::size_t, const std::string&,
+                     const nlohmann::detail::exception& error) override {
+        failSyntax(input_, error, childPlace());
+    }
+
+private:
+    /// The place of the value that comes next.
+    std::string childPlace() const;
+    /// What belongs at the place of the value that comes next.
+    Kind expected() const;
+
+    bool open(bool object);
+    bool close();
+    /// True if the value that comes next is not kept: it is within a Skip, or an element
+    /// of a Vec2 after its second (only counted).
+    bool ignored() const;
+    /// A whole value for the place that comes next: a scalar, the two numbers of a Vec2, or
+    /// a Skip's empty container.
+    bool value(const Json& v);
+    void take(const Json& v);
+    void takeSceneField(const Frame& frame, const Json& v);
+    void takePhysicalField(const Frame& frame, const Json& v);
+    void endBody(Frame& frame);
+    void endTileMap(Frame& frame);
+
+    const Input& input_;
+    std::vector<Frame> frames_;
+    Scene scene_;
+    std::uint64_t sceneFields_ = 0;  ///< the top level's Frame::given, once it has ended
+    std::vector<std::size_t> order_; ///< "bodies", "tilemap", "tilemaps" in file order
+    /// The whole numbers of the world's options as written, by place, for checkWorldDef's
+    /// messages.
+    std::vector<std::pair<std::string, std::string>> written_;
+    /// Ids name bodies in traces, so two bodies must never share one.
+    IdTable ids_{scene_.bodies};
+};
+
+std::string SceneReader::childPlace() const {
+    if (frames_.empty())
+        return "";
+    const Frame& frame = frames_.back();
+    if (!frame.object)
+        return element(frame.place, frame.count);
+    return field(frame.place, frame.kind == Kind::Skip ? placeName(frame.key) : frame.key);
+}
+
+Kind SceneReader::expected() const {
+    if (frames_.empty())
+        return Kind::Scene;
+    const Frame& frame = frames_.back();
+    switch (frame.kind) {
+    case Kind::Scene:
+        return kSceneFieldKinds[frame.field];
+    case Kind::Body:
+        return frame.field != kIdField && isVec2(properties::kBodyFields[frame.field])
+                   ? Kind::Vec2
+                   : Kind::Scalar;
+    case Kind::TileMap:
+        return frame.field == kRowsField                         ? Kind::Rows
+               : isVec2(properties::kTileMapFields[frame.field]) ? Kind::Vec2
+                                                                 : Kind::Scalar;
+    case Kind::Bodies:
+        return Kind::Body;
+    case Kind::TileMaps:
+        return Kind::TileMap;
+    case Kind::Skip:
+        return Kind::Skip;
+    default: // Classic, Physical, Rows, Vec2
+        return Kind::Scalar;
+    }
+}
+
+bool SceneReader::open(bool object) {
+    std::string place = childPlace();
+    if (frames_.size() >= kMaxDepth)
+        fail(place, "nested deeper than " + std::to_string(kMaxDepth) + " levels");
+    const Kind kind = expected();
+    const std::size_t index = frames_.empty() ? 0 : frames_.back().count;
+    Frame& frame = frames_.emplace_back();
+    frame.kind = (object ? isObjectKind(kind) : isArrayKind(kind)) ? kind : Kind::Skip;
+    frame.object = object;
+    frame.place = std::move(place);
+    if (frame.kind == Kind::Body)
+        frame.body.id = std::to_string(index);
+    return true;
+}
+
+bool SceneReader::key(string_t& name) {
+    Frame& frame = frames_.back();
+    std::size_t index = kNone;
+    switch (frame.kind) {
+    case Kind::Scene:
+        index = indexOf(kSceneFields, name);
+        break;
+    case Kind::Classic:
+        index = indexOf(kClassicFields, name);
+        break;
+    case Kind::Physical:
+        index = indexOf(kPhysicalFields, name);
+        break;
+    case Kind::Body:
+        index = name == "id" ? kIdField : fileFieldIndex(properties::kBodyFields, name);
+        break;
+    case Kind::TileMap:
+        index = name == "rows" ? kRowsField : fileFieldIndex(properties::kTileMapFields, name);
+        break;
+    default: // Skip: any name, read for its place
+        frame.key = std::move(name);
+        return true;
+    }
+    // Refused at its name, before its value is read: nothing of it is kept.
+    if (index == kNone)
+        fail(frame.place, "unknown field " + quoteName(name));
+    if (frame.has(index))
+        fail(frame.place, "duplicate field " + quoteName(name));
+    // One map or several: two ways to say it, never both in one file.
+    if (frame.kind == Kind::Scene && (index == kTileMap || index == kTileMaps) &&
+        frame.has(index == kTileMap ? kTileMaps : kTileMap))
+        fail("", R"(give "tilemap" or "tilemaps", not both)");
+    if (frame.kind == Kind::Scene && (index == kBodies || index == kTileMap || index == kTileMaps))
+        order_.push_back(index);
+    frame.given |= std::uint64_t{1} << index;
+    frame.field = index;
+    frame.key = std::move(name);
+    return true;
+}
+
+bool SceneReader::ignored() const {
+    if (frames_.empty())
+        return false;
+    const Frame& frame = frames_.back();
+    return frame.kind == Kind::Skip || (frame.kind == Kind::Vec2 && frame.count >= 2);
+}
+
+bool SceneReader::value(const Json& v) {
+    if (!ignored())
+        take(v);
+    if (!frames_.empty() && !frames_.back().object)
+        ++frames_.back().count;
+    return true;
+}
+
+bool SceneReader::close() {
+    Frame& frame = frames_.back();
+    switch (frame.kind) {
+    case Kind::Scene:
+        sceneFields_ = frame.given;
+        frames_.pop_back();
+        return true;
+    case Kind::Body:
+        endBody(frame);
+        break;
+    case Kind::TileMap:
+        endTileMap(frame);
+        break;
+    case Kind::Vec2: {
+        if (frame.count != 2)
+            failVec2Size(frame.place, frame.count);
+        Json pair = Json::array();
+        pair.push_back(std::move(frame.elements[0]));
+        pair.push_back(std::move(frame.elements[1]));
+        frames_.pop_back();
+        return value(pair);
+    }
+    case Kind::Skip: {
+        const bool object = frame.object;
+        frames_.pop_back();
+        if (ignored())
+            return value(Json());
+        // What a container stands for where it does not belong: its type, for the message.
+        return value(object ? Json::object() : Json::array());
+    }
+    default: // Classic, Physical, Bodies, TileMaps, Rows: each value was taken as it came
+        break;
+    }
+    frames_.pop_back();
+    if (!frames_.empty() && !frames_.back().object)
+        ++frames_.back().count;
+    return true;
+}
+
+void SceneReader::take(const Json& v) {
+    if (frames_.empty())
+        fail("", "expected an object at the top level" + got(v));
+    Frame& frame = frames_.back();
+    switch (frame.kind) {
+    case Kind::Scene:
+        takeSceneField(frame, v);
+        break;
+    case Kind::Classic: {
+        ClassicOptions& options = scene_.world.classic;
+        bool* const flags[] = {&options.mass, &options.coulomb, &options.ccd};
+        *flags[frame.field] = readBool(v, field(frame.place, frame.key));
+        break;
+    }
+    case Kind::Physical:
+        takePhysicalField(frame, v);
+        break;
+    case Kind::Body: {
+        const std::string at = field(frame.place, frame.key);
+        if (frame.field == kIdField) {
+            frame.body.id = readString(v, at);
+            if (frame.body.id.empty())
+                fail(at, "must not be empty");
+            // Ids are printed in traces and summaries, where "a\u0000b" would read "a".
+            if (hasControlCharacter(frame.body.id))
+                fail(at, "must not contain control characters, got " + quoteName(frame.body.id));
+        } else {
+            readField(frame.body.def, properties::kBodyFields[frame.field], v, at);
+        }
+        break;
+    }
+    case Kind::TileMap: {
+        const std::string at = field(frame.place, frame.key);
+        if (frame.field == kRowsField)
+            failType(v, at, "an array");
+        readField(frame.map, properties::kTileMapFields[frame.field], v, at);
+        break;
+    }
+    case Kind::Bodies:
+    case Kind::TileMaps:
+        failType(v, element(frame.place, frame.count), "an object");
+    case Kind::Rows:
+        // The map is the frame below.
+        frames_[frames_.size() - 2].map.rows.push_back(
+            readString(v, element(frame.place, frame.count)));
+        break;
+    case Kind::Vec2:
+        if (frame.count < 2)
+            frame.elements[frame.count] = v;
+        break;
+    default: // Skip
+        break;
+    }
+}
+
+FrictionMix readFrictionMix(const Json& value, const std::string& place) {
+    if (auto mix = frictionMixFromString(readString(value, place)))
+        return *mix;
+    fail(place, R"(expected "min" or "geometricMean")");
+}
+
+void SceneReader::takeSceneField(const Frame& frame, const Json& v) {
+    const std::string& name = frame.key;
+    switch (frame.field) {
+    case kGravity:
+        scene_.world.gravity = readVec2(v, name);
+        break;
+    case kMaxVelocity:
+        scene_.world.maxVelocity = readFloat(v, name);
+        break;
+    case kDt:
+        scene_.dt = readFloat(v, name);
+        if (!(scene_.dt > 0.0f))
+            fail(name, "must be > 0");
+        if (scene_.dt < kMinMagnitude || scene_.dt > kMaxMagnitude)
+            fail(name, "must be in [1e-9, 1e9]"); // what World::step accepts
+        break;
+    case kSolver: {
+        auto solver = solverFromString(readString(v, name));
+        if (!solver)
+            fail(name, R"(expected "classic" or "physical")");
+        scene_.world.solver = *solver;
+        break;
+    }
+    case kSleeping:
+        scene_.world.sleeping = readBool(v, name);
+        break;
+    case kBodies:
+    case kTileMaps:
+        failType(v, name, "an array");
+    default: // classic, physical, tilemap
+        failType(v, name, "an object");
+    }
+}
+
+void SceneReader::takePhysicalField(const Frame& frame, const Json& v) {
+    const std::string at = field(frame.place, frame.key);
+    PhysicalOptions& options = scene_.world.physical;
+    switch (frame.field) {
+    case 0:
+        options.velocityIterations = readInt(v, at);
+        written_.emplace_back(at, numberText(v));
+        break;
+    case 1:
+        options.positionIterations = readInt(v, at);
+        written_.emplace_back(at, numberText(v));
+        break;
+    case 2:
+        options.slop = readFloat(v, at);
+        break;
+    case 3:
+        options.correction = readFloat(v, at);
+        break;
+    case 4:
+        options.restitutionThreshold = readFloat(v, at);
+        break;
+    case 5:
+        options.frictionMix = readFrictionMix(v, at);
+        break;
+    default:
+        options.maxContactsPerBody = readInt(v, at);
+        written_.emplace_back(at, numberText(v));
+        break;
+    }
+}
+
+/// Fails unless the object of `frame` has every field its definition requires, in table
+/// order.
+template <class F, std::size_t N> void requireFields(const Frame& frame, const F (&fields)[N]) {
+    for (std::size_t i = 0; i < N; ++i)
+        if (fields[i].property->required && !frame.has(i))
+            fail(frame.place, std::string("missing field \"") + fields[i].property->name + "\"");
+}
+
+void SceneReader::endBody(Frame& frame) {
+    using properties::kBodyFields;
+    requireFields(frame, kBodyFields); // hw, hh: a box has no default size
 
     // In a file, 0 is not a way to ask for the density mass (BodyDef's convention):
     // leaving "mass" out is. And a body cannot have both an explicit mass and a density.
-    if (value.contains("mass") && value.contains("density"))
-        fail(place, R"(give "mass" or "density", not both)");
-    if (value.contains("mass") && !(body.def.mass > 0.0f))
-        fail(field(place, "mass"), "must be > 0");
+    static const std::size_t kMass = fileFieldIndex(kBodyFields, "mass");
+    static const std::size_t kDensity = fileFieldIndex(kBodyFields, "density");
+    const bool mass = frame.has(kMass);
+    if (mass && frame.has(kDensity))
+        fail(frame.place, R"(give "mass" or "density", not both)");
+    if (mass && !(frame.body.def.mass > 0.0f))
+        fail(field(frame.place, "mass"), "must be > 0");
 
-    if (auto problem = checkBodyDef(body.def))
-        fail(field(place, problem->field), problem->problem);
-    return body;
+    if (auto problem = checkBodyDef(frame.body.def))
+        fail(field(frame.place, problem->field), problem->problem);
+
+    scene_.bodies.push_back(std::move(frame.body));
+    if (const std::size_t owner = ids_.insert(scene_.bodies.size() - 1); owner != kNone) {
+        const bool explicitId = frame.has(kIdField);
+        fail(explicitId ? field(frame.place, "id") : frame.place,
+             (explicitId ? "" : "its default id ") + quoteName(scene_.bodies.back().id) +
+                 " is already the id of " + element("bodies", owner));
+    }
 }
 
-std::vector<SceneBody> readBodies(const Json& value, const std::string& place) {
-    const Json::array_t& array = readArray(value, place);
-    std::vector<SceneBody> bodies;
-    bodies.reserve(array.size());
-    // Ids name bodies in traces, so two bodies must never share one.
-    std::unordered_map<std::string, std::size_t> owners;
-    for (std::size_t i = 0; i < array.size(); ++i) {
-        const std::string at = element(place, i);
-        SceneBody body = readBody(array[i], at, i);
-        if (auto [owner, inserted] = owners.try_emplace(body.id, i); !inserted) {
-            const bool explicitId = array[i].contains("id");
-            fail(explicitId ? field(at, "id") : at,
-                 (explicitId ? "" : "its default id ") + quoteName(body.id) +
-                     " is already the id of " + element(place, owner->second));
-        }
-        bodies.push_back(std::move(body));
-    }
-    return bodies;
+void SceneReader::endTileMap(Frame& frame) {
+    // A map has no sensible default tile size, nor default tiles.
+    requireFields(frame, properties::kTileMapFields);
+    if (!frame.has(kRowsField))
+        fail(frame.place, R"(missing field "rows")");
+    if (auto problem = checkTileMapDef(frame.map))
+        fail(field(frame.place, problem->field), problem->problem);
+    scene_.tileMaps.push_back(std::move(frame.map));
 }
 
 /// Why a world in the classic model refuses a shape: it has sharp boxes only (createBody,
@@ -170,171 +660,39 @@ std::optional<FieldError> modelProblem(Solver solver, const std::vector<TileMapD
     return std::nullopt;
 }
 
-// --- Tile maps -----------------------------------------------------------------------
-
-TileMapDef readTileMap(const Json& value, const std::string& place) {
-    TileMapDef def;
-    for (const auto& [name, fieldValue] : readObject(value, place)) {
-        const std::string at = field(place, name);
-        if (name == "rows") {
-            const Json::array_t& rows = readArray(fieldValue, at);
-            def.rows.reserve(rows.size());
-            for (std::size_t i = 0; i < rows.size(); ++i)
-                def.rows.push_back(readString(rows[i], element(at, i)));
-        } else if (!readField(def, properties::kTileMapFields, name, fieldValue, at)) {
-            fail(place, "unknown field " + quoteName(name));
-        }
-    }
-    // A map has no sensible default tile size, nor default tiles.
-    requireFields(value, place, properties::kTileMapFields);
-    if (!value.contains("rows"))
-        fail(place, R"(missing field "rows")");
-    if (auto problem = checkTileMapDef(def))
-        fail(field(place, problem->field), problem->problem);
-    return def;
-}
-
-// --- The scene -----------------------------------------------------------------------
-
-FrictionMix readFrictionMix(const Json& value, const std::string& place) {
-    if (auto mix = frictionMixFromString(readString(value, place)))
-        return *mix;
-    fail(place, R"(expected "min" or "geometricMean")");
-}
-
-PhysicalOptions readPhysical(const Json& value, const std::string& place) {
-    PhysicalOptions options;
-    for (const auto& [name, fieldValue] : readObject(value, place)) {
-        const std::string at = field(place, name);
-        if (name == "velocityIterations")
-            options.velocityIterations = readInt(fieldValue, at);
-        else if (name == "positionIterations")
-            options.positionIterations = readInt(fieldValue, at);
-        else if (name == "slop")
-            options.slop = readFloat(fieldValue, at);
-        else if (name == "correction")
-            options.correction = readFloat(fieldValue, at);
-        else if (name == "restitutionThreshold")
-            options.restitutionThreshold = readFloat(fieldValue, at);
-        else if (name == "maxContactsPerBody")
-            options.maxContactsPerBody = readInt(fieldValue, at);
-        else if (name == "frictionMix")
-            options.frictionMix = readFrictionMix(fieldValue, at);
-        else
-            fail(place, "unknown field " + quoteName(name));
-    }
-    return options;
-}
-
-ClassicOptions readClassic(const Json& value, const std::string& place) {
-    ClassicOptions options;
-    for (const auto& [name, fieldValue] : readObject(value, place)) {
-        if (name == "mass")
-            options.mass = readBool(fieldValue, field(place, name));
-        else if (name == "coulomb")
-            options.coulomb = readBool(fieldValue, field(place, name));
-        else if (name == "ccd")
-            options.ccd = readBool(fieldValue, field(place, name));
-        else
-            fail(place, "unknown field " + quoteName(name));
-    }
-    return options;
-}
-
-Scene readScene(const Json& root) {
-    if (!root.is_object())
-        fail("", "expected an object at the top level" + got(root));
-
-    Scene scene; // WorldDef's defaults are the scene's defaults
-    for (const auto& [name, value] : root.get_ref<const Json::object_t&>()) {
-        if (name == "gravity") {
-            scene.world.gravity = readVec2(value, name);
-        } else if (name == "maxVelocity") {
-            scene.world.maxVelocity = readFloat(value, name);
-        } else if (name == "dt") {
-            scene.dt = readFloat(value, name);
-            if (!(scene.dt > 0.0f))
-                fail(name, "must be > 0");
-            if (scene.dt < kMinMagnitude || scene.dt > kMaxMagnitude)
-                fail(name, "must be in [1e-9, 1e9]"); // what World::step accepts
-        } else if (name == "solver") {
-            auto solver = solverFromString(readString(value, name));
-            if (!solver)
-                fail(name, R"(expected "classic" or "physical")");
-            scene.world.solver = *solver;
-        } else if (name == "classic") {
-            scene.world.classic = readClassic(value, name);
-        } else if (name == "physical") {
-            scene.world.physical = readPhysical(value, name);
-        } else if (name == "sleeping") {
-            scene.world.sleeping = readBool(value, name);
-        } else if (name == "bodies") {
-            scene.bodies = readBodies(value, name);
-        } else if (name == "tilemap" || name == "tilemaps") {
-            // One map or several: two ways to say it, never both in one file.
-            if (root.contains("tilemap") && root.contains("tilemaps"))
-                fail("", R"(give "tilemap" or "tilemaps", not both)");
-            if (name == "tilemap") {
-                scene.tileMaps.push_back(readTileMap(value, name));
-            } else {
-                const Json::array_t& maps = readArray(value, name);
-                for (std::size_t i = 0; i < maps.size(); ++i)
-                    scene.tileMaps.push_back(readTileMap(maps[i], element(name, i)));
-            }
-        } else {
-            fail("", "unknown field " + quoteName(name));
-        }
-    }
-    if (!root.contains("bodies"))
+Scene SceneReader::finish() {
+    if ((sceneFields_ >> kBodies & 1u) == 0)
         fail("", R"(missing field "bodies")");
-    if (auto problem = checkWorldDef(scene.world))
-        fail(problem->field, problem->problem);
+    if (auto problem = checkWorldDef(scene_.world)) {
+        std::string rule = problem->problem;
+        for (const auto& [place, text] : written_)
+            if (place == problem->field)
+                rule += ", got " + text;
+        fail(problem->field, rule);
+    }
     // Only now is the model known ("solver" may come last); its problems are looked for
     // in file order, bodies and tile maps alike.
-    for (const auto& entry : root.get_ref<const Json::object_t&>()) {
-        const std::string& name = entry.first;
+    for (const std::size_t name : order_) {
         std::optional<FieldError> problem;
-        if (name == "bodies")
-            problem = modelProblem(scene.world.solver, scene.bodies);
-        else if (name == "tilemap" || name == "tilemaps")
-            problem = modelProblem(scene.world.solver, scene.tileMaps, [&](std::size_t i) {
-                return name == "tilemap" ? name : element(name, i);
+        if (name == kBodies)
+            problem = modelProblem(scene_.world.solver, scene_.bodies);
+        else
+            problem = modelProblem(scene_.world.solver, scene_.tileMaps, [&](std::size_t i) {
+                const std::string place(kSceneFields[name]);
+                return name == kTileMap ? place : element(place, i);
             });
         if (problem)
             fail(problem->field, problem->problem);
     }
-    return scene;
+    return std::move(scene_);
 }
 
-/// The whole file, or a SceneError saying why not (in the words of the system).
-std::string readFile(const std::string& path) {
-    const auto cannotRead = [&](int error) {
-        fail(path, "cannot read: " + std::error_code(error, std::generic_category()).message());
-    };
-    struct Closer {
-        void operator()(std::FILE* file) const { std::fclose(file); }
-    };
-    errno = 0;
-    std::unique_ptr<std::FILE, Closer> file(std::fopen(path.c_str(), "rb"));
-    if (!file)
-        cannotRead(errno);
-    std::string text;
-    char buffer[1 << 16];
-    while (std::size_t count = std::fread(buffer, 1, sizeof buffer, file.get()))
-        text.append(buffer, count);
-    // Opening a directory succeeds; reading it is where EISDIR shows.
-    if (std::ferror(file.get()))
-        cannotRead(errno);
-    return text;
-}
-
-} // namespace
-
-Scene parseScene(std::string_view json) {
+/// The scene `input` holds.
+Scene readScene(json::Input& input) {
     try {
-        return readScene(json::parse(json));
-    } catch (const SceneError&) {
-        throw;
+        SceneReader reader(input);
+        json::parse(input, reader);
+        return reader.finish();
     } catch (const nlohmann::json::exception& error) {
         // Every path above checks types first, so this is a bug; still, the promise is
         // that bad input gives a SceneError, never something else.
@@ -342,12 +700,37 @@ Scene parseScene(std::string_view json) {
     }
 }
 
+} // namespace
+
+Scene parseScene(std::string_view json) {
+    if (json.size() > kMaxSceneBytes)
+        throw SceneError(json::tooLarge());
+    json::Input input(json);
+    return readScene(input);
+}
+
 Scene loadScene(const std::string& path) {
-    const std::string text = readFile(path);
     try {
-        return parseScene(text);
+        // A regular file says its size: one too large is refused before it is read. Others
+        // (a pipe) are refused when they pass the limit.
+        std::error_code error;
+        if (std::filesystem::is_regular_file(path, error) &&
+            std::filesystem::file_size(path, error) > kMaxSceneBytes && !error)
+            throw SceneError(json::tooLarge());
+        struct Closer {
+            void operator()(std::FILE* file) const { std::fclose(file); }
+        };
+        errno = 0;
+        std::unique_ptr<std::FILE, Closer> file(std::fopen(path.c_str(), "rb"));
+        if (!file)
+            throw SceneError("cannot read: " +
+                             std::error_code(errno, std::generic_category()).message());
+        json::Input input(file.get());
+        return readScene(input);
     } catch (const SceneError& error) {
         throw SceneError(path + ": " + error.what());
+    } catch (const std::bad_alloc&) {
+        throw SceneError(path + ": cannot load: out of memory");
     }
 }
 

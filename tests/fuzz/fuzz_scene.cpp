@@ -71,6 +71,14 @@ void checkScene(const Scene& scene) {
     for (const SceneBody& body : scene.bodies) {
         if (body.id.empty() || !ids.insert(body.id).second)
             finding("loaded an empty or duplicate id \"" + body.id + "\"");
+        // No control character: C0, DEL, and C1 (U+0080 to U+009F, C2 80 to C2 9F).
+        for (std::size_t i = 0; i < body.id.size(); ++i) {
+            const auto byte = static_cast<unsigned char>(body.id[i]);
+            const auto next =
+                i + 1 < body.id.size() ? static_cast<unsigned char>(body.id[i + 1]) : 0u;
+            if (byte < 0x20 || byte == 0x7F || (byte == 0xC2 && next >= 0x80 && next <= 0x9F))
+                finding("loaded an id with a control character");
+        }
         if (auto problem = checkBodyDef(body.def))
             finding("loaded body \"" + body.id + "\" that checkBodyDef refuses: " + problem->field +
                     ": " + problem->problem);

@@ -102,10 +102,22 @@ protected:
     /// Runs `jostle ARGS` with stdout sent where the shell's `redirection` says
     /// (">/dev/full", ">&-" to close it), capturing the exit status and stderr.
     ProgramResult run(const std::string& args, const std::string& redirection) {
+        return runShell(quote(JOSTLE_EXE) + " " + args, redirection);
+    }
+
+    /// Runs `jostle ARGS` with standard input a pipe from the shell command `producer`.
+    ProgramResult runPiped(const std::string& producer, const std::string& args) {
+        std::string redirection = ">";
+        redirection += quote(path("stdout"));
+        return runShell("(" + producer + ") | " + quote(JOSTLE_EXE) + " " + args, redirection);
+    }
+
+    /// Runs the shell command `command` with its stdout sent where `redirection` says,
+    /// capturing its exit status, stdout and stderr.
+    ProgramResult runShell(const std::string& command, const std::string& redirection) {
         std::filesystem::remove(path("stdout"));
-        const std::string command =
-            quote(JOSTLE_EXE) + " " + args + " " + redirection + " 2>" + quote(path("stderr"));
-        const int raw = std::system(command.c_str());
+        const std::string redirected = command + " " + redirection + " 2>" + quote(path("stderr"));
+        const int raw = std::system(redirected.c_str());
         ProgramResult result;
         if (raw != -1 && WIFEXITED(raw))
             result.status = WEXITSTATUS(raw);

@@ -468,6 +468,33 @@ TEST_F(Cli, MissingFile) {
     EXPECT_EQ(r.err, "jostle: error: " + scene + ": cannot read: No such file or directory\n");
 }
 
+TEST_F(Cli, ASceneCanComeThroughAPipe) {
+    const Result r = runPiped(std::string("printf '%s' '") + kFreeScene + "'",
+                              "run /dev/stdin --steps 3 --trace -");
+    EXPECT_EQ(r.status, 0);
+    EXPECT_EQ(r.out, "step,id,x,y,vx,vy\n1,ball,1,-2,4,-8\n2,ball,2,-4,4,-8\n3,ball,3,-6,4,-8\n");
+}
+
+TEST_F(Cli, AnUnknownFieldIsRefusedBeforeItsValueIsRead) {
+    // 60 MB of value: the refusal comes at the field's name, and the rest is never read.
+    const Result r =
+        runPiped(R"(printf '{"bodies": [], "colour": ['; yes '[],' | head -c 60000000)",
+                 "run /dev/stdin --steps 1");
+    EXPECT_EQ(r.status, 2);
+    EXPECT_EQ(r.err, "jostle: error: /dev/stdin: unknown field \"colour\"\n");
+}
+
+TEST_F(Cli, EndlessDevicesAreRefusedAtTheirFirstBytes) {
+    const Result zero = run("run /dev/zero --steps 1");
+    EXPECT_EQ(zero.status, 2);
+    EXPECT_EQ(zero.err, "jostle: error: /dev/zero: invalid JSON at line 1, column 1: unexpected "
+                        "NUL byte (0x00)\n");
+    const Result random = run("run /dev/urandom --steps 1");
+    EXPECT_EQ(random.status, 2);
+    EXPECT_THAT(random.err, StartsWith("jostle: error: /dev/urandom: "));
+    EXPECT_EQ(random.err.find('\n'), random.err.size() - 1); // one line
+}
+
 TEST_F(Cli, TraceFileThatCannotBeCreated) {
     const std::string scene = write("free.json", kFreeScene);
     const std::string trace = path("no/such/dir/trace.csv");

@@ -220,6 +220,34 @@ TEST(SceneErrors, InvalidJsonNamesLineAndColumn) {
     EXPECT_THAT(errorOf(R"({"bodies": [)"), StartsWith("invalid JSON at line 1, column 13:"));
 }
 
+TEST(SceneErrors, NothingButWhitespaceFollowsTheValue) {
+    for (int byte = 0; byte < 256; ++byte) {
+        const char c = static_cast<char>(byte);
+        if (c == ' ' || c == '\t' || c == '\n' || c == '\r')
+            continue;
+        SCOPED_TRACE(byte);
+        EXPECT_THAT(errorOf(R"({"bodies": []})" + std::string(1, c) + R"({"gravty": 1, garbage)"),
+                    StartsWith("invalid JSON at line 1, column 1"));
+    }
+}
+
+TEST(SceneErrors, NulBytesAreErrorsWhereverTheyAre) {
+    // The parser stops at a NUL as at the end of the text; what follows must not be lost.
+    using namespace std::string_literals;
+    EXPECT_EQ(errorOf("{\"bodies\": []}\0{\"gravty\": 1, garbage"s),
+              "invalid JSON at line 1, column 15: unexpected NUL byte (0x00); expected end of "
+              "input");
+    EXPECT_EQ(
+        errorOf("{\"bodies\": []}\n  \0"s),
+        "invalid JSON at line 2, column 3: unexpected NUL byte (0x00); expected end of input");
+    EXPECT_EQ(errorOf("{\"bodies\":\0[]}"s),
+              "invalid JSON at line 1, column 11: unexpected NUL byte (0x00)");
+    EXPECT_EQ(errorOf("{\"bodies\": [], \"a\0\": 1}"s),
+              "invalid JSON at line 1, column 18: unexpected NUL byte (0x00)");
+    EXPECT_EQ(errorOf("{\"bodies\": [1\0]}"s), "bodies[0]: expected an object, got number");
+    EXPECT_EQ(errorOf("\0"s), "invalid JSON at line 1, column 1: unexpected NUL byte (0x00)");
+}
+
 TEST(SceneErrors, CommentsAreNotJson) {
     // `{"bodies": [] // none`: the first slash is character 15.
     EXPECT_THAT(errorOf("{\"bodies\": [] // none\n}"),
@@ -249,6 +277,47 @@ TEST(SceneErrors, DeepNestingIsRefusedWithoutACrash) {
     EXPECT_THAT(errorOf(std::string(1'000'000, '{')), HasSubstr("invalid JSON"));
 }
 
+TEST(SceneErrors, UnknownFieldsAreRefusedAtTheirName) {
+    // Nothing after the name is read, neither the value nor the rest of the file: a long
+    // value costs nothing before the refusal.
+    EXPECT_EQ(errorOf(R"({"bodies": [], "colour": [1, 2, )"), R"(unknown field "colour")");
+    EXPECT_EQ(errorOf(R"({"bodies": [{"hw": 1, "colour": {"r": )"),
+              R"(bodies[0]: unknown field "colour")");
+    EXPECT_EQ(errorOf(R"({"bodies": [], "classic": {"masses": x)"),
+              R"(classic: unknown field "masses")");
+    EXPECT_EQ(errorOf(R"({"bodies": [], "physical": {"iterations": [)"),
+              R"(physical: unknown field "iterations")");
+    EXPECT_EQ(errorOf(R"({"bodies": [], "tilemaps": [{"tile": 1, "colour": "#)"),
+              R"(tilemaps[0]: unknown field "colour")");
+}
+
+TEST(SceneErrors, ProblemsAreReportedInFileOrder) {
+    // The first problem met reading from the top, invalid JSON after it or not.
+    EXPECT_EQ(errorOf(R"({"bodies": [{"hw": 0, "hh": 1}], x)"), "bodies[0].hw: must be > 0");
+    EXPECT_EQ(errorOf(R"({"bodies": [], "gravity": {"a": 1}, x)"),
+              "gravity: expected an array of 2 numbers, got object");
+    // A value's own problems (its type) when it ends: invalid JSON within it comes first.
+    EXPECT_THAT(errorOf(R"({"bodies": [], "gravity": {"a": [1, 2}})"),
+                StartsWith("invalid JSON at line 1, column 38:"));
+    // An object's problems (missing fields, checkBodyDef) when it ends.
+    EXPECT_EQ(errorOf(withBodies(R"({"hw": -1, "hh": 1, "colour": 1})")),
+              R"(bodies[0]: unknown field "colour")");
+    EXPECT_EQ(errorOf(withBodies(R"({"hw": -1, "x": "left", "hh": 1})")),
+              "bodies[0].x: expected a number, got string");
+    // The file's (a missing "bodies", the model's shapes) at its end.
+    EXPECT_THAT(errorOf(R"({"gravity": [0, 1]} x)"), StartsWith("invalid JSON"));
+}
+
+TEST(SceneErrors, LongValuesOfTheWrongTypeAreCountedNotKept) {
+    std::string numbers = "0";
+    for (int i = 1; i < 100'000; ++i)
+        numbers += ", " + std::to_string(i);
+    EXPECT_EQ(errorOf(withTop(R"("gravity": [)" + numbers + "]")),
+              "gravity: expected an array of 2 numbers, got 100000 numbers");
+    EXPECT_EQ(errorOf(withBodies(R"({"hw": 1, "hh": 1, "x": [)" + numbers + "]}")),
+              "bodies[0].x: expected a number, got array");
+}
+
 TEST(SceneErrors, GarbageGivesPrintableMessages) {
     const std::string garbage = "\xff\xfe\x01garbage";
     const std::string message = errorOf(garbage);
@@ -260,6 +329,22 @@ TEST(SceneErrors, GarbageGivesPrintableMessages) {
     const std::string longToken =
         R"({"bodies": [], ")" + std::string(1'000'000, 'a') + R"(\q": 1})";
     EXPECT_LT(errorOf(longToken).size(), 400u);
+}
+
+TEST(SceneErrors, MessagesShowInvisibleCharacters) {
+    // One byte-order mark is skipped; a second one is named, not quoted invisibly.
+    EXPECT_EQ(errorOf("\xEF\xBB\xBF\xEF\xBB\xBF{\"bodies\": []}"),
+              "invalid JSON at line 1, column 4: a second byte-order mark (EF BB BF)");
+    // In a name, as JSON escapes.
+    EXPECT_EQ(errorOf(withTop("\"\xEF\xBB\xBFgravity\": [0, 1]")),
+              R"(unknown field "\ufeffgravity")");
+    EXPECT_EQ(errorOf(withTop("\"soft\xC2\xADhyphen\": 1, \"x\": 1")),
+              R"(unknown field "soft\u00adhyphen")");
+    EXPECT_EQ(errorOf(withTop("\"tag\xF3\xA0\x80\x81\": 1")), R"(unknown field "tag\udb40\udc01")");
+    // In what the parser read last, as <U+...>.
+    const std::string message = errorOf("{\"bodies\": [], \"zero\xE2\x80\x8Bwidth\x01\": 1}");
+    EXPECT_THAT(message, StartsWith("invalid JSON at line 1, column 29:"));
+    EXPECT_THAT(message, HasSubstr("zero<U+200B>width<U+0001>"));
 }
 
 TEST(SceneErrors, RandomMutationsGiveSceneErrorsOrScenes) {
@@ -294,6 +379,25 @@ TEST(SceneErrors, RandomMutationsGiveSceneErrorsOrScenes) {
             ADD_FAILURE() << "not a SceneError for: " << text;
         }
     }
+}
+
+// --- Scale ------------------------------------------------------------------------------
+
+// Loading takes time in proportion to the file. Half a million bodies took minutes when
+// each body cost as much as all those before it; tests/scene/CMakeLists.txt gives this
+// test a timeout. How long a million bodies take: jostle-bench-load (docs/benchmarks.md).
+TEST(SceneScale, HalfAMillionBodiesLoad) {
+    constexpr int kBodies = 500'000;
+    std::string text = R"({"gravity": [0, 10], "bodies": [)";
+    for (int i = 0; i < kBodies; ++i)
+        text += (i == 0 ? "" : ",\n") + std::string(R"({"x": )") + std::to_string(i % 1000) +
+                R"(, "y": )" + std::to_string(i / 1000) + R"(, "hw": 0.5, "hh": 0.5})";
+    text += "]}";
+    const Scene scene = parseScene(text);
+    ASSERT_EQ(scene.bodies.size(), static_cast<std::size_t>(kBodies));
+    EXPECT_EQ(scene.bodies.back().id, std::to_string(kBodies - 1));
+    EXPECT_EQ(scene.bodies.back().def.x, 999.0f);
+    EXPECT_EQ(scene.bodies.back().def.y, 499.0f);
 }
 
 // --- Errors: the top level -------------------------------------------------------------
@@ -360,18 +464,87 @@ TEST(SceneErrors, PhysicalOptions) {
     EXPECT_EQ(errorOf(withTop(R"("physical": {"iterations": 3})")),
               R"(physical: unknown field "iterations")");
     EXPECT_EQ(errorOf(withTop(R"("physical": {"velocityIterations": 2.5})")),
-              "physical.velocityIterations: expected a whole number");
+              "physical.velocityIterations: expected a whole number, got 2.5");
     EXPECT_EQ(errorOf(withTop(R"("physical": {"positionIterations": "3"})")),
               "physical.positionIterations: expected a whole number, got string");
     EXPECT_EQ(errorOf(withTop(R"("physical": {"frictionMix": "max"})")),
               R"(physical.frictionMix: expected "min" or "geometricMean")");
-    // The ranges are the world's (checkWorldDef); the loader only names the place.
-    EXPECT_THAT(errorOf(withTop(R"("physical": {"velocityIterations": 0})")),
-                StartsWith("physical.velocityIterations: must be"));
-    EXPECT_THAT(errorOf(withTop(R"("physical": {"velocityIterations": 1e12})")),
-                StartsWith("physical.velocityIterations: must be"));
+    // The ranges are the world's (checkWorldDef); the loader names the place and the value.
+    EXPECT_EQ(errorOf(withTop(R"("physical": {"velocityIterations": 0})")),
+              "physical.velocityIterations: must be in [1, 1000], got 0");
+    EXPECT_EQ(errorOf(withTop(R"("physical": {"velocityIterations": 1e12})")),
+              "physical.velocityIterations: must be in [1, 1000], got 1000000000000");
     EXPECT_THAT(errorOf(withTop(R"("physical": {"slop": -1})")),
                 StartsWith("physical.slop: must be"));
+}
+
+TEST(SceneErrors, WholeNumbersFollowOneRule) {
+    // Every whole-number field, in a scene where it is the only thing that varies.
+    struct WholeField {
+        std::string place;
+        std::string (*scene)(const std::string& value);
+        std::string range; // its rule, as the messages give it
+    };
+    const WholeField fields[] = {
+        {"bodies[0].category",
+         [](const std::string& v) {
+             return withBodies(R"({"hw": 1, "hh": 1, "category": )" + v + "}");
+         },
+         "[0, 4294967295]"},
+        {"bodies[0].mask",
+         [](const std::string& v) {
+             return withBodies(R"({"hw": 1, "hh": 1, "mask": )" + v + "}");
+         },
+         "[0, 4294967295]"},
+        {"tilemap.category",
+         [](const std::string& v) {
+             return withTop(R"("tilemap": {"tile": 1, "rows": ["#"], "category": )" + v + "}");
+         },
+         "[0, 4294967295]"},
+        {"tilemap.mask",
+         [](const std::string& v) {
+             return withTop(R"("tilemap": {"tile": 1, "rows": ["#"], "mask": )" + v + "}");
+         },
+         "[0, 4294967295]"},
+        {"physical.velocityIterations",
+         [](const std::string& v) {
+             return withTop(R"("physical": {"velocityIterations": )" + v + "}");
+         },
+         "[1, 1000]"},
+        {"physical.positionIterations",
+         [](const std::string& v) {
+             return withTop(R"("physical": {"positionIterations": )" + v + "}");
+         },
+         "[0, 1000]"},
+    };
+    for (const WholeField& f : fields) {
+        SCOPED_TRACE(f.place);
+        // A number whose value is whole, however it is written.
+        for (const char* written : {"3", "3.0", "3e0", "0.3e1", "300e-2"})
+            EXPECT_EQ(errorOf(f.scene(written)), "") << written;
+        EXPECT_EQ(errorOf(f.scene("3.5")), f.place + ": expected a whole number, got 3.5");
+        EXPECT_EQ(errorOf(f.scene("1e-7")), f.place + ": expected a whole number, got 1e-07");
+        EXPECT_EQ(errorOf(f.scene(R"("3")")), f.place + ": expected a whole number, got string");
+        EXPECT_EQ(errorOf(f.scene("true")), f.place + ": expected a whole number, got boolean");
+        // Out of the field's range, whole numbers of any size are named as such.
+        for (const auto& [written, shown] : {std::pair{"-1", "-1"},
+                                             {"-1.0", "-1"},
+                                             {"4294967296", "4294967296"},
+                                             {"18446744073709551616", "18446744073709551616"},
+                                             {"-9223372036854775809", "-9223372036854775808"},
+                                             {"1e300", "1e+300"}})
+            EXPECT_EQ(errorOf(f.scene(written)),
+                      f.place + ": must be in " + f.range + ", got " + shown)
+                << written;
+    }
+    // The values read, at the ends of the ranges.
+    const Scene scene = parseScene(
+        R"({"physical": {"velocityIterations": 1000.0, "positionIterations": 0e5},
+            "bodies": [{"hw": 1, "hh": 1, "category": 4294967295.0, "mask": 0.0}]})");
+    EXPECT_EQ(scene.world.physical.velocityIterations, 1000);
+    EXPECT_EQ(scene.world.physical.positionIterations, 0);
+    EXPECT_EQ(scene.bodies[0].def.category, 4294967295u);
+    EXPECT_EQ(scene.bodies[0].def.mask, 0u);
 }
 
 // --- Errors: bodies --------------------------------------------------------------------
@@ -552,6 +725,25 @@ TEST(SceneErrors, Ids) {
     EXPECT_EQ(errorOf(withBodies(body + R"(""})")), "bodies[0].id: must not be empty");
 }
 
+TEST(SceneErrors, IdsHoldNoControlCharacters) {
+    // "a\u0000b" printed as "a" in traces and summaries, beside a body whose id is "a".
+    const std::string body = R"({"hw": 1, "hh": 1, "id": )";
+    EXPECT_EQ(errorOf(withBodies(body + R"("a"}, )" + kBox + ", " + body + R"("a\u0000b"})")),
+              R"(bodies[2].id: must not contain control characters, got "a\u0000b")");
+    EXPECT_EQ(errorOf(withBodies(body + R"("tab\there"})")),
+              R"(bodies[0].id: must not contain control characters, got "tab\there")");
+    // DEL and the C1 controls, escaped or written as they are.
+    EXPECT_EQ(errorOf(withBodies(body + R"("a\u007f"})")),
+              R"(bodies[0].id: must not contain control characters, got "a\u007f")");
+    EXPECT_EQ(errorOf(withBodies(body + "\"a\x7f\"}")),
+              R"(bodies[0].id: must not contain control characters, got "a\u007f")");
+    EXPECT_EQ(errorOf(withBodies(body + "\"next\xc2\x85line\"}")),
+              R"(bodies[0].id: must not contain control characters, got "next\u0085line")");
+    // Other characters are names like any other.
+    const Scene scene = parseScene(withBodies(body + R"("caf\u00e9 \u00a0 \ud83d\ude00"})"));
+    EXPECT_EQ(scene.bodies[0].id, "caf\xc3\xa9 \xc2\xa0 \xf0\x9f\x98\x80");
+}
+
 TEST(SceneErrors, OddNamesAreQuotedAsJson) {
     EXPECT_EQ(errorOf(withTop(R"("a\"b\n": 1)")), R"(unknown field "a\"b\n")");
 }
@@ -700,7 +892,7 @@ TEST(SceneErrors, TileMaps) {
     EXPECT_EQ(map(R"("tile": 16, "rows": ["#"], "oneWay": [1, 1])"),
               "tilemap.oneWay: must be [0, 0] or one of [1, 0], [-1, 0], [0, 1], [0, -1]");
     EXPECT_EQ(map(R"("tile": 16, "rows": ["#"], "mask": -1)"),
-              "tilemap.mask: must be a whole number from 0 to 4294967295");
+              "tilemap.mask: must be in [0, 4294967295], got -1");
     EXPECT_EQ(map(R"("tile": 16, "rows": ["#"], "sensor": 1)"),
               "tilemap.sensor: expected true or false, got number");
     EXPECT_EQ(map(R"("tile": 16, "rows": ["#"], "colour": "red")"),
@@ -768,6 +960,20 @@ TEST_F(SceneFiles, MissingFilesAndDirectoriesCannotBeRead) {
         FAIL() << "no SceneError";
     } catch (const SceneError& error) {
         EXPECT_EQ(std::string(error.what()), dir_.string() + ": cannot read: Is a directory");
+    }
+}
+
+TEST_F(SceneFiles, FilesBeyondTheLimitAreRefusedBeforeReading) {
+    // A sparse file: a gigabyte of holes takes no room on the disk.
+    const std::string path = (dir_ / "huge.json").string();
+    { std::ofstream(path, std::ios::binary) << "{"; }
+    std::filesystem::resize_file(path, kMaxSceneBytes + 1);
+    try {
+        loadScene(path);
+        FAIL() << "no SceneError";
+    } catch (const SceneError& error) {
+        EXPECT_EQ(std::string(error.what()),
+                  path + ": too large: a scene file holds at most 1073741824 bytes (1 GiB)");
     }
 }
 
