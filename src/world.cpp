@@ -55,6 +55,7 @@ World::World(const WorldDef& def) : state_(std::make_unique<WorldState>()) {
         fail("World", "this process has made 4294967295 worlds, as many as handles can tell "
                       "apart (BodyId::world)");
     state_->serial = *serial;
+    state_->tasks = std::make_unique<TaskRunner>(def.tasks);
 }
 
 namespace {

@@ -73,6 +73,10 @@ std::optional<FieldError> checkWorldDef(const WorldDef& def) {
         return FieldError{"maxVelocity", "must be > 0"};
     if (def.solver != Solver::Classic && def.solver != Solver::Physical)
         return FieldError{"solver", "must be classic or physical"};
+    if (def.tasks.workers < 1 || def.tasks.workers > 64)
+        return FieldError{"tasks.workers", "must be in [1, 64]"};
+    if ((def.tasks.enqueueTask == nullptr) != (def.tasks.finishTask == nullptr))
+        return FieldError{"tasks", "enqueueTask and finishTask come together: both or neither"};
     return checkPhysicalOptions(def.physical);
 }
 

@@ -12,11 +12,13 @@
 #include "physical/scratch.hpp"
 #include "query_index.hpp"
 #include "shapes.hpp"
+#include "tasks.hpp"
 #include "tilemap.hpp"
 
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <utility>
 #include <vector>
 
@@ -182,6 +184,9 @@ struct WorldState {
     BoxGrid movingGrid;
     std::vector<std::uint32_t> movingSlots;  ///< grid index -> slot, in creation order
     std::vector<std::uint8_t> movingDynamic; ///< grid index -> is the body dynamic
+
+    /// The threads a step may share its work with (jostle/tasks.hpp).
+    std::unique_ptr<TaskRunner> tasks;
 
     /// Forces applied since the last step (World::applyForce), in the order given.
     std::vector<std::pair<BodyId, Vec2>> forces;

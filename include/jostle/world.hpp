@@ -17,6 +17,7 @@
 #include "jostle/body.hpp"
 #include "jostle/error.hpp"
 #include "jostle/math.hpp"
+#include "jostle/tasks.hpp"
 
 #include <functional>
 #include <limits>
@@ -110,6 +111,9 @@ struct WorldDef {
     /// cost next to nothing (they are left out of the solver and the pair search) until
     /// something wakes them (physical model only; docs/sleeping.md).
     bool sleeping = true;
+    /// Threads to step on (jostle/tasks.hpp): by default the calling thread alone. The
+    /// results are the same, bit for bit, with any number.
+    TaskSystem tasks;
 };
 
 /// The first problem with `def`, or nothing if it is acceptable.

@@ -1,0 +1,52 @@
+// jostle/tasks.hpp: stepping a world on several threads.
+//
+// A world steps on the calling thread alone unless its WorldDef asks for more workers.
+// With `workers` > 1 and nothing else, jostle starts its own threads (workers - 1 of them,
+// the calling thread being the first worker) and stops them with the world:
+//
+//     jostle::WorldDef def;
+//     def.tasks.workers = 4;
+//     jostle::World world(def);
+//
+// A game with a job system of its own hands it to jostle instead, as Box2D v3's
+// enqueueTask / finishTask do: jostle calls enqueueTask with work to be split into ranges,
+// and finishTask to wait for it.
+//
+// Whatever the workers and however the work is split, a step gives the same results bit
+// for bit: jostle cuts its work into blocks of a fixed number of items, each block writes
+// its own results, and they are put together in block order on the calling thread.
+// Callbacks (the pre-solve) and events stay on the thread that calls step().
+#pragma once
+
+#include <cstdint>
+
+namespace jostle {
+
+/// Work jostle hands to a task system: run it for every item of [begin, end), on worker
+/// `worker` (in [0, workers), no two ranges running at once on the same one).
+using TaskFn = void (*)(std::uint32_t begin, std::uint32_t end, std::uint32_t worker,
+                        void* taskContext);
+
+/// Hands `task` over [0, itemCount) to the game's job system: it must call
+/// task(begin, end, worker, taskContext) over ranges that cover every item once, each
+/// range at least `minRange` items but the last. It may run them at once (then return
+/// nullptr) or queue them and return a handle that finishTask waits on.
+using EnqueueTaskFn = void* (*)(TaskFn task, std::uint32_t itemCount, std::uint32_t minRange,
+                                void* taskContext, void* userContext);
+
+/// Waits until every range of the task enqueueTask returned `userTask` for has run.
+using FinishTaskFn = void (*)(void* userTask, void* userContext);
+
+/// How a world shares its step among threads (WorldDef::tasks).
+struct TaskSystem {
+    /// How many threads may work on a step at once, the calling thread included, in
+    /// [1, 64]. 1 (the default): the calling thread alone, no threads started.
+    int workers = 1;
+    /// The game's job system, both or neither. Neither, with workers > 1: jostle's own
+    /// threads.
+    EnqueueTaskFn enqueueTask = nullptr;
+    FinishTaskFn finishTask = nullptr;
+    void* userContext = nullptr; ///< passed to enqueueTask and finishTask as given
+};
+
+} // namespace jostle
