@@ -40,9 +40,13 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <bit>
 #include <cstdint>
+#include <random>
 #include <string>
+#include <thread>
+#include <utility>
 #include <vector>
 
 namespace {
@@ -124,8 +128,9 @@ struct BusyRun {
     std::size_t asleep = 0;        ///< at the end
 };
 
-BusyRun runBusyWorld(Solver solver, int steps) {
+BusyRun runBusyWorld(Solver solver, int steps, TaskSystem tasks = {}) {
     WorldDef def;
+    def.tasks = tasks;
     def.gravity = {0.0f, 600.0f};
     def.solver = solver;
     def.classic = {.mass = true, .coulomb = true, .ccd = true};
@@ -292,6 +297,53 @@ TEST(Determinism, PhysicalModelGivesTheRecordedHash) {
     EXPECT_GT(run.bodies, 150u);
     EXPECT_GT(run.contactBegins, 2000u);
     EXPECT_EQ(run.hash, kPhysicalHash);
+}
+
+// Workers change nothing: jostle's own threads, however many.
+TEST(Determinism, EveryWorkerCountGivesTheRecordedHash) {
+    for (int workers : {2, 3, 4, 8}) {
+        EXPECT_EQ(runBusyWorld(Solver::Physical, kSteps, {.workers = workers}).hash, kPhysicalHash)
+            << workers << " workers";
+    }
+}
+
+/// A job system that splits each task at random, runs the ranges in a random order, on
+/// one to four threads: results must not depend on how work is split or scheduled.
+struct ShuffledJobs {
+    std::mt19937 random{12345};
+    static void* enqueue(TaskFn task, std::uint32_t items, std::uint32_t minRange,
+                         void* taskContext, void* user) {
+        ShuffledJobs& jobs = *static_cast<ShuffledJobs*>(user);
+        std::vector<std::pair<std::uint32_t, std::uint32_t>> ranges;
+        for (std::uint32_t begin = 0; begin < items;) {
+            const std::uint32_t length =
+                std::max(minRange, std::uint32_t(jobs.random() % (2 * minRange + 3)));
+            const std::uint32_t end = std::min(items, begin + length);
+            ranges.emplace_back(begin, end);
+            begin = end;
+        }
+        std::shuffle(ranges.begin(), ranges.end(), jobs.random);
+        const std::uint32_t threads = 1 + jobs.random() % 4;
+        std::vector<std::thread> pool;
+        for (std::uint32_t t = 0; t < threads; ++t)
+            pool.emplace_back([&, t] {
+                for (std::size_t k = t; k < ranges.size(); k += threads)
+                    task(ranges[k].first, ranges[k].second, t, taskContext);
+            });
+        for (std::thread& thread : pool)
+            thread.join();
+        return nullptr; // all ran
+    }
+    static void finish(void*, void*) {}
+};
+
+TEST(Determinism, AJobSystemThatSplitsAndShufflesGivesTheRecordedHash) {
+    ShuffledJobs jobs;
+    const TaskSystem tasks{.workers = 4,
+                           .enqueueTask = &ShuffledJobs::enqueue,
+                           .finishTask = &ShuffledJobs::finish,
+                           .userContext = &jobs};
+    EXPECT_EQ(runBusyWorld(Solver::Physical, kSteps, tasks).hash, kPhysicalHash);
 }
 
 TEST(Determinism, SlopesAndRoundShapesRepeatThemselvesAndGiveTheRecordedHash) {
