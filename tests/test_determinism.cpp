@@ -299,11 +299,42 @@ TEST(Determinism, PhysicalModelGivesTheRecordedHash) {
     EXPECT_EQ(run.hash, kPhysicalHash);
 }
 
+/// 6,000 boxes bouncing in a closed box under gravity, `steps` steps: enough bodies that
+/// the loops over bodies are cut into several blocks. The hash of every position and
+/// velocity at the end.
+std::uint64_t runCrowd(TaskSystem tasks, int steps) {
+    World world(WorldDef{.gravity = {0.0f, 300.0f}, .tasks = tasks});
+    const float half = 400.0f;
+    world.createBody({.type = BodyType::Static, .y = half + 10, .hw = half + 20, .hh = 10});
+    world.createBody({.type = BodyType::Static, .y = -half - 10, .hw = half + 20, .hh = 10});
+    world.createBody({.type = BodyType::Static, .x = half + 10, .hw = 10, .hh = half});
+    world.createBody({.type = BodyType::Static, .x = -half - 10, .hw = 10, .hh = half});
+    Lcg random;
+    for (int i = 0; i < 6000; ++i)
+        world.createBody({.x = -half + 5 + float(i % 78) * 10,
+                          .y = -half + 5 + float(i / 78) * 10,
+                          .hw = 4,
+                          .hh = 4,
+                          .vx = random.range(-100, 100),
+                          .vy = random.range(-100, 100),
+                          .bounce = 0.5f});
+    for (int i = 0; i < steps; ++i)
+        world.step(1.0f / 60.0f);
+    Hash hash;
+    for (BodyId id : world.bodies()) {
+        hash.add(world.position(id));
+        hash.add(world.velocity(id));
+    }
+    return hash.value();
+}
+
 // Workers change nothing: jostle's own threads, however many.
 TEST(Determinism, EveryWorkerCountGivesTheRecordedHash) {
+    const std::uint64_t alone = runCrowd({}, 60);
     for (int workers : {2, 3, 4, 8}) {
         EXPECT_EQ(runBusyWorld(Solver::Physical, kSteps, {.workers = workers}).hash, kPhysicalHash)
             << workers << " workers";
+        EXPECT_EQ(runCrowd({.workers = workers}, 60), alone) << workers << " workers";
     }
 }
 
@@ -344,6 +375,7 @@ TEST(Determinism, AJobSystemThatSplitsAndShufflesGivesTheRecordedHash) {
                            .finishTask = &ShuffledJobs::finish,
                            .userContext = &jobs};
     EXPECT_EQ(runBusyWorld(Solver::Physical, kSteps, tasks).hash, kPhysicalHash);
+    EXPECT_EQ(runCrowd(tasks, 60), runCrowd({}, 60));
 }
 
 TEST(Determinism, SlopesAndRoundShapesRepeatThemselvesAndGiveTheRecordedHash) {
