@@ -22,16 +22,6 @@ float relativeSpeed(const StepContext& step, const Contact& c, int axis) {
     return step.bodies[c.ia].velocity[axis] - step.bodies[c.ib].velocity[axis];
 }
 
-/// Applies `impulse` to both bodies of `c` along `direction`.
-void applyImpulse(StepContext& step, const Contact& c, Vec2 direction, float impulse) {
-    SolverBody& a = step.bodies[c.ia];
-    SolverBody& b = step.bodies[c.ib];
-    a.velocity[0] += direction.x * impulse * c.invMassA;
-    a.velocity[1] += direction.y * impulse * c.invMassA;
-    b.velocity[0] -= direction.x * impulse * c.invMassB;
-    b.velocity[1] -= direction.y * impulse * c.invMassB;
-}
-
 float relativeSpeed(const StepContext& step, const Contact& c, Vec2 direction) {
     return dot(step.velocityOf(c.ia) - step.velocityOf(c.ib), direction);
 }

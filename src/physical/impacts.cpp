@@ -22,15 +22,6 @@ constexpr int kMaxSweeps = 8;
 /// float noise in the velocities of a resting pile.
 constexpr float kStillPerSlop = 5.0f;
 
-void applyImpulse(StepContext& step, const Contact& c, Vec2 direction, float impulse) {
-    SolverBody& a = step.bodies[c.ia];
-    SolverBody& b = step.bodies[c.ib];
-    a.velocity[0] += direction.x * impulse * c.invMassA;
-    a.velocity[1] += direction.y * impulse * c.invMassA;
-    b.velocity[0] -= direction.x * impulse * c.invMassB;
-    b.velocity[1] -= direction.y * impulse * c.invMassB;
-}
-
 /// Moves both bodies of `c` so that their offset along the normal changes by `shift`,
 /// shared by inverse mass.
 void shiftApart(StepContext& step, const Contact& c, Vec2 normal, float shift) {

@@ -100,4 +100,15 @@ private:
     float noisePerSlop_;
 };
 
+/// Applies `impulse` to both bodies of `c` along `direction`: + to a, - to b, each by its
+/// inverse mass.
+inline void applyImpulse(StepContext& step, const Contact& c, Vec2 direction, float impulse) {
+    SolverBody& a = step.bodies[c.ia];
+    SolverBody& b = step.bodies[c.ib];
+    a.velocity[0] += direction.x * impulse * c.invMassA;
+    a.velocity[1] += direction.y * impulse * c.invMassA;
+    b.velocity[0] -= direction.x * impulse * c.invMassB;
+    b.velocity[1] -= direction.y * impulse * c.invMassB;
+}
+
 } // namespace jostle
