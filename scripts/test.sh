@@ -2,7 +2,8 @@
 # Sets everything up, builds, and runs the whole test suite twice: the Release build
 # (g++), then the same tests built by clang with AddressSanitizer and
 # UndefinedBehaviorSanitizer (the asan preset in CMakePresets.json), where the fuzzers
-# also run for a short while. Any sanitizer report fails its test.
+# also run for a short while, then the tests of worlds stepped on several threads under
+# ThreadSanitizer (the tsan preset). Any sanitizer report fails its test.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/setup.sh
@@ -12,3 +13,7 @@ ctest --test-dir build --output-on-failure -j"$(nproc)"
 cmake --preset asan >/dev/null
 cmake --build --preset asan -j"$(nproc)"
 ctest --preset asan -j"$(nproc)"
+
+cmake --preset tsan >/dev/null
+cmake --build --preset tsan -j"$(nproc)"
+ctest --preset tsan -j"$(nproc)"

@@ -3,15 +3,40 @@
 #include "tasks.hpp"
 
 #include <atomic>
-#include <condition_variable>
 #include <mutex>
 #include <thread>
 #include <vector>
 
 namespace jostle {
 
+namespace {
+
+/// Turns a waiting thread spins before it sleeps: a step hands out work many times, a
+/// few microseconds apart, and waking a sleeping thread costs more than that.
+constexpr int kSpinTurns = 4000;
+
+void pause() {
+#if defined(__x86_64__) || defined(__i386__)
+    __builtin_ia32_pause();
+#endif
+}
+
+/// Waits until `value` is no longer `old`: spinning a while, then sleeping.
+template <class T> T waitWhileEqual(const std::atomic<T>& value, T old) {
+    for (int turn = 0; turn < kSpinTurns; ++turn) {
+        const T now = value.load(std::memory_order_acquire);
+        if (now != old)
+            return now;
+        pause();
+    }
+    value.wait(old, std::memory_order_acquire);
+    return value.load(std::memory_order_acquire);
+}
+
+} // namespace
+
 /// Threads that take the items of one task at a time, one item each turn, beside the
-/// calling thread (worker 0). They sleep between tasks.
+/// calling thread (worker 0). Between tasks they spin a little, then sleep.
 class ThreadPool {
 public:
     explicit ThreadPool(std::uint32_t threads) {
@@ -24,8 +49,9 @@ public:
         {
             std::lock_guard<std::mutex> lock(mutex_);
             stopping_ = true;
+            generation_.fetch_add(1, std::memory_order_release);
         }
-        wake_.notify_all();
+        generation_.notify_all();
         for (std::thread& thread : threads_)
             thread.join();
     }
@@ -33,21 +59,24 @@ public:
     /// Runs task over [0, items), one item a turn, and returns when all have run.
     void run(TaskFn task, std::uint32_t items, void* context) {
         {
-            std::unique_lock<std::mutex> lock(mutex_);
-            // A thread that saw the last task only now may still be looking at its items.
-            done_.wait(lock, [&] { return inside_ == 0; });
+            std::lock_guard<std::mutex> lock(mutex_);
+            // A thread that came late to the last task may still be looking at it; it
+            // needs no lock to leave.
+            for (std::uint32_t inside = inside_.load(std::memory_order_acquire); inside != 0;
+                 inside = inside_.load(std::memory_order_acquire))
+                waitWhileEqual(inside_, inside);
             task_ = task;
             context_ = context;
             items_ = items;
             next_.store(0, std::memory_order_relaxed);
-            finished_ = 0;
-            ++generation_;
+            finished_.store(0, std::memory_order_relaxed);
+            generation_.fetch_add(1, std::memory_order_release);
         }
-        wake_.notify_all();
-        const std::uint32_t mine = take(task, items, context, 0);
-        std::unique_lock<std::mutex> lock(mutex_);
-        finished_ += mine;
-        done_.wait(lock, [&] { return finished_ == items_ && inside_ == 0; });
+        generation_.notify_all();
+        finish(take(task, items, context, 0));
+        for (std::uint32_t done = finished_.load(std::memory_order_acquire); done != items;
+             done = finished_.load(std::memory_order_acquire))
+            waitWhileEqual(finished_, done);
     }
 
 private:
@@ -62,41 +91,48 @@ private:
         return ran;
     }
 
+    void finish(std::uint32_t ran) {
+        if (ran == 0)
+            return;
+        finished_.fetch_add(ran, std::memory_order_acq_rel);
+        finished_.notify_all();
+    }
+
     void serve(std::uint32_t worker) {
         std::uint64_t seen = 0;
-        std::unique_lock<std::mutex> lock(mutex_);
         for (;;) {
-            wake_.wait(lock, [&] { return stopping_ || generation_ != seen; });
-            if (stopping_)
-                return;
-            seen = generation_;
-            const TaskFn task = task_;
-            void* const context = context_;
-            const std::uint32_t items = items_;
-            ++inside_;
-            lock.unlock();
-            const std::uint32_t ran = take(task, items, context, worker);
-            lock.lock();
-            finished_ += ran;
-            --inside_;
-            if (inside_ == 0)
-                done_.notify_all();
+            waitWhileEqual(generation_, seen);
+            TaskFn task;
+            void* context;
+            std::uint32_t items;
+            {
+                std::lock_guard<std::mutex> lock(mutex_);
+                if (stopping_)
+                    return;
+                seen = generation_.load(std::memory_order_relaxed);
+                task = task_;
+                context = context_;
+                items = items_;
+                inside_.fetch_add(1, std::memory_order_relaxed);
+            }
+            finish(take(task, items, context, worker));
+            inside_.fetch_sub(1, std::memory_order_release);
+            inside_.notify_all();
         }
     }
 
     std::vector<std::thread> threads_;
     std::mutex mutex_;
-    std::condition_variable wake_, done_;
     bool stopping_ = false;
-    std::uint64_t generation_ = 0;
+    std::atomic<std::uint64_t> generation_{0}; ///< one more for each task, and to stop
     // The current task: set under the lock, with generation_, when no thread is inside
     // the last one; each thread copies it under the lock.
     TaskFn task_ = nullptr;
     void* context_ = nullptr;
     std::uint32_t items_ = 0;
-    std::atomic<std::uint32_t> next_{0};
-    std::uint32_t finished_ = 0; ///< items run, counted under the lock
-    std::uint32_t inside_ = 0;   ///< threads between seeing the task and finishing their part
+    std::atomic<std::uint32_t> next_{0};     ///< the next item to take
+    std::atomic<std::uint32_t> finished_{0}; ///< items run
+    std::atomic<std::uint32_t> inside_{0};   ///< threads between copying the task and leaving it
 };
 
 TaskRunner::TaskRunner(const TaskSystem& system)

@@ -28,6 +28,10 @@ public:
 
     std::uint32_t workers() const { return workers_; }
 
+    /// Makes every loop use blocks of `items` (0: each loop's own size), so that the tests
+    /// cut small worlds into many blocks: results must not change.
+    void setBlockSizeForTesting(std::uint32_t items) { testBlock_ = items; }
+
     /// Calls run(begin, end, worker) for the items [0, count) in blocks of `block` items
     /// (the last may be shorter), on the workers, and returns when all have run.
     template <class Run> void forEachBlock(std::uint32_t count, std::uint32_t block, Run&& run);
@@ -37,6 +41,7 @@ private:
 
     TaskSystem system_;
     std::uint32_t workers_;
+    std::uint32_t testBlock_ = 0;
     std::unique_ptr<ThreadPool> pool_;
 };
 
@@ -44,6 +49,8 @@ template <class Run>
 void TaskRunner::forEachBlock(std::uint32_t count, std::uint32_t block, Run&& run) {
     if (count == 0)
         return;
+    if (testBlock_ != 0)
+        block = testBlock_;
     if (workers_ == 1 || count <= block) {
         for (std::uint32_t begin = 0; begin < count; begin += block)
             run(begin, count - begin < block ? count : begin + block, 0u);

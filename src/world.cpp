@@ -220,6 +220,10 @@ bool World::sleeping() const {
     return state_->def.sleeping;
 }
 
+int World::workers() const {
+    return state_->def.tasks.workers;
+}
+
 void World::setSleeping(bool enabled) {
     requireNotStepping(*state_, "setSleeping");
     state_->def.sleeping = enabled;

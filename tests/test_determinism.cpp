@@ -37,13 +37,17 @@
 #include "jostle/query.hpp"
 #include "jostle/tilemap.hpp"
 #include "jostle/world.hpp"
+#include "tasks.hpp"
+#include "world_access.hpp"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <bit>
 #include <cstdint>
+#include <cstdio>
 #include <random>
+#include <span>
 #include <string>
 #include <thread>
 #include <utility>
@@ -120,87 +124,72 @@ void hashStep(const World& world, Hash& hash) {
 
 // A container with a pyramid, a tile floor with a one-way ledge, a lift, a sensor and
 // boxes of every kind raining in, some destroyed as they go, tiles dug and filled,
-// queries asked: most of what the library does, for `steps` steps.
-struct BusyRun {
-    std::uint64_t hash = 0;
-    std::size_t bodies = 0;        ///< alive at the end
-    std::size_t contactBegins = 0; ///< over the whole run
-    std::size_t asleep = 0;        ///< at the end
-};
+// queries asked: most of what the library does, a step at a time.
+class BusyWorld {
+public:
+    explicit BusyWorld(Solver solver, TaskSystem tasks = {}) : world(defOf(solver, tasks)) {
+        TileMapDef floorDef;
+        floorDef.x = -400.0f;
+        floorDef.y = 0.0f;
+        floorDef.tile = 20.0f;
+        floorDef.rows = {
+            "#......................................#", "#......................................#",
+            "#....................................###", "########################################"};
+        floor_ = createTileMap(world, floorDef);
 
-BusyRun runBusyWorld(Solver solver, int steps, TaskSystem tasks = {}) {
-    WorldDef def;
-    def.tasks = tasks;
-    def.gravity = {0.0f, 600.0f};
-    def.solver = solver;
-    def.classic = {.mass = true, .coulomb = true, .ccd = true};
-    def.maxVelocity = 2000.0f;
-    World world(def);
-    Lcg random;
-
-    TileMapDef floorDef;
-    floorDef.x = -400.0f;
-    floorDef.y = 0.0f;
-    floorDef.tile = 20.0f;
-    floorDef.rows = {
-        "#......................................#", "#......................................#",
-        "#....................................###", "########################################"};
-    const TileMapId floor = createTileMap(world, floorDef);
-
-    world.createBody(
-        {.type = BodyType::Static, .x = -200, .y = -150, .hw = 60, .hh = 4, .oneWay = {0, -1}});
-    const BodyId lift = world.createBody(
-        {.type = BodyType::Kinematic, .x = 200, .y = -40, .hw = 40, .hh = 6, .vy = -30});
-    const BodyId sensor = world.createBody(
-        {.type = BodyType::Static, .x = 0, .y = -100, .hw = 50, .hh = 50, .sensor = true});
-    for (int row = 0; row < 8; ++row)
-        for (int i = 0; i <= row; ++i)
-            world.createBody({.x = -40.0f + 10.0f * float(i) - 5.0f * float(row),
-                              .y = -90.0f + 10.0f * float(row),
-                              .hw = 5,
-                              .hh = 5,
-                              .friction = 0.6f});
-    world.setPreSolve([&](Collision& c) {
-        if (c.a == sensor || c.b == sensor)
+        world.createBody(
+            {.type = BodyType::Static, .x = -200, .y = -150, .hw = 60, .hh = 4, .oneWay = {0, -1}});
+        lift_ = world.createBody(
+            {.type = BodyType::Kinematic, .x = 200, .y = -40, .hw = 40, .hh = 6, .vy = -30});
+        sensor_ = world.createBody(
+            {.type = BodyType::Static, .x = 0, .y = -100, .hw = 50, .hh = 50, .sensor = true});
+        for (int row = 0; row < 8; ++row)
+            for (int i = 0; i <= row; ++i)
+                world.createBody({.x = -40.0f + 10.0f * float(i) - 5.0f * float(row),
+                                  .y = -90.0f + 10.0f * float(row),
+                                  .hw = 5,
+                                  .hh = 5,
+                                  .friction = 0.6f});
+        world.setPreSolve([this](Collision& c) {
+            if (c.a == sensor_ || c.b == sensor_)
+                return true;
+            c.friction *= 0.9f; // something a game might do, and every pair goes through it
             return true;
-        c.friction *= 0.9f; // something a game might do, and every pair goes through it
-        return true;
-    });
+        });
+    }
 
-    std::vector<BodyId> rain;
-    Hash hash;
-    BusyRun run;
-    for (int step = 0; step < steps; ++step) {
-        if (step % 3 == 0) {
-            BodyDef box{.x = random.range(-360, 360),
-                        .y = random.range(-600, -400),
-                        .hw = random.range(2, 12),
-                        .hh = random.range(2, 12),
-                        .vx = random.range(-200, 200),
-                        .vy = random.range(0, 400),
-                        .bounce = random.range(0, 1),
-                        .friction = random.range(0, 1),
-                        .density = random.range(0.5f, 4.0f)};
-            box.bullet = random.next() % 16 == 0;
+    /// One step of the script, hashed.
+    void step() {
+        if (steps_ % 3 == 0) {
+            BodyDef box{.x = random_.range(-360, 360),
+                        .y = random_.range(-600, -400),
+                        .hw = random_.range(2, 12),
+                        .hh = random_.range(2, 12),
+                        .vx = random_.range(-200, 200),
+                        .vy = random_.range(0, 400),
+                        .bounce = random_.range(0, 1),
+                        .friction = random_.range(0, 1),
+                        .density = random_.range(0.5f, 4.0f)};
+            box.bullet = random_.next() % 16 == 0;
             if (box.bullet)
                 box.vy = 1500.0f;
-            rain.push_back(world.createBody(box));
+            rain_.push_back(world.createBody(box));
         }
-        if (step % 7 == 0 && rain.size() > 150) {
-            const std::size_t victim = random.next() % rain.size();
-            world.destroyBody(rain[victim]);
-            rain.erase(rain.begin() + static_cast<std::ptrdiff_t>(victim));
+        if (steps_ % 7 == 0 && rain_.size() > 150) {
+            const std::size_t victim = random_.next() % rain_.size();
+            world.destroyBody(rain_[victim]);
+            rain_.erase(rain_.begin() + static_cast<std::ptrdiff_t>(victim));
         }
-        if (step % 120 == 60)
-            world.setVelocity(lift, {0, -world.velocity(lift).y});
-        if (step % 250 == 125) {
-            const int column = 1 + static_cast<int>(random.next() % 38);
-            setTile(world, floor, column, 2, !isSolid(world, floor, column, 2));
+        if (steps_ % 120 == 60)
+            world.setVelocity(lift_, {0, -world.velocity(lift_).y});
+        if (steps_ % 250 == 125) {
+            const int column = 1 + static_cast<int>(random_.next() % 38);
+            setTile(world, floor_, column, 2, !isSolid(world, floor_, column, 2));
         }
         world.step(1.0f / 60.0f);
         hashStep(world, hash);
-        run.contactBegins += world.contactBegins().size();
-        if (step % 50 == 0) {
+        contactBegins += world.contactBegins().size();
+        if (steps_ % 50 == 0) {
             for (BodyId id : queryBox(world, {0, -100}, {100, 100}))
                 hash.add(id);
             if (auto hit = rayCast(world, {-390, -700}, {390, 10})) {
@@ -208,12 +197,43 @@ BusyRun runBusyWorld(Solver solver, int steps, TaskSystem tasks = {}) {
                 hash.add(hit->point);
             }
         }
+        ++steps_;
     }
-    run.hash = hash.value();
-    run.bodies = world.bodyCount();
-    for (BodyId id : world.bodies())
-        run.asleep += world.isAwake(id) ? 0 : 1;
-    return run;
+
+    World world;
+    Hash hash;
+    std::size_t contactBegins = 0; ///< over the whole run
+
+private:
+    static WorldDef defOf(Solver solver, TaskSystem tasks) {
+        WorldDef def;
+        def.tasks = tasks;
+        def.gravity = {0.0f, 600.0f};
+        def.solver = solver;
+        def.classic = {.mass = true, .coulomb = true, .ccd = true};
+        def.maxVelocity = 2000.0f;
+        return def;
+    }
+
+    Lcg random_;
+    TileMapId floor_;
+    BodyId lift_, sensor_;
+    std::vector<BodyId> rain_;
+    int steps_ = 0;
+};
+
+struct BusyRun {
+    std::uint64_t hash = 0;
+    std::size_t bodies = 0;        ///< alive at the end
+    std::size_t contactBegins = 0; ///< over the whole run
+};
+
+BusyRun runBusyWorld(Solver solver, int steps, TaskSystem tasks = {}, std::uint32_t blockSize = 0) {
+    BusyWorld busy(solver, tasks);
+    WorldAccess::state(busy.world).tasks->setBlockSizeForTesting(blockSize);
+    for (int step = 0; step < steps; ++step)
+        busy.step();
+    return {busy.hash.value(), busy.world.bodyCount(), busy.contactBegins};
 }
 
 // Hills of 45° and 2:1 ramp tiles, a one-sided segment, a kinematic ramp going up and
@@ -299,43 +319,110 @@ TEST(Determinism, PhysicalModelGivesTheRecordedHash) {
     EXPECT_EQ(run.hash, kPhysicalHash);
 }
 
-/// 6,000 boxes bouncing in a closed box under gravity, `steps` steps: enough bodies that
-/// the loops over bodies are cut into several blocks. The hash of every position and
-/// velocity at the end.
-std::uint64_t runCrowd(TaskSystem tasks, int steps) {
-    World world(WorldDef{.gravity = {0.0f, 300.0f}, .tasks = tasks});
-    const float half = 400.0f;
-    world.createBody({.type = BodyType::Static, .y = half + 10, .hw = half + 20, .hh = 10});
-    world.createBody({.type = BodyType::Static, .y = -half - 10, .hw = half + 20, .hh = 10});
-    world.createBody({.type = BodyType::Static, .x = half + 10, .hw = 10, .hh = half});
-    world.createBody({.type = BodyType::Static, .x = -half - 10, .hw = 10, .hh = half});
-    Lcg random;
-    for (int i = 0; i < 6000; ++i)
-        world.createBody({.x = -half + 5 + float(i % 78) * 10,
-                          .y = -half + 5 + float(i / 78) * 10,
-                          .hw = 4,
-                          .hh = 4,
-                          .vx = random.range(-100, 100),
-                          .vy = random.range(-100, 100),
-                          .bounce = 0.5f});
-    for (int i = 0; i < steps; ++i)
-        world.step(1.0f / 60.0f);
-    Hash hash;
-    for (BodyId id : world.bodies()) {
-        hash.add(world.position(id));
-        hash.add(world.velocity(id));
+// --- Workers ------------------------------------------------------------------------
+//
+// Threads change nothing: a world gives the same bits at any worker count, under any job
+// system, however its work is cut. Tiny blocks (setBlockSizeForTesting) cut even the busy
+// world's thousand bodies into hundreds of blocks. These tests also run under
+// ThreadSanitizer (the tsan preset).
+
+/// 6,000 boxes bouncing in a closed box under gravity: enough bodies that the loops over
+/// bodies are cut into several blocks of their own size.
+class Crowd {
+public:
+    explicit Crowd(TaskSystem tasks) : world(WorldDef{.gravity = {0.0f, 300.0f}, .tasks = tasks}) {
+        const float half = 400.0f;
+        world.createBody({.type = BodyType::Static, .y = half + 10, .hw = half + 20, .hh = 10});
+        world.createBody({.type = BodyType::Static, .y = -half - 10, .hw = half + 20, .hh = 10});
+        world.createBody({.type = BodyType::Static, .x = half + 10, .hw = 10, .hh = half});
+        world.createBody({.type = BodyType::Static, .x = -half - 10, .hw = 10, .hh = half});
+        Lcg random;
+        for (int i = 0; i < 6000; ++i)
+            world.createBody({.x = -half + 5 + float(i % 78) * 10,
+                              .y = -half + 5 + float(i / 78) * 10,
+                              .hw = 4,
+                              .hh = 4,
+                              .vx = random.range(-100, 100),
+                              .vy = random.range(-100, 100),
+                              .bounce = 0.5f});
     }
-    return hash.value();
+    void step() { world.step(1.0f / 60.0f); }
+    World world;
+};
+
+/// The bits of a float, for messages.
+std::string bitsOf(Vec2 v) {
+    char text[96];
+    std::snprintf(text, sizeof text, "(%.9g, %.9g)", double(v.x), double(v.y));
+    return text;
 }
 
-// Workers change nothing: jostle's own threads, however many.
-TEST(Determinism, EveryWorkerCountGivesTheRecordedHash) {
-    const std::uint64_t alone = runCrowd({}, 60);
-    for (int workers : {2, 3, 4, 8}) {
-        EXPECT_EQ(runBusyWorld(Solver::Physical, kSteps, {.workers = workers}).hash, kPhysicalHash)
-            << workers << " workers";
-        EXPECT_EQ(runCrowd({.workers = workers}, 60), alone) << workers << " workers";
+/// Steps `one` and `other` side by side for `steps` steps and names the first step and body
+/// where they differ, or says nothing ("") if they never do.
+template <class Scene> std::string firstDifference(Scene& one, Scene& other, int steps) {
+    for (int step = 0; step < steps; ++step) {
+        one.step();
+        other.step();
+        const std::span<const BodyId> a = one.world.bodies(), b = other.world.bodies();
+        const std::string at = "step " + std::to_string(step) + ", ";
+        if (a.size() != b.size())
+            return at + std::to_string(a.size()) + " bodies against " + std::to_string(b.size());
+        for (std::size_t k = 0; k < a.size(); ++k) {
+            const std::string body = at + "body " + std::to_string(a[k].index) + ": ";
+            if (a[k].index != b[k].index)
+                return at + "body " + std::to_string(k) + " in creation order is slot " +
+                       std::to_string(a[k].index) + " against " + std::to_string(b[k].index);
+            auto differs = [](Vec2 p, Vec2 q) {
+                return std::bit_cast<std::uint64_t>(p) != std::bit_cast<std::uint64_t>(q);
+            };
+            const Vec2 pa = one.world.position(a[k]), pb = other.world.position(b[k]);
+            if (differs(pa, pb))
+                return body + "position " + bitsOf(pa) + " against " + bitsOf(pb);
+            const Vec2 va = one.world.velocity(a[k]), vb = other.world.velocity(b[k]);
+            if (differs(va, vb))
+                return body + "velocity " + bitsOf(va) + " against " + bitsOf(vb);
+            if (one.world.isAwake(a[k]) != other.world.isAwake(b[k]))
+                return body + "awake in one world only";
+        }
     }
+    return "";
+}
+
+void cutIntoBlocksOf(World& world, std::uint32_t items) {
+    WorldAccess::state(world).tasks->setBlockSizeForTesting(items);
+}
+
+TEST(Threads, EveryWorkerCountGivesTheRecordedHash) {
+    for (int workers : {2, 3, 4, 8})
+        EXPECT_EQ(runBusyWorld(Solver::Physical, kSteps, {.workers = workers}, 7).hash,
+                  kPhysicalHash)
+            << workers << " workers";
+}
+
+TEST(Threads, LockstepNamesTheFirstStepAndBodyThatDiffer) {
+    // The comparison itself: one world nudged at step 10 is told apart there.
+    struct Nudged : BusyWorld {
+        using BusyWorld::BusyWorld;
+        void step() {
+            if (++count == 11)
+                world.setVelocity(world.bodies()[20], {1.0f, 0.0f});
+            BusyWorld::step();
+        }
+        int count = 0;
+    };
+    Nudged one(Solver::Physical), other(Solver::Physical);
+    other.count = 100; // never nudged
+    const std::string difference = firstDifference(one, other, 30);
+    EXPECT_EQ(difference.rfind("step 10, body ", 0), 0u) << difference;
+}
+
+TEST(Threads, LockstepAtOneAndFourWorkersNeverDiffers) {
+    BusyWorld one(Solver::Physical), four(Solver::Physical, {.workers = 4});
+    cutIntoBlocksOf(four.world, 3);
+    EXPECT_EQ(firstDifference(one, four, 900), "");
+
+    Crowd alone({}), two({.workers = 2});
+    EXPECT_EQ(firstDifference(alone, two, 60), "");
 }
 
 /// A job system that splits each task at random, runs the ranges in a random order, on
@@ -368,14 +455,15 @@ struct ShuffledJobs {
     static void finish(void*, void*) {}
 };
 
-TEST(Determinism, AJobSystemThatSplitsAndShufflesGivesTheRecordedHash) {
+TEST(Threads, AJobSystemThatSplitsAndShufflesGivesTheRecordedHash) {
     ShuffledJobs jobs;
     const TaskSystem tasks{.workers = 4,
                            .enqueueTask = &ShuffledJobs::enqueue,
                            .finishTask = &ShuffledJobs::finish,
                            .userContext = &jobs};
-    EXPECT_EQ(runBusyWorld(Solver::Physical, kSteps, tasks).hash, kPhysicalHash);
-    EXPECT_EQ(runCrowd(tasks, 60), runCrowd({}, 60));
+    EXPECT_EQ(runBusyWorld(Solver::Physical, kSteps, tasks, 5).hash, kPhysicalHash);
+    Crowd alone({}), shuffled(tasks);
+    EXPECT_EQ(firstDifference(alone, shuffled, 60), "");
 }
 
 TEST(Determinism, SlopesAndRoundShapesRepeatThemselvesAndGiveTheRecordedHash) {

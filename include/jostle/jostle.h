@@ -206,6 +206,28 @@ typedef struct jostle_physical_options {
 
 /// Everything that describes a world (jostle::WorldDef). Start from
 /// jostle_default_world_def().
+/// Work jostle hands to a task system: run it for every item of [begin, end) on worker
+/// `worker` (in [0, workers), no two ranges at once on one worker). C++: jostle::TaskFn.
+typedef void (*jostle_task_fn)(uint32_t begin, uint32_t end, uint32_t worker, void* task_context);
+/// Hands `task` over [0, item_count) to the game's job system, in ranges of at least
+/// min_range items (but the last) that cover every item once; returns NULL if it ran them
+/// all already, else a handle for finish_task. C++: jostle::EnqueueTaskFn.
+typedef void* (*jostle_enqueue_task_fn)(jostle_task_fn task, uint32_t item_count,
+                                        uint32_t min_range, void* task_context, void* user_context);
+/// Waits until every range of the task enqueue_task returned `user_task` for has run.
+typedef void (*jostle_finish_task_fn)(void* user_task, void* user_context);
+
+/// How a world shares its step among threads (jostle/tasks.hpp explains it). Results are
+/// the same bits whatever the workers.
+typedef struct jostle_task_system {
+    /// Threads that may work on a step, the calling one included, in [1, 64]; default 1.
+    /// More than 1 and no enqueue_task: jostle starts workers - 1 threads of its own.
+    int workers;
+    jostle_enqueue_task_fn enqueue_task; ///< the game's job system: both or neither
+    jostle_finish_task_fn finish_task;
+    void* user_context; ///< passed to enqueue_task and finish_task as given
+} jostle_task_system;
+
 typedef struct jostle_world_def {
     jostle_vec2 gravity; ///< default {0, 0}; scaled by each body's gravity_scale
     /// The largest speed of a dynamic body, > 0; INFINITY (the default): no clamp.
@@ -215,6 +237,8 @@ typedef struct jostle_world_def {
     jostle_physical_options physical;
     /// Bodies at rest fall asleep and cost next to nothing (physical model, default on).
     bool sleeping;
+    /// Threads to step on: by default the calling thread alone (workers 1).
+    jostle_task_system tasks;
     /// Set by jostle_default_world_def(); leave it alone.
     uint32_t internal_cookie;
 } jostle_world_def;
@@ -251,6 +275,8 @@ jostle_solver jostle_world_get_solver(const jostle_world* world);
 bool jostle_world_set_solver(jostle_world* world, jostle_solver solver);
 
 bool jostle_world_get_sleeping(const jostle_world* world);
+/// How many threads step the world (jostle_world_def.tasks.workers); 0 on misuse.
+int jostle_world_get_workers(const jostle_world* world);
 /// Turning sleeping off wakes every body.
 bool jostle_world_set_sleeping(jostle_world* world, bool enabled);
 

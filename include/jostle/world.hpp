@@ -415,6 +415,8 @@ public:
     bool sleeping() const;
     /// Turning sleeping off wakes every body.
     void setSleeping(bool enabled);
+    /// How many threads step the world (WorldDef::tasks.workers), fixed at its creation.
+    int workers() const;
     ClassicOptions classicOptions() const;
     void setClassicOptions(ClassicOptions options);
     PhysicalOptions physicalOptions() const;

@@ -118,6 +118,16 @@ inline jostle_physical_options toC(const PhysicalOptions& o) {
             o.maxContactsPerBody};
 }
 
+static_assert(std::is_same_v<jostle_task_fn, TaskFn> &&
+              std::is_same_v<jostle_enqueue_task_fn, EnqueueTaskFn> &&
+              std::is_same_v<jostle_finish_task_fn, FinishTaskFn>);
+inline TaskSystem toCpp(const jostle_task_system& t) {
+    return {t.workers, t.enqueue_task, t.finish_task, t.user_context};
+}
+inline jostle_task_system toC(const TaskSystem& t) {
+    return {t.workers, t.enqueueTask, t.finishTask, t.userContext};
+}
+
 inline WorldDef toCpp(const jostle_world_def& d) {
     requireCookie(d.internal_cookie, "def", "jostle_default_world_def");
     return {.gravity = toCpp(d.gravity),
@@ -125,11 +135,12 @@ inline WorldDef toCpp(const jostle_world_def& d) {
             .solver = toCpp(d.solver),
             .classic = toCpp(d.classic),
             .physical = toCpp(d.physical),
-            .sleeping = d.sleeping};
+            .sleeping = d.sleeping,
+            .tasks = toCpp(d.tasks)};
 }
 inline jostle_world_def toC(const WorldDef& d) {
     return {toC(d.gravity),  d.maxVelocity, toC(d.solver), toC(d.classic),
-            toC(d.physical), d.sleeping,    kCookie};
+            toC(d.physical), d.sleeping,    toC(d.tasks),  kCookie};
 }
 
 // Numbers, flags, bits and pointers are the same in C and C++.

@@ -99,6 +99,10 @@ bool jostle_world_get_sleeping(const jostle_world* world) {
     return guard(__func__, false, [&] { return worldOf(world).world.sleeping(); });
 }
 
+int jostle_world_get_workers(const jostle_world* world) {
+    return guard(__func__, 0, [&] { return worldOf(world).world.workers(); });
+}
+
 bool jostle_world_set_sleeping(jostle_world* world, bool enabled) {
     return guard(__func__, false, [&] {
         outsideStep(world).world.setSleeping(enabled);

@@ -1987,6 +1987,90 @@ static void test_a_handle_of_another_world(void) {
     CHECK_NO_ERROR();
 }
 
+// --- Threads ------------------------------------------------------------------------------
+
+/// A job system that runs every range at once, on the calling thread, counting its calls.
+static void* run_at_once(jostle_task_fn task, uint32_t items, uint32_t min_range,
+                         void* task_context, void* user_context) {
+    (void)min_range;
+    ++*(int*)user_context;
+    task(0, items, 0, task_context);
+    return NULL;
+}
+static void finish_nothing(void* user_task, void* user_context) {
+    (void)user_task;
+    (void)user_context;
+}
+
+/// A crowd of boxes on a floor, 4,000 of them: the step cuts its loops into blocks.
+static jostle_world* crowd(jostle_task_system tasks) {
+    jostle_world_def def = jostle_default_world_def();
+    def.gravity.y = 800;
+    def.tasks = tasks;
+    jostle_world* world = jostle_world_create(&def);
+    CHECK(world, "a world with threads");
+    jostle_body_def floor = jostle_default_body_def();
+    floor.type = JOSTLE_BODY_STATIC;
+    floor.y = 1000;
+    floor.hw = 2000;
+    floor.hh = 10;
+    jostle_body_create(world, &floor);
+    for (int i = 0; i < 4000; ++i) {
+        jostle_body_def box = jostle_default_body_def();
+        box.x = (float)(i % 100) * 12.0f;
+        box.y = (float)(i / 100) * 12.0f;
+        box.hw = box.hh = 5;
+        box.vx = (float)(i % 7) * 10.0f - 30.0f;
+        jostle_body_create(world, &box);
+    }
+    return world;
+}
+
+static void test_workers(void) {
+    jostle_task_system alone = jostle_default_world_def().tasks;
+    CHECK(alone.workers == 1 && !alone.enqueue_task && !alone.finish_task,
+          "one worker, no job system by default");
+
+    jostle_task_system own = alone;
+    own.workers = 2;
+    int calls = 0;
+    jostle_task_system game = alone;
+    game.workers = 3;
+    game.enqueue_task = run_at_once;
+    game.finish_task = finish_nothing;
+    game.user_context = &calls;
+    jostle_world* one = crowd(alone);
+    jostle_world* two = crowd(own);
+    jostle_world* jobs = crowd(game);
+    CHECK(jostle_world_get_workers(two) == 2 && jostle_world_get_workers(jobs) == 3, "workers");
+    run(one, 30);
+    run(two, 30);
+    run(jobs, 30);
+    CHECK(calls > 0, "the game's job system was handed work");
+    // The same bits at any worker count, under any job system.
+    enum { kBodies = 4001 };
+    static jostle_vec2 p1[kBodies], p2[kBodies], p3[kBodies];
+    CHECK(jostle_world_read_positions(one, p1, kBodies) == kBodies &&
+              jostle_world_read_positions(two, p2, kBodies) == kBodies &&
+              jostle_world_read_positions(jobs, p3, kBodies) == kBodies,
+          "read positions");
+    CHECK(memcmp(p1, p2, sizeof p1) == 0 && memcmp(p1, p3, sizeof p1) == 0,
+          "the same positions at 1, 2 and 3 workers");
+
+    // Out of range, or half a job system: refused, with the field named.
+    jostle_world_def bad = jostle_default_world_def();
+    bad.tasks.workers = 0;
+    CHECK(!jostle_world_create(&bad), "0 workers refused");
+    CHECK_ERROR("jostle_world_create", "tasks.workers");
+    bad.tasks.workers = 2;
+    bad.tasks.enqueue_task = run_at_once;
+    CHECK(!jostle_world_create(&bad), "enqueue_task without finish_task refused");
+    CHECK_ERROR("jostle_world_create", "tasks");
+    CHECK(jostle_world_destroy(one) && jostle_world_destroy(two) && jostle_world_destroy(jobs),
+          "destroy");
+    CHECK_NO_ERROR();
+}
+
 int main(void) {
     test_defaults();
     test_free_fall();
@@ -2017,6 +2101,7 @@ int main(void) {
     test_draw_positions();
     test_misuse();
     test_a_handle_of_another_world();
+    test_workers();
     printf("test_c_api: all checks passed\n");
     return 0;
 }

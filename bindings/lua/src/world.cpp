@@ -64,8 +64,8 @@ WorldDef readWorldDef(lua_State* L, int index, const char* where) {
         return def;
     checkTable(L, index, where, "def");
     const Fields fields(L, index, where);
-    static constexpr const char* kNames[] = {"gravity",  "maxVelocity", "solver", "classic",
-                                             "physical", "sleeping",    nullptr};
+    static constexpr const char* kNames[] = {"gravity",  "maxVelocity", "solver",  "classic",
+                                             "physical", "sleeping",    "workers", nullptr};
     fields.allowOnly(kNames);
     fields.vec2("gravity", def.gravity);
     if (fields.numberOrInfinity("maxVelocity", def.maxVelocity) && !(def.maxVelocity > 0.0f))
@@ -76,6 +76,7 @@ WorldDef readWorldDef(lua_State* L, int index, const char* where) {
     readNested(L, fields, where, "classic", "classic.", def.classic, readClassic);
     readNested(L, fields, where, "physical", "physical.", def.physical, readPhysical);
     fields.boolean("sleeping", def.sleeping);
+    fields.whole("workers", def.tasks.workers, 1, 64);
     return def;
 }
 
@@ -249,6 +250,11 @@ int worldSetSolver(lua_State* L) {
     return 0;
 }
 
+int worldGetWorkers(lua_State* L) {
+    pushWhole(L, checkWorld(L, 1, "World:getWorkers").world.workers());
+    return 1;
+}
+
 int worldGetSleeping(lua_State* L) {
     lua_pushboolean(L, checkWorld(L, 1, "World:getSleeping").world.sleeping());
     return 1;
@@ -361,6 +367,7 @@ constexpr luaL_Reg kWorldMethods[] = {
     {"getSolver", worldGetSolver},
     {"setSolver", worldSetSolver},
     {"getSleeping", worldGetSleeping},
+    {"getWorkers", worldGetWorkers},
     {"setSleeping", worldSetSleeping},
     {"getClassicOptions", worldGetClassicOptions},
     {"setClassicOptions", worldSetClassicOptions},
