@@ -17,12 +17,16 @@ std::string_view name(EngineKind kind) {
     return "?";
 }
 
-std::unique_ptr<Engine> makeEngine(EngineKind kind, const Scene& scene) {
+bool takesWorkers(EngineKind kind) {
+    return kind == EngineKind::Jostle || kind == EngineKind::JostleSleeping;
+}
+
+std::unique_ptr<Engine> makeEngine(EngineKind kind, const Scene& scene, int workers) {
     switch (kind) {
     case EngineKind::Jostle:
-        return makeJostle(scene, false);
+        return makeJostle(scene, false, workers);
     case EngineKind::JostleSleeping:
-        return makeJostle(scene, true);
+        return makeJostle(scene, true, workers);
     case EngineKind::Box2D:
         return makeBox2D(scene);
     case EngineKind::Chipmunk:

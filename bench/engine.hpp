@@ -35,11 +35,16 @@ enum class EngineKind {
 /// The name printed in tables and CSV files: "jostle", "jostle+sleep", "box2d", "chipmunk".
 std::string_view name(EngineKind kind);
 
-/// Builds `scene` in the engine. An engine stores nothing per body beyond its own
-/// bodies, so the memory measured around this call is the engine's alone.
-std::unique_ptr<Engine> makeEngine(EngineKind kind, const Scene& scene);
+/// Whether the engine steps on several threads when asked: jostle only (the peers' Debian
+/// builds step on one).
+bool takesWorkers(EngineKind kind);
 
-std::unique_ptr<Engine> makeJostle(const Scene& scene, bool sleeping);
+/// Builds `scene` in the engine, on `workers` threads if it takesWorkers. An engine
+/// stores nothing per body beyond its own bodies, so the memory measured around this call
+/// is the engine's alone.
+std::unique_ptr<Engine> makeEngine(EngineKind kind, const Scene& scene, int workers);
+
+std::unique_ptr<Engine> makeJostle(const Scene& scene, bool sleeping, int workers);
 std::unique_ptr<Engine> makeBox2D(const Scene& scene);
 std::unique_ptr<Engine> makeChipmunk(const Scene& scene);
 

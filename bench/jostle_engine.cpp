@@ -1,4 +1,5 @@
-// The scene in jostle, exactly as the scene describes it, except for the sleeping switch.
+// The scene in jostle, exactly as the scene describes it, except for the sleeping switch
+// and the worker count.
 #include "engine.hpp"
 
 #include <string>
@@ -8,7 +9,8 @@ namespace {
 
 class JostleEngine final : public Engine {
 public:
-    JostleEngine(const Scene& scene, bool sleeping) : world_(withSleeping(scene.world, sleeping)) {
+    JostleEngine(const Scene& scene, bool sleeping, int workers)
+        : world_(adjusted(scene.world, sleeping, workers)) {
         for (const SceneBody& body : scene.bodies)
             world_.createBody(body.def);
     }
@@ -23,8 +25,9 @@ public:
     }
 
 private:
-    static WorldDef withSleeping(WorldDef def, bool sleeping) {
+    static WorldDef adjusted(WorldDef def, bool sleeping, int workers) {
         def.sleeping = sleeping;
+        def.tasks.workers = workers;
         return def;
     }
 
@@ -33,8 +36,8 @@ private:
 
 } // namespace
 
-std::unique_ptr<Engine> makeJostle(const Scene& scene, bool sleeping) {
-    return std::make_unique<JostleEngine>(scene, sleeping);
+std::unique_ptr<Engine> makeJostle(const Scene& scene, bool sleeping, int workers) {
+    return std::make_unique<JostleEngine>(scene, sleeping, workers);
 }
 
 std::string describeJostle() {

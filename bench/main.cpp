@@ -5,6 +5,7 @@
 //     jostle-bench --scene rain_100k    one case; --scene rain: all of a family
 //     jostle-bench --series gas --csv series.csv   one family at several sizes
 //     jostle-bench --markdown           the table for docs/benchmarks.md
+//     jostle-bench --workers 1,2,4      jostle on 1, 2 and 4 threads (default 1,2)
 //     jostle-bench --lifecycle 1000000  creating and destroying a million bodies, timed
 //
 // Progress goes to standard error, the table to standard output. Exit status: 0 when
@@ -43,6 +44,7 @@ struct Options {
     bool markdown = false;
     bool list = false;
     int lifecycle = 0;
+    std::vector<int> workers{1, 2};
 };
 
 const std::vector<EngineKind>& allEngines() {
@@ -93,10 +95,12 @@ std::vector<EngineKind> chooseEngines(const Options& options) {
 
 void printIntroduction(std::FILE* out, double maxSeconds) {
     std::fprintf(out,
-                 "Single thread. ms/step: median of the measured steps, after the warm-up "
+                 "ms/step: median of the measured steps, after the warm-up "
                  "steps (steps = warm-up + measured;\n"
                  "measuring stops early after %.0f s). jostle/peer: jostle's ms/step over the "
-                 "peer's, below 1 means jostle is faster.\n"
+                 "peer's (jostle on one thread), below 1 means jostle is faster.\n"
+                 "jostle xN: jostle on N threads; speed-up: its time on one thread over this "
+                 "one. The peers step on one thread.\n"
                  "Sleeping is off in all three engines; jostle+sleep is jostle with sleeping "
                  "on. Each engine as below: jostle with its\n"
                  "defaults, Box2D with its recommended iterations, Chipmunk with as many.\n"
@@ -125,13 +129,15 @@ int runAll(const Options& options) {
     for (const Case& c : cases) {
         const jostle::Scene scene = c.make();
         for (const EngineKind engine : engines) {
-            std::fprintf(stderr, "%-18s %-13.*s ", c.name.c_str(),
-                         static_cast<int>(name(engine).size()), name(engine).data());
-            std::fflush(stderr);
-            const RunLimits limits{c.warmup, c.steps, options.maxSeconds};
-            results.push_back(run(c, scene, engine, limits));
-            std::fprintf(stderr, "%10.3f ms/step over %d steps\n", results.back().msPerStep,
-                         results.back().measuredSteps);
+            for (const int workers : takesWorkers(engine) ? options.workers : std::vector{1}) {
+                RunResult named{.engine = engine, .workers = workers};
+                std::fprintf(stderr, "%-18s %-16s ", c.name.c_str(), label(named).c_str());
+                std::fflush(stderr);
+                const RunLimits limits{c.warmup, c.steps, options.maxSeconds};
+                results.push_back(run(c, scene, engine, workers, limits));
+                std::fprintf(stderr, "%10.3f ms/step over %d steps\n", results.back().msPerStep,
+                             results.back().measuredSteps);
+            }
         }
     }
 
@@ -167,6 +173,11 @@ int main(int argc, char** argv) {
                    "Engines (repeatable or a comma list): jostle, jostle+sleep, box2d, chipmunk. "
                    "Default: all")
         ->delimiter(',');
+    app.add_option("--workers", options.workers,
+                   "Worker counts jostle steps on, each a row (repeatable or a comma list; the "
+                   "peers step on one). Default: 1,2")
+        ->delimiter(',')
+        ->check(CLI::Range(1, 64));
     app.add_flag("--quick", options.quick, "Small sizes and few steps: a smoke run");
     app.add_option("--steps", options.steps, "Steps measured, for every scene")
         ->check(CLI::Range(1, 1'000'000));

@@ -34,21 +34,23 @@ std::string length(float value) {
 }
 
 struct Row {
-    std::array<std::string, 10> cells;
+    std::array<std::string, 11> cells;
 };
 
-constexpr std::array<const char*, 10> kHeader{
-    "scene",       "bodies",     "engine",    "steps",       "ms/step",
+constexpr std::array<const char*, 11> kHeader{
+    "scene",       "bodies",     "engine",    "steps",       "ms/step", "speed-up",
     "jostle/peer", "bytes/body", "top drift", "max overlap", "escaped"};
 
 Row makeRow(std::span<const RunResult> all, const RunResult& r) {
     const std::optional<double> ratio = jostleRatio(all, r);
+    const std::optional<double> faster = speedUp(all, r);
     return {{
         r.caseName,
         std::to_string(r.bodies),
-        std::string(name(r.engine)),
+        label(r),
         std::to_string(r.warmupSteps) + "+" + std::to_string(r.measuredSteps),
         milliseconds(r.msPerStep),
+        faster ? format("%.2f", *faster) : "-",
         ratio ? format("%.2f", *ratio) : "-",
         format("%.0f", r.bytesPerBody),
         r.quality.topDrift ? length(*r.quality.topDrift) : "-",
@@ -64,7 +66,17 @@ std::optional<double> jostleRatio(std::span<const RunResult> all, const RunResul
         return std::nullopt;
     for (const RunResult& other : all)
         if (other.caseName == result.caseName && other.engine == EngineKind::Jostle &&
-            result.msPerStep > 0.0)
+            other.workers == 1 && result.msPerStep > 0.0)
+            return other.msPerStep / result.msPerStep;
+    return std::nullopt;
+}
+
+std::optional<double> speedUp(std::span<const RunResult> all, const RunResult& result) {
+    if (result.workers == 1)
+        return std::nullopt;
+    for (const RunResult& other : all)
+        if (other.caseName == result.caseName && other.engine == result.engine &&
+            other.workers == 1 && result.msPerStep > 0.0)
             return other.msPerStep / result.msPerStep;
     return std::nullopt;
 }
@@ -124,14 +136,18 @@ bool writeCsv(const std::string& path, std::span<const RunResult> results) {
     if (!file)
         return false;
     std::FILE* out = file.get();
-    std::fputs("scene,family,size,engine,bodies,warmup_steps,measured_steps,ms_per_step,"
-               "jostle_over_engine,bytes_per_body,top_drift,max_overlap,escaped\n",
+    std::fputs("scene,family,size,engine,workers,bodies,warmup_steps,measured_steps,ms_per_step,"
+               "speed_up,jostle_over_engine,bytes_per_body,top_drift,max_overlap,escaped\n",
                out);
     for (const RunResult& r : results) {
         const std::optional<double> ratio = jostleRatio(results, r);
-        std::fprintf(out, "%s,%s,%d,%.*s,%d,%d,%d,%.6f,", r.caseName.c_str(), r.family.c_str(),
+        const std::optional<double> faster = speedUp(results, r);
+        std::fprintf(out, "%s,%s,%d,%.*s,%d,%d,%d,%d,%.6f,", r.caseName.c_str(), r.family.c_str(),
                      r.size, static_cast<int>(name(r.engine).size()), name(r.engine).data(),
-                     r.bodies, r.warmupSteps, r.measuredSteps, r.msPerStep);
+                     r.workers, r.bodies, r.warmupSteps, r.measuredSteps, r.msPerStep);
+        if (faster)
+            std::fprintf(out, "%.6f", *faster);
+        std::fputc(',', out);
         if (ratio)
             std::fprintf(out, "%.6f", *ratio);
         std::fprintf(out, ",%.1f,", r.bytesPerBody);

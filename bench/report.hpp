@@ -14,6 +14,9 @@ namespace jostle::bench {
 /// below 1, jostle is faster. Empty for jostle's own rows or when jostle did not run.
 std::optional<double> jostleRatio(std::span<const RunResult> all, const RunResult& result);
 
+/// For a result on several workers: the same engine's time on one worker over this one's.
+std::optional<double> speedUp(std::span<const RunResult> all, const RunResult& result);
+
 /// The table, one row per result, in the order given. Markdown: a GitHub table.
 void printTable(std::FILE* out, std::span<const RunResult> results, bool markdown);
 

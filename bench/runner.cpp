@@ -5,16 +5,26 @@
 
 #include <algorithm>
 #include <chrono>
+#include <string>
 #include <vector>
 
 namespace jostle::bench {
 
-RunResult run(const Case& c, const Scene& scene, EngineKind engine, const RunLimits& limits) {
+std::string label(const RunResult& result) {
+    std::string text(name(result.engine));
+    if (result.workers > 1)
+        text += " x" + std::to_string(result.workers);
+    return text;
+}
+
+RunResult run(const Case& c, const Scene& scene, EngineKind engine, int workers,
+              const RunLimits& limits) {
     RunResult result;
     result.caseName = c.name;
     result.family = c.family;
     result.size = c.size;
     result.engine = engine;
+    result.workers = workers;
     result.bodies = static_cast<int>(scene.bodies.size());
     result.warmupSteps = limits.warmup;
 
@@ -25,7 +35,7 @@ RunResult run(const Case& c, const Scene& scene, EngineKind engine, const RunLim
     std::vector<Vec2> positions(scene.bodies.size());
 
     const std::size_t heapBefore = heapInUse();
-    std::unique_ptr<Engine> world = makeEngine(engine, scene);
+    std::unique_ptr<Engine> world = makeEngine(engine, scene, workers);
     for (int i = 0; i < limits.warmup; ++i)
         world->step(scene.dt);
     // After the warm-up, so the contact and pair storage of a busy world is counted.

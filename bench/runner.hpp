@@ -24,6 +24,7 @@ struct RunResult {
     std::string family;
     int size = 0;
     EngineKind engine = EngineKind::Jostle;
+    int workers = 1; ///< threads the engine stepped on
     int bodies = 0;
     int warmupSteps = 0;
     int measuredSteps = 0;
@@ -32,8 +33,13 @@ struct RunResult {
     shared::Quality quality;
 };
 
-/// Builds the case's scene in `engine`, steps it `warmup` times, reads the heap, measures
-/// up to `steps` steps, and reads the final positions for the quality figures.
-RunResult run(const Case& c, const Scene& scene, EngineKind engine, const RunLimits& limits);
+/// Builds the case's scene in `engine` on `workers` threads, steps it `warmup` times, reads
+/// the heap, measures up to `steps` steps, and reads the final positions for the quality
+/// figures.
+RunResult run(const Case& c, const Scene& scene, EngineKind engine, int workers,
+              const RunLimits& limits);
+
+/// The engine's name, and its workers beyond one: "jostle", "jostle x2".
+std::string label(const RunResult& result);
 
 } // namespace jostle::bench

@@ -10,13 +10,16 @@ set logscale xy
 set grid
 set xlabel "bodies"
 set ylabel "ms per step (median)"
-set multiplot layout 2,2 title "jostle, Box2D 2.4.1 and Chipmunk 7, single thread (docs/benchmarks.md)"
-# Column 2: family, 4: engine, 5: bodies, 8: ms per step. Other rows plot nothing.
-pick(family, engine) = (strcol(2) eq family && strcol(4) eq engine) ? $8 : NaN
+set multiplot layout 2,2 title "jostle on 1 and 2 threads, Box2D 2.4.1 and Chipmunk 7 on one (docs/benchmarks.md)"
+# Column 2: family, 4: engine, 5: workers, 6: bodies, 9: ms per step. Other rows plot
+# nothing.
+pick(family, engine, workers) = \
+  (strcol(2) eq family && strcol(4) eq engine && $5 == workers) ? $9 : NaN
 do for [family in "pyramid rain gas tilemap"] {
   set title family
-  plot csv using 5:(pick(family, "jostle")) skip 1 with linespoints lw 2 pt 7 title "jostle", \
-       csv using 5:(pick(family, "box2d")) skip 1 with linespoints lw 2 pt 5 title "Box2D", \
-       csv using 5:(pick(family, "chipmunk")) skip 1 with linespoints lw 2 pt 9 title "Chipmunk"
+  plot csv using 6:(pick(family, "jostle", 1)) skip 1 with linespoints lw 2 pt 7 title "jostle", \
+       csv using 6:(pick(family, "jostle", 2)) skip 1 with linespoints lw 2 pt 6 title "jostle, 2 threads", \
+       csv using 6:(pick(family, "box2d", 1)) skip 1 with linespoints lw 2 pt 5 title "Box2D", \
+       csv using 6:(pick(family, "chipmunk", 1)) skip 1 with linespoints lw 2 pt 9 title "Chipmunk"
 }
 unset multiplot
