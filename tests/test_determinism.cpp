@@ -239,8 +239,9 @@ BusyRun runBusyWorld(Solver solver, int steps, TaskSystem tasks = {}, std::uint3
 // Hills of 45° and 2:1 ramp tiles, a one-sided segment, a kinematic ramp going up and
 // down, a character with snapDown walking to and fro, and circles, capsules and rounded
 // boxes raining in: the shapes of docs/slopes-and-shapes.md, for `steps` steps.
-std::uint64_t runSlopesWorld(int steps) {
-    World world(WorldDef{.gravity = {0.0f, 600.0f}, .maxVelocity = 2000.0f});
+std::uint64_t runSlopesWorld(int steps, TaskSystem tasks = {}, std::uint32_t blockSize = 0) {
+    World world(WorldDef{.gravity = {0.0f, 600.0f}, .maxVelocity = 2000.0f, .tasks = tasks});
+    WorldAccess::state(world).tasks->setBlockSizeForTesting(blockSize);
     Lcg random;
     createTileMap(world, {.x = -400,
                           .tile = 20,
@@ -393,10 +394,14 @@ void cutIntoBlocksOf(World& world, std::uint32_t items) {
 }
 
 TEST(Threads, EveryWorkerCountGivesTheRecordedHash) {
-    for (int workers : {2, 3, 4, 8})
+    for (int workers : {2, 3, 4, 8}) {
         EXPECT_EQ(runBusyWorld(Solver::Physical, kSteps, {.workers = workers}, 7).hash,
                   kPhysicalHash)
             << workers << " workers";
+        // No pre-solve callback there: contacts are built in parallel too.
+        EXPECT_EQ(runSlopesWorld(1200, {.workers = workers}, 5), kSlopesHash)
+            << workers << " workers";
+    }
 }
 
 TEST(Threads, LockstepNamesTheFirstStepAndBodyThatDiffer) {

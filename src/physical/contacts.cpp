@@ -265,91 +265,168 @@ Contact contactAlong(const StepContext& step, const Body& a, const Body& b, Vec2
     return contactOf(step, a, b, normal);
 }
 
-void buildContacts(StepContext& step) {
+namespace {
+
+/// What a pair makes before the pre-solve has its say.
+struct PairOutcome {
+    enum Kind : std::uint8_t { kNothing, kSensor, kContact } kind = kNothing;
+    Vec2 normal; ///< of a contact, from b towards a
+    float gap = 0.0f;
+    float bounce = 0.0f;
+};
+
+/// The contact of `pair`, all but its solver bodies, warm start and target (finishContact),
+/// reading the world and writing nothing: pairs may be examined on any thread.
+PairOutcome examinePair(const StepContext& step, const BodyPair& pair, Contact& c) {
+    const WorldState& w = step.world;
+    if (!w.isLive(pair.a) || !w.isLive(pair.b))
+        return {}; // destroyed by a callback earlier in the step
+    const Body& a = w.slots[pair.a];
+    const Body& b = w.slots[pair.b];
+    if (!canCollide(a, b))
+        return {};
+    if (a.sensor || b.sensor) {
+        // Overlap is judged where the step leaves them (report.cpp).
+        return {a.sensor != b.sensor ? PairOutcome::kSensor : PairOutcome::kNothing};
+    }
+    PairOutcome outcome{PairOutcome::kContact};
+    if (a.isBox() && b.isBox()) {
+        const std::optional<Facing> facing = chooseNormal(step, a, b);
+        if (!facing)
+            return {};
+        outcome.normal = facing->normal;
+        outcome.gap = facing->gap;
+        const float skin = facing->skin;
+        // The normal points from b towards a; a pair touching within the skin was on
+        // the platform's side when the step began.
+        if ((a.isOneWay() && !a.blocks(-outcome.normal, outcome.gap >= -skin, b.dropThroughTime)) ||
+            (b.isOneWay() && !b.blocks(outcome.normal, outcome.gap >= -skin, a.dropThroughTime)))
+            return {};
+        c = contactOf(step, a, b, outcome.normal);
+    } else {
+        const std::optional<ShapedFacing> facing = chooseShapedNormal(step, pair.a, pair.b);
+        if (!facing)
+            return {};
+        outcome.normal = facing->normal;
+        outcome.gap = facing->gap;
+        c = shapedContactOf(step, a, b, *facing);
+    }
+    const float approach = dot(a.velocity - b.velocity, outcome.normal);
+    c.approachSpeed = std::max(0.0f, -approach);
+    outcome.bounce = std::max(a.bounce, b.bounce);
+    return outcome;
+}
+
+/// Fills in the masses, the warm start and the target of a contact examinePair made;
+/// false if both bodies are infinitely heavy (a callback made them so).
+bool finishContact(const StepContext& step, Contact& c, const BodyPair& pair,
+                   const PairOutcome& outcome) {
+    c.invMassA = step.world.slots[pair.a].invMass;
+    c.invMassB = step.world.slots[pair.b].invMass;
+    const float invMassSum = c.invMassA + c.invMassB;
+    if (invMassSum <= 0.0f)
+        return false;
+    c.effectiveMass = 1.0f / invMassSum;
+    warmStart(step, c, pair.a, pair.b, outcome.normal);
+    setTarget(c, outcome.bounce, outcome.gap, step.dt);
+    return true;
+}
+
+/// Pairs per block of the parallel build.
+constexpr std::uint32_t kPairsPerBlock = 1024;
+
+/// Without a pre-solve callback: the pairs examined in blocks, each contact written at its
+/// pair's index, then packed in pair order with solver bodies given in that order.
+void buildInParallel(StepContext& step) {
+    WorldState& w = step.world;
+    const std::vector<BodyPair>& pairs = w.pairs;
+    std::vector<std::uint8_t>& made = step.scratch.contactsBuild.made;
+    made.resize(pairs.size());
+    step.contacts.resize(pairs.size());
+    w.tasks->forEachBlock(std::uint32_t(pairs.size()), kPairsPerBlock,
+                          [&](std::uint32_t begin, std::uint32_t end, std::uint32_t) {
+                              for (std::uint32_t k = begin; k < end; ++k) {
+                                  Contact& c = step.contacts[k];
+                                  c = Contact{};
+                                  const PairOutcome outcome = examinePair(step, pairs[k], c);
+                                  made[k] = outcome.kind;
+                                  if (outcome.kind == PairOutcome::kContact &&
+                                      !finishContact(step, c, pairs[k], outcome))
+                                      made[k] = PairOutcome::kNothing;
+                              }
+                          });
+    std::size_t kept = 0;
+    for (std::size_t k = 0; k < pairs.size(); ++k) {
+        const BodyPair& pair = pairs[k];
+        if (made[k] == PairOutcome::kSensor) {
+            const bool aIsSensor = w.slots[pair.a].sensor;
+            step.scratch.sensorPairs.push_back(aIsSensor ? pair : BodyPair{pair.b, pair.a});
+        } else if (made[k] == PairOutcome::kContact) {
+            Contact& c = step.contacts[kept++];
+            if (&c != &step.contacts[k])
+                c = step.contacts[k];
+            c.ia = step.solverBodyOf(pair.a);
+            c.ib = step.solverBodyOf(pair.b);
+        }
+    }
+    step.contacts.resize(kept);
+}
+
+/// With a pre-solve callback: pair by pair on the calling thread, the callback between
+/// examining a pair and finishing its contact. It may veto the contact, change its bounce
+/// and friction, and create and destroy bodies.
+void buildWithCallback(StepContext& step) {
     WorldState& w = step.world;
     std::vector<std::uint64_t>& vetoed = step.scratch.contactsBuild.vetoed;
-    w.physical.solverIndex.assign(w.slots.size(), StepContext::kNoSolverBody);
-    step.bodies.clear();
-    vetoed.clear();
-    step.contacts.clear();
-    step.contacts.reserve(w.pairs.size());
-    step.scratch.sensorPairs.clear();
     for (const BodyPair& pair : w.pairs) {
-        if (!w.isLive(pair.a) || !w.isLive(pair.b))
-            continue; // destroyed by a callback earlier in this loop
-        const Body& a = w.slots[pair.a];
-        const Body& b = w.slots[pair.b];
-        if (!canCollide(a, b))
-            continue;
-        if (a.sensor || b.sensor) {
-            // Overlap is judged where the step leaves them (report.cpp).
-            if (a.sensor != b.sensor)
-                step.scratch.sensorPairs.push_back(a.sensor ? pair : BodyPair{pair.b, pair.a});
-            continue;
-        }
-        Vec2 normal;
-        float gap = 0.0f;
         Contact c;
-        if (a.isBox() && b.isBox()) {
-            const std::optional<Facing> facing = chooseNormal(step, a, b);
-            if (!facing)
-                continue;
-            normal = facing->normal;
-            gap = facing->gap;
-            const float skin = facing->skin;
-            // The normal points from b towards a; a pair touching within the skin was on
-            // the platform's side when the step began.
-            if ((a.isOneWay() && !a.blocks(-normal, gap >= -skin, b.dropThroughTime)) ||
-                (b.isOneWay() && !b.blocks(normal, gap >= -skin, a.dropThroughTime)))
-                continue;
-            c = contactOf(step, a, b, normal);
-        } else {
-            const std::optional<ShapedFacing> facing = chooseShapedNormal(step, pair.a, pair.b);
-            if (!facing)
-                continue;
-            normal = facing->normal;
-            gap = facing->gap;
-            c = shapedContactOf(step, a, b, *facing);
+        PairOutcome outcome = examinePair(step, pair, c);
+        if (outcome.kind == PairOutcome::kSensor) {
+            const bool aIsSensor = w.slots[pair.a].sensor;
+            step.scratch.sensorPairs.push_back(aIsSensor ? pair : BodyPair{pair.b, pair.a});
         }
-
-        const float approach = dot(a.velocity - b.velocity, normal);
-        c.approachSpeed = std::max(0.0f, -approach);
-        float bounce = std::max(a.bounce, b.bounce);
-        if (w.preSolve) {
-            Collision info{w.idOf(pair.a), w.idOf(pair.b), normal, -gap, bounce, c.friction};
-            const bool keep = w.preSolve(info);
-            if (!keep)
-                vetoed.push_back(pairKey(pair.a, pair.b));
-            if (!keep || !w.isLive(pair.a) || !w.isLive(pair.b))
-                continue;
-            if (!std::isnan(info.bounce))
-                bounce = std::clamp(info.bounce, 0.0f, 1.0f);
-            if (!std::isnan(info.friction))
-                c.friction = std::clamp(info.friction, 0.0f, 1.0f);
-        }
-        // The callback may have created bodies: fetch again.
-        const Body& ba = w.slots[pair.a];
-        const Body& bb = w.slots[pair.b];
-        c.invMassA = ba.invMass;
-        c.invMassB = bb.invMass;
+        if (outcome.kind != PairOutcome::kContact)
+            continue;
+        Collision info{w.idOf(pair.a), w.idOf(pair.b), outcome.normal,
+                       -outcome.gap,   outcome.bounce, c.friction};
+        const bool keep = w.preSolve(info);
+        if (!keep)
+            vetoed.push_back(pairKey(pair.a, pair.b));
+        if (!keep || !w.isLive(pair.a) || !w.isLive(pair.b))
+            continue;
+        if (!std::isnan(info.bounce))
+            outcome.bounce = std::clamp(info.bounce, 0.0f, 1.0f);
+        if (!std::isnan(info.friction))
+            c.friction = std::clamp(info.friction, 0.0f, 1.0f);
+        // The callback may have created bodies: finishContact reads them afresh.
         c.ia = step.solverBodyOf(pair.a);
         c.ib = step.solverBodyOf(pair.b);
-        const float invMassSum = c.invMassA + c.invMassB;
-        if (invMassSum <= 0.0f)
-            continue; // the callback made both infinitely heavy
-        c.effectiveMass = 1.0f / invMassSum;
-        warmStart(step, c, pair.a, pair.b, normal);
-        setTarget(c, bounce, gap, step.dt);
-        step.contacts.push_back(c);
+        if (finishContact(step, c, pair, outcome))
+            step.contacts.push_back(c);
     }
     std::sort(vetoed.begin(), vetoed.end());
     // A callback may have destroyed a body after its contact was made: the body is left
     // out of the rest of the step (no impulses, no events, no cached contact whose
     // generations would be those of the slot's next body).
+    std::erase_if(step.contacts, [&](const Contact& c) {
+        return !w.isLive(step.bodies[c.ia].slot) || !w.isLive(step.bodies[c.ib].slot);
+    });
+}
+
+} // namespace
+
+void buildContacts(StepContext& step) {
+    WorldState& w = step.world;
+    w.physical.solverIndex.assign(w.slots.size(), StepContext::kNoSolverBody);
+    step.bodies.clear();
+    step.scratch.contactsBuild.vetoed.clear();
+    step.contacts.clear();
+    step.contacts.reserve(w.pairs.size());
+    step.scratch.sensorPairs.clear();
     if (w.preSolve)
-        std::erase_if(step.contacts, [&](const Contact& c) {
-            return !w.isLive(step.bodies[c.ia].slot) || !w.isLive(step.bodies[c.ib].slot);
-        });
+        buildWithCallback(step);
+    else
+        buildInParallel(step);
 }
 
 bool isVetoed(const StepContext& step, std::uint32_t slotA, std::uint32_t slotB) {

@@ -17,6 +17,7 @@ struct Body;
 /// What building contacts leaves for later stages.
 struct ContactsScratch {
     std::vector<std::uint64_t> vetoed; ///< pairs the pre-solve vetoed this step (sorted keys)
+    std::vector<std::uint8_t> made;    ///< what each pair made, when built in parallel
 };
 
 /// Fills step.contacts, and step.scratch.sensorPairs with the pairs of a sensor and a
