@@ -40,7 +40,16 @@ public:
 
     /// Calls visit(i, j) for every pair of boxes that overlap or touch, each pair once,
     /// in a fixed order (j may be smaller or larger than i).
-    template <class Visit> void forEachPair(Visit&& visit) const;
+    template <class Visit> void forEachPair(Visit&& visit) const {
+        forEachPairOf(0, pairItems(), visit);
+    }
+
+    /// forEachPair in pieces, for threads: the pairs are found item by item, 2 size()
+    /// items in all, and forEachPairOf(begin, end) gives those of items [begin, end) in
+    /// the order forEachPair gives them.
+    std::uint32_t pairItems() const { return 2 * std::uint32_t(boxes_.size()); }
+    template <class Visit>
+    void forEachPairOf(std::uint32_t begin, std::uint32_t end, Visit&& visit) const;
 
 private:
     static constexpr std::uint32_t kNone = UINT32_MAX;
@@ -98,9 +107,15 @@ private:
     /// of cells that may hold one, or at all of the level's boxes when that is fewer.
     template <class Visit> void visitLevel(int level, const Box& query, Visit&& visit) const;
 
-    /// Same-level pairs of a level: each box against the boxes of the cells of its window
-    /// that come after its own cell (and after it in its own cell).
-    template <class Visit> void pairsWithinLevel(int level, Visit&& visit) const;
+    /// Same-level pairs of the boxes at [from, to) of sorted_, all of one level: each box
+    /// against the boxes of the cells of its window that come after its own cell (and
+    /// after it in its own cell).
+    template <class Visit>
+    void pairsWithinLevel(int level, std::uint32_t from, std::uint32_t to, Visit&& visit) const;
+    /// Pairs of the boxes at [from, to) of sorted_, all of one level, with the boxes of
+    /// the coarser levels.
+    template <class Visit>
+    void pairsAcrossLevels(int level, std::uint32_t from, std::uint32_t to, Visit&& visit) const;
 
     std::vector<Box> boxes_;              ///< as given: bounds(i)
     std::vector<std::uint32_t> keyOfBox_; ///< build's scratch: each box's level, then key
@@ -180,9 +195,10 @@ void BoxGrid::forEachInRow(int levelIndex, std::int64_t y, std::int64_t x0, std:
     }
 }
 
-template <class Visit> void BoxGrid::pairsWithinLevel(int levelIndex, Visit&& visit) const {
-    const Level& level = levels_[levelIndex];
-    for (std::uint32_t k = level.begin; k < level.end; ++k) {
+template <class Visit>
+void BoxGrid::pairsWithinLevel(int levelIndex, std::uint32_t from, std::uint32_t to,
+                               Visit&& visit) const {
+    for (std::uint32_t k = from; k < to; ++k) {
         const std::uint32_t i = sorted_[k];
         const Box& box = sortedBoxes_[k];
         const Cell home = sortedCells_[k];
@@ -206,24 +222,40 @@ template <class Visit> void BoxGrid::query(const Box& query, Visit&& visit) cons
         visitLevel(__builtin_ctzll(used), query, visit);
 }
 
-template <class Visit> void BoxGrid::forEachPair(Visit&& visit) const {
-    // Within each level, in cell order.
-    for (std::uint64_t used = usedLevels_; used != 0; used &= used - 1)
-        pairsWithinLevel(__builtin_ctzll(used), visit);
-    // Across levels: the finer box looks into the coarser levels, so each pair is found
-    // once.
-    for (std::uint64_t finer = usedLevels_; finer != 0; finer &= finer - 1) {
-        const int level = __builtin_ctzll(finer);
-        const std::uint64_t coarser =
-            level + 1 < kLevels ? usedLevels_ >> (level + 1) << (level + 1) : 0;
-        if (coarser == 0)
-            break;
-        for (std::uint32_t k = levels_[level].begin; k < levels_[level].end; ++k) {
-            const std::uint32_t i = sorted_[k];
-            for (std::uint64_t used = coarser; used != 0; used &= used - 1)
-                visitLevel(__builtin_ctzll(used), sortedBoxes_[k],
-                           [&](std::uint32_t j) { visit(i, j); });
-        }
+template <class Visit>
+void BoxGrid::pairsAcrossLevels(int level, std::uint32_t from, std::uint32_t to,
+                                Visit&& visit) const {
+    // The finer box looks into the coarser levels, so each pair is found once.
+    const std::uint64_t coarser =
+        level + 1 < kLevels ? usedLevels_ >> (level + 1) << (level + 1) : 0;
+    if (coarser == 0)
+        return;
+    for (std::uint32_t k = from; k < to; ++k) {
+        const std::uint32_t i = sorted_[k];
+        for (std::uint64_t used = coarser; used != 0; used &= used - 1)
+            visitLevel(__builtin_ctzll(used), sortedBoxes_[k],
+                       [&](std::uint32_t j) { visit(i, j); });
+    }
+}
+
+template <class Visit>
+void BoxGrid::forEachPairOf(std::uint32_t begin, std::uint32_t end, Visit&& visit) const {
+    // Item k < size(): the same-level pairs of sorted_[k]; item size() + k: its pairs
+    // across levels. Levels lie one after another in sorted_, finest first.
+    const auto n = std::uint32_t(boxes_.size());
+    for (std::uint64_t used = usedLevels_; used != 0; used &= used - 1) {
+        const int k = __builtin_ctzll(used);
+        const std::uint32_t from = std::max(begin, levels_[k].begin);
+        const std::uint32_t to = std::min(end, levels_[k].end);
+        if (from < to)
+            pairsWithinLevel(k, from, to, visit);
+    }
+    for (std::uint64_t used = usedLevels_; used != 0; used &= used - 1) {
+        const int k = __builtin_ctzll(used);
+        const std::uint32_t from = std::max(begin, n + levels_[k].begin);
+        const std::uint32_t to = std::min(end, n + levels_[k].end);
+        if (from < to)
+            pairsAcrossLevels(k, from - n, to - n, visit);
     }
 }
 

@@ -34,7 +34,12 @@ Box reach(const Body& body, float dt) {
     return {body.position - body.half - motion, body.position + body.half + motion};
 }
 
-/// Collects pairs, or, if it meets sleeping bodies, the islands to wake first.
+/// Grid items (BoxGrid::pairItems) and moving bodies per block of the pair search.
+constexpr std::uint32_t kItemsPerBlock = 1024;
+
+/// Collects pairs, or, if it meets sleeping bodies, the islands to wake first. The grids
+/// are searched in blocks, on any thread, each block keeping what it found; the budget is
+/// then spent in block order on the calling thread, as one pass in order would spend it.
 class PairFinder {
 public:
     PairFinder(WorldState& world, float dt, std::vector<BodyPair>& pairs)
@@ -47,49 +52,26 @@ public:
         w_.pairsLeftOut = 0;
         refreshRestingGrid(w_);
         buildMovingGrid();
+        findMovingPairs();
+        findRestingPairs();
         std::vector<std::uint32_t> toWake;
-        // The moving grid holds its bodies in creation order: the smaller index is `a`.
-        std::vector<std::uint32_t>& taken = w_.pairsTaken;
-        taken.assign(w_.movingSlots.size(), 0);
-        w_.movingGrid.forEachPair([&](std::uint32_t i, std::uint32_t j) {
-            const std::uint32_t a = w_.movingSlots[std::min(i, j)];
-            const std::uint32_t b = w_.movingSlots[std::max(i, j)];
-            if (w_.movingDynamic[i] || w_.movingDynamic[j] || oneIsSensor(a, b)) {
-                if (withinBudget(i, j))
-                    pairs_.push_back({a, b});
-                else
-                    ++w_.pairsLeftOut;
-            }
+        w_.restingFound.forEachInOrder([&](const Found& found) {
+            if (found.wake)
+                toWake.push_back(found.slot);
+            else if (found.slot == kLeftOut)
+                ++w_.pairsLeftOut;
+            else
+                add(w_.movingSlots[found.moving], found.slot);
         });
-        // Resting bodies have a budget of their own: a crowd never crowds out the floor.
-        taken.assign(w_.movingSlots.size(), 0);
-        for (std::uint32_t i = 0; i < w_.movingSlots.size(); ++i) {
-            const std::uint32_t a = w_.movingSlots[i];
-            const Body& body = w_.slots[a];
-            // A kinematic body at rest wakes nobody, and meets only sensors (a character
-            // moved by setPosition picks up a coin).
-            const bool moving = body.velocity.x != 0.0f || body.velocity.y != 0.0f;
-            w_.restingGrid.query(w_.movingGrid.bounds(i), [&](std::uint32_t k) {
-                const std::uint32_t b = w_.restingSlots[k];
-                if (w_.slots[b].asleep) {
-                    if (body.isDynamic() || moving)
-                        toWake.push_back(b);
-                } else if (body.isDynamic() || oneIsSensor(a, b)) {
-                    if (taken[i] < budget_) {
-                        ++taken[i];
-                        add(a, b);
-                    } else {
-                        ++w_.pairsLeftOut;
-                    }
-                }
-            });
-        }
         for (std::uint32_t slot : toWake)
             wakeIsland(w_, slot);
         return toWake.empty();
     }
 
 private:
+    static constexpr std::uint32_t kLeftOut = UINT32_MAX;
+    using Found = WorldState::RestingFind;
+
     void buildMovingGrid() {
         w_.movingSlots.clear();
         w_.movingDynamic.clear();
@@ -104,6 +86,61 @@ private:
             }
         }
         w_.movingGrid.build(bounds_);
+    }
+
+    /// Pairs of moving bodies: found in blocks, then kept within the budget in order.
+    void findMovingPairs() {
+        const BoxGrid& grid = w_.movingGrid;
+        PerBlock<std::pair<std::uint32_t, std::uint32_t>>& found = w_.movingFound;
+        found.reset(w_.tasks->blocksOf(grid.pairItems(), kItemsPerBlock));
+        w_.tasks->forEachBlock(grid.pairItems(), kItemsPerBlock, [&](Block block) {
+            std::vector<std::pair<std::uint32_t, std::uint32_t>>& mine = found[block.index];
+            grid.forEachPairOf(block.begin, block.end, [&](std::uint32_t i, std::uint32_t j) {
+                const std::uint32_t a = w_.movingSlots[std::min(i, j)];
+                const std::uint32_t b = w_.movingSlots[std::max(i, j)];
+                if (w_.movingDynamic[i] || w_.movingDynamic[j] || oneIsSensor(a, b))
+                    mine.emplace_back(i, j);
+            });
+        });
+        // The moving grid holds its bodies in creation order: the smaller index is `a`.
+        w_.pairsTaken.assign(w_.movingSlots.size(), 0);
+        found.forEachInOrder([&](const std::pair<std::uint32_t, std::uint32_t>& pair) {
+            const auto [i, j] = pair;
+            if (withinBudget(i, j))
+                pairs_.push_back({w_.movingSlots[std::min(i, j)], w_.movingSlots[std::max(i, j)]});
+            else
+                ++w_.pairsLeftOut;
+        });
+    }
+
+    /// Moving bodies against resting ones. Resting bodies have a budget of their own (a
+    /// crowd never crowds out the floor), each moving body's its own: blocks of moving
+    /// bodies spend it themselves.
+    void findRestingPairs() {
+        const auto moving = std::uint32_t(w_.movingSlots.size());
+        PerBlock<Found>& found = w_.restingFound;
+        found.reset(w_.tasks->blocksOf(moving, kItemsPerBlock));
+        w_.tasks->forEachBlock(moving, kItemsPerBlock, [&](Block block) {
+            std::vector<Found>& mine = found[block.index];
+            for (std::uint32_t i = block.begin; i < block.end; ++i) {
+                const std::uint32_t a = w_.movingSlots[i];
+                const Body& body = w_.slots[a];
+                // A kinematic body at rest wakes nobody, and meets only sensors (a
+                // character moved by setPosition picks up a coin).
+                const bool moves = body.velocity.x != 0.0f || body.velocity.y != 0.0f;
+                std::uint32_t taken = 0;
+                w_.restingGrid.query(w_.movingGrid.bounds(i), [&](std::uint32_t k) {
+                    const std::uint32_t b = w_.restingSlots[k];
+                    if (w_.slots[b].asleep) {
+                        if (body.isDynamic() || moves)
+                            mine.push_back({i, b, true});
+                    } else if (body.isDynamic() || oneIsSensor(a, b)) {
+                        mine.push_back({i, taken < budget_ ? b : kLeftOut, false});
+                        taken += taken < budget_ ? 1u : 0u;
+                    }
+                });
+            }
+        });
     }
 
     /// Whether the moving bodies i and j may have one more pair: a pair counts against

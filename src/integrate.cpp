@@ -43,17 +43,15 @@ void applyForces(WorldState& world, float dt) {
 void integrateAwakeBodies(WorldState& world, float dt) {
     const std::span<const BodyId> bodies = world.order.live();
     // Each body on its own: any split gives the same result.
-    world.tasks->forEachBlock(std::uint32_t(bodies.size()), kBodiesPerBlock,
-                              [&](std::uint32_t begin, std::uint32_t end, std::uint32_t) {
-                                  for (std::uint32_t k = begin; k < end; ++k) {
-                                      Body& body = world.slots[bodies[k].index];
-                                      if (body.isDynamic() && !body.asleep) {
-                                          integrateVelocity(world.def, body, dt);
-                                          body.dropThroughTime =
-                                              std::max(0.0f, body.dropThroughTime - dt);
-                                      }
-                                  }
-                              });
+    world.tasks->forEachBlock(std::uint32_t(bodies.size()), kBodiesPerBlock, [&](Block block) {
+        for (std::uint32_t k = block.begin; k < block.end; ++k) {
+            Body& body = world.slots[bodies[k].index];
+            if (body.isDynamic() && !body.asleep) {
+                integrateVelocity(world.def, body, dt);
+                body.dropThroughTime = std::max(0.0f, body.dropThroughTime - dt);
+            }
+        }
+    });
 }
 
 bool stopAtTheEdge(Body& body) {

@@ -8,10 +8,41 @@
 
 #include <cstdint>
 #include <memory>
+#include <vector>
 
 namespace jostle {
 
 class ThreadPool; // tasks.cpp: jostle's own threads
+
+/// A block of a loop: its items [begin, end), the index-th block of the loop.
+struct Block {
+    std::uint32_t index, begin, end;
+};
+
+/// What each block of a loop gives, kept apart and read back in block order on the
+/// calling thread: the same whatever ran where. Reused from step to step.
+template <class T> class PerBlock {
+public:
+    /// Empties the lists of `blocks` blocks.
+    void reset(std::uint32_t blocks) {
+        if (lists_.size() < blocks)
+            lists_.resize(blocks);
+        for (std::uint32_t k = 0; k < blocks; ++k)
+            lists_[k].clear();
+        blocks_ = blocks;
+    }
+    std::vector<T>& operator[](std::uint32_t block) { return lists_[block]; }
+    /// Calls f(item) for every item, block after block.
+    template <class F> void forEachInOrder(F&& f) const {
+        for (std::uint32_t k = 0; k < blocks_; ++k)
+            for (const T& item : lists_[k])
+                f(item);
+    }
+
+private:
+    std::vector<std::vector<T>> lists_;
+    std::uint32_t blocks_ = 0;
+};
 
 /// Items per block of the loops over bodies: enough that a block costs far more than
 /// handing it to a thread.
@@ -32,8 +63,14 @@ public:
     /// cut small worlds into many blocks: results must not change.
     void setBlockSizeForTesting(std::uint32_t items) { testBlock_ = items; }
 
-    /// Calls run(begin, end, worker) for the items [0, count) in blocks of `block` items
-    /// (the last may be shorter), on the workers, and returns when all have run.
+    /// How many blocks forEachBlock cuts `count` items into, `block` a block.
+    std::uint32_t blocksOf(std::uint32_t count, std::uint32_t block) const {
+        const std::uint32_t size = testBlock_ != 0 ? testBlock_ : block;
+        return (count + size - 1) / size;
+    }
+
+    /// Calls run(Block) for the items [0, count) in blocks of `block` items (the last
+    /// may be shorter), on the workers, and returns when all have run.
     template <class Run> void forEachBlock(std::uint32_t count, std::uint32_t block, Run&& run);
 
 private:
@@ -51,24 +88,22 @@ void TaskRunner::forEachBlock(std::uint32_t count, std::uint32_t block, Run&& ru
         return;
     if (testBlock_ != 0)
         block = testBlock_;
-    if (workers_ == 1 || count <= block) {
-        for (std::uint32_t begin = 0; begin < count; begin += block)
-            run(begin, count - begin < block ? count : begin + block, 0u);
+    const std::uint32_t blocks = (count + block - 1) / block;
+    auto runBlock = [&](std::uint32_t b) {
+        const std::uint32_t begin = b * block;
+        run(Block{b, begin, count - begin < block ? count : begin + block});
+    };
+    if (workers_ == 1 || blocks == 1) {
+        for (std::uint32_t b = 0; b < blocks; ++b)
+            runBlock(b);
         return;
     }
-    struct Context {
-        Run* run;
-        std::uint32_t count, block;
-    } context{&run, count, block};
-    const TaskFn task = [](std::uint32_t first, std::uint32_t last, std::uint32_t worker,
-                           void* data) {
-        const Context& c = *static_cast<Context*>(data);
-        for (std::uint32_t b = first; b < last; ++b) {
-            const std::uint32_t begin = b * c.block;
-            (*c.run)(begin, c.count - begin < c.block ? c.count : begin + c.block, worker);
-        }
+    const TaskFn task = [](std::uint32_t first, std::uint32_t last, std::uint32_t, void* data) {
+        auto& each = *static_cast<decltype(runBlock)*>(data);
+        for (std::uint32_t b = first; b < last; ++b)
+            each(b);
     };
-    dispatch(task, (count + block - 1) / block, &context);
+    dispatch(task, blocks, &runBlock);
 }
 
 } // namespace jostle

@@ -184,6 +184,15 @@ struct WorldState {
     BoxGrid movingGrid;
     std::vector<std::uint32_t> movingSlots;  ///< grid index -> slot, in creation order
     std::vector<std::uint8_t> movingDynamic; ///< grid index -> is the body dynamic
+    /// What each block of the pair search found (broadphase.cpp): pairs of moving grid
+    /// indices, and resting bodies met by moving ones.
+    PerBlock<std::pair<std::uint32_t, std::uint32_t>> movingFound;
+    struct RestingFind {
+        std::uint32_t moving; ///< moving grid index
+        std::uint32_t slot;   ///< the resting body; UINT32_MAX: a pair left out
+        bool wake;            ///< asleep: its island wakes
+    };
+    PerBlock<RestingFind> restingFound;
 
     /// The threads a step may share its work with (jostle/tasks.hpp).
     std::unique_ptr<TaskRunner> tasks;

@@ -101,6 +101,26 @@ TEST(BoxGrid, SameInputSameOrder) {
     EXPECT_EQ(run(), run());
 }
 
+// Threads search the grid in pieces (forEachPairOf): however the items are cut, the
+// pieces in order give forEachPair's pairs in forEachPair's order.
+TEST(BoxGrid, PiecesInOrderGiveEveryPairInTheSameOrder) {
+    const std::vector<Box> boxes = randomBoxes(11, 800, 20000.0f, {0, 0});
+    BoxGrid grid;
+    grid.build(boxes);
+    std::vector<Pair> whole;
+    grid.forEachPair([&](std::uint32_t i, std::uint32_t j) { whole.push_back({i, j}); });
+    ASSERT_GT(whole.size(), 100u);
+    for (std::uint32_t piece : {1u, 7u, 64u, 1000u, 5000u}) {
+        std::vector<Pair> pieces;
+        for (std::uint32_t begin = 0; begin < grid.pairItems(); begin += piece)
+            grid.forEachPairOf(begin, std::min(grid.pairItems(), begin + piece),
+                               [&](std::uint32_t i, std::uint32_t j) {
+                                   pieces.push_back({i, j});
+                               });
+        EXPECT_EQ(pieces, whole) << "pieces of " << piece << " items";
+    }
+}
+
 TEST(BoxGrid, HugeAndTinyAndFarAway) {
     const std::vector<Box> boxes = {
         {{-1e7f, -10}, {1e7f, 10}},           // a floor 20 million units long

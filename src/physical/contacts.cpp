@@ -343,18 +343,16 @@ void buildInParallel(StepContext& step) {
     std::vector<std::uint8_t>& made = step.scratch.contactsBuild.made;
     made.resize(pairs.size());
     step.contacts.resize(pairs.size());
-    w.tasks->forEachBlock(std::uint32_t(pairs.size()), kPairsPerBlock,
-                          [&](std::uint32_t begin, std::uint32_t end, std::uint32_t) {
-                              for (std::uint32_t k = begin; k < end; ++k) {
-                                  Contact& c = step.contacts[k];
-                                  c = Contact{};
-                                  const PairOutcome outcome = examinePair(step, pairs[k], c);
-                                  made[k] = outcome.kind;
-                                  if (outcome.kind == PairOutcome::kContact &&
-                                      !finishContact(step, c, pairs[k], outcome))
-                                      made[k] = PairOutcome::kNothing;
-                              }
-                          });
+    w.tasks->forEachBlock(std::uint32_t(pairs.size()), kPairsPerBlock, [&](Block block) {
+        for (std::uint32_t k = block.begin; k < block.end; ++k) {
+            Contact& c = step.contacts[k];
+            c = Contact{};
+            const PairOutcome outcome = examinePair(step, pairs[k], c);
+            made[k] = outcome.kind;
+            if (outcome.kind == PairOutcome::kContact && !finishContact(step, c, pairs[k], outcome))
+                made[k] = PairOutcome::kNothing;
+        }
+    });
     std::size_t kept = 0;
     for (std::size_t k = 0; k < pairs.size(); ++k) {
         const BodyPair& pair = pairs[k];
