@@ -61,11 +61,14 @@ void integratePositions(StepContext& step) {
     // The bodies that were moving when the step began (a callback may have created others
     // since: they join next step).
     WorldState& w = step.world;
-    for (std::uint32_t slot : w.movingSlots) {
-        Body& body = w.slots[slot];
-        if (w.isLive(slot))
-            body.position += body.velocity * step.dt;
-    }
+    const auto count = std::uint32_t(w.movingSlots.size());
+    w.tasks->forEachBlock(count, kBodiesPerBlock, [&](Block block) {
+        for (std::uint32_t k = block.begin; k < block.end; ++k) {
+            const std::uint32_t slot = w.movingSlots[k];
+            if (w.isLive(slot))
+                w.slots[slot].position += w.slots[slot].velocity * step.dt;
+        }
+    });
 }
 
 void correctPositions(StepContext& step) {
