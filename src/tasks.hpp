@@ -28,19 +28,23 @@ public:
         if (lists_.size() < blocks)
             lists_.resize(blocks);
         for (std::uint32_t k = 0; k < blocks; ++k)
-            lists_[k].clear();
+            lists_[k].items.clear();
         blocks_ = blocks;
     }
-    std::vector<T>& operator[](std::uint32_t block) { return lists_[block]; }
+    std::vector<T>& operator[](std::uint32_t block) { return lists_[block].items; }
     /// Calls f(item) for every item, block after block.
     template <class F> void forEachInOrder(F&& f) const {
         for (std::uint32_t k = 0; k < blocks_; ++k)
-            for (const T& item : lists_[k])
+            for (const T& item : lists_[k].items)
                 f(item);
     }
 
 private:
-    std::vector<std::vector<T>> lists_;
+    /// A cache line each: two threads filling neighbouring lists never share one.
+    struct alignas(64) List {
+        std::vector<T> items;
+    };
+    std::vector<List> lists_;
     std::uint32_t blocks_ = 0;
 };
 
@@ -63,10 +67,13 @@ public:
     /// cut small worlds into many blocks: results must not change.
     void setBlockSizeForTesting(std::uint32_t items) { testBlock_ = items; }
 
+    /// The items of a block forEachBlock makes when asked for blocks of `block` items.
+    std::uint32_t blockSize(std::uint32_t block) const {
+        return testBlock_ != 0 ? testBlock_ : block;
+    }
     /// How many blocks forEachBlock cuts `count` items into, `block` a block.
     std::uint32_t blocksOf(std::uint32_t count, std::uint32_t block) const {
-        const std::uint32_t size = testBlock_ != 0 ? testBlock_ : block;
-        return (count + size - 1) / size;
+        return (count + blockSize(block) - 1) / blockSize(block);
     }
 
     /// Calls run(Block) for the items [0, count) in blocks of `block` items (the last

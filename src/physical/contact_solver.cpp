@@ -12,10 +12,13 @@ namespace jostle {
 
 namespace {
 
-/// Applies `impulse` to both bodies of `c` along `axis`.
+/// Applies `impulse` to both bodies of `c` along `axis`, as step_context.hpp's
+/// applyImpulse: an infinitely heavy body is left alone.
 void applyImpulse(StepContext& step, const Contact& c, int axis, float impulse) {
-    step.bodies[c.ia].velocity[axis] += impulse * c.invMassA;
-    step.bodies[c.ib].velocity[axis] -= impulse * c.invMassB;
+    if (c.invMassA > 0.0f)
+        step.bodies[c.ia].velocity[axis] += impulse * c.invMassA;
+    if (c.invMassB > 0.0f)
+        step.bodies[c.ib].velocity[axis] -= impulse * c.invMassB;
 }
 
 float relativeSpeed(const StepContext& step, const Contact& c, int axis) {
@@ -27,15 +30,15 @@ float relativeSpeed(const StepContext& step, const Contact& c, Vec2 direction) {
 }
 
 void warmStart(StepContext& step) {
-    for (const Contact& c : step.contacts) {
+    forEachContact(step, [&](const Contact& c) {
         if (c.axis == Contact::kSloped) {
             applyImpulse(step, c, c.sloped, c.normalImpulse);
             applyImpulse(step, c, c.tangent(), c.tangentImpulse);
-            continue;
+            return;
         }
         applyImpulse(step, c, c.axis, c.sign * c.normalImpulse);
         applyImpulse(step, c, 1 - c.axis, c.tangentSign * c.tangentImpulse);
-    }
+    });
 }
 
 /// velocityPass for a contact along a slope or a rounded corner: the same, along its
@@ -63,10 +66,10 @@ void solveSloped(StepContext& step, Contact& c) {
 }
 
 void velocityPass(StepContext& step) {
-    for (Contact& c : step.contacts) {
+    forEachContact(step, [&](Contact& c) {
         if (c.axis == Contact::kSloped) {
             solveSloped(step, c);
-            continue;
+            return;
         }
         // Normal: push (never pull) until the pair stops approaching.
         {
@@ -86,7 +89,7 @@ void velocityPass(StepContext& step) {
             applyImpulse(step, c, tangent, c.tangentSign * impulse);
             c.tangentImpulse = std::clamp(c.tangentImpulse + impulse, -limit, limit);
         }
-    }
+    });
 }
 
 } // namespace
@@ -98,13 +101,13 @@ void solveVelocities(StepContext& step) {
 }
 
 void propagateShock(StepContext& step) {
-    for (Contact& c : step.contacts) {
+    forEachContact(step, [&](Contact& c) {
         if (c.supporter == 0)
-            continue;
+            return;
         // The supporter is held fixed: the other body takes the whole impulse.
         const float invMass = c.supporter == 1 ? c.invMassB : c.invMassA;
         if (invMass <= 0.0f)
-            continue;
+            return;
         if (c.axis == Contact::kSloped) {
             const float speed = relativeSpeed(step, c, c.sloped);
             const float impulse = std::max(-(speed - c.targetSpeed) / invMass, -c.normalImpulse);
@@ -113,7 +116,7 @@ void propagateShock(StepContext& step) {
             held.velocity[0] += sign * c.sloped.x * impulse * invMass;
             held.velocity[1] += sign * c.sloped.y * impulse * invMass;
             c.shockImpulse = impulse;
-            continue;
+            return;
         }
         const float speed = c.sign * relativeSpeed(step, c, c.axis);
         const float impulse = std::max(-(speed - c.targetSpeed) / invMass, -c.normalImpulse);
@@ -124,7 +127,7 @@ void propagateShock(StepContext& step) {
         // Kept apart from the impulse both bodies felt: the held body felt none of it, and
         // warm starting the next step with it would fling a much lighter held body.
         c.shockImpulse = impulse;
-    }
+    });
 }
 
 } // namespace jostle

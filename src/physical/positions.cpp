@@ -5,6 +5,7 @@
 #include "step_context.hpp"
 
 #include <algorithm>
+#include <atomic>
 
 namespace jostle {
 
@@ -12,8 +13,8 @@ namespace {
 
 /// One pass of position correction; false if it moved no body.
 bool correctionPass(StepContext& step) {
-    bool moved = false;
-    for (Contact& c : step.contacts) {
+    std::atomic<bool> moved{false};
+    forEachContact(step, [&](Contact& c) {
         SolverBody& a = step.bodies[c.ia];
         SolverBody& b = step.bodies[c.ib];
         const float overlap = step.overlapOf(c);
@@ -21,10 +22,10 @@ bool correctionPass(StepContext& step) {
         // went on through what it pushed): pushing "out" would push through.
         const bool sloped = c.axis == Contact::kSloped;
         if (!sloped && overlap > c.extent)
-            continue;
+            return;
         const float excess = overlap - c.slop;
         if (!(excess > 0.0f))
-            continue;
+            return;
         // An excess within float noise goes at once: a fraction of it would round to
         // nothing, and a pair pushed from both sides would stay beyond the slop for good.
         const float correction = excess <= step.noiseOf(c)
@@ -41,18 +42,26 @@ bool correctionPass(StepContext& step) {
                                                 : c.invMassB * c.effectiveMass;
         const float moveA = correction * shareA;
         const float moveB = correction * shareB;
+        // An infinitely heavy body never moves (and may be in several contacts at once on
+        // several threads: solver_layers.hpp).
         if (sloped) {
-            a.position[0] += c.sloped.x * moveA;
-            a.position[1] += c.sloped.y * moveA;
-            b.position[0] -= c.sloped.x * moveB;
-            b.position[1] -= c.sloped.y * moveB;
+            if (c.invMassA > 0.0f) {
+                a.position[0] += c.sloped.x * moveA;
+                a.position[1] += c.sloped.y * moveA;
+            }
+            if (c.invMassB > 0.0f) {
+                b.position[0] -= c.sloped.x * moveB;
+                b.position[1] -= c.sloped.y * moveB;
+            }
         } else {
-            a.position[c.axis] += c.sign * moveA;
-            b.position[c.axis] -= c.sign * moveB;
+            if (c.invMassA > 0.0f)
+                a.position[c.axis] += c.sign * moveA;
+            if (c.invMassB > 0.0f)
+                b.position[c.axis] -= c.sign * moveB;
         }
-        moved = true;
-    }
-    return moved;
+        moved.store(true, std::memory_order_relaxed);
+    });
+    return moved.load(std::memory_order_relaxed);
 }
 
 } // namespace

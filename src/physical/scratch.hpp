@@ -11,6 +11,7 @@
 #include "platforms.hpp"
 #include "report.hpp"
 #include "sleep.hpp"
+#include "solver_layers.hpp"
 #include "support.hpp"
 
 #include <cstdint>
@@ -31,6 +32,7 @@ struct PhysicalScratch {
     PlatformScratch platforms;
     SleepScratch sleep;
     ImpactsScratch impacts;
+    SolverLayers layers;
 };
 
 } // namespace jostle

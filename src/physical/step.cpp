@@ -15,6 +15,7 @@
 #include "report.hpp"
 #include "sleep.hpp"
 #include "snap.hpp"
+#include "solver_layers.hpp"
 #include "step_context.hpp"
 #include "support.hpp"
 
@@ -31,10 +32,12 @@ void stepPhysical(WorldState& world, float dt) {
     buildContacts(step);
     orderBySupport(step);
     resolveImpacts(step);
+    layerContacts(step);
     solveVelocities(step);
     propagateShock(step);
     sweepFastBodies(step);
     integratePositions(step);
+    layerContacts(step); // the sweep may have added contacts
     correctPositions(step);
     snapToGround(step);
     storeImpulses(step);

@@ -101,14 +101,39 @@ private:
 };
 
 /// Applies `impulse` to both bodies of `c` along `direction`: + to a, - to b, each by its
-/// inverse mass.
+/// inverse mass. An infinitely heavy body is left alone: several contacts may touch it at
+/// once on several threads (solver_layers.hpp).
 inline void applyImpulse(StepContext& step, const Contact& c, Vec2 direction, float impulse) {
-    SolverBody& a = step.bodies[c.ia];
-    SolverBody& b = step.bodies[c.ib];
-    a.velocity[0] += direction.x * impulse * c.invMassA;
-    a.velocity[1] += direction.y * impulse * c.invMassA;
-    b.velocity[0] -= direction.x * impulse * c.invMassB;
-    b.velocity[1] -= direction.y * impulse * c.invMassB;
+    if (c.invMassA > 0.0f) {
+        SolverBody& a = step.bodies[c.ia];
+        a.velocity[0] += direction.x * impulse * c.invMassA;
+        a.velocity[1] += direction.y * impulse * c.invMassA;
+    }
+    if (c.invMassB > 0.0f) {
+        SolverBody& b = step.bodies[c.ib];
+        b.velocity[0] -= direction.x * impulse * c.invMassB;
+        b.velocity[1] -= direction.y * impulse * c.invMassB;
+    }
+}
+
+/// Calls solve(contact) for every contact of the step: in contact order, or, where
+/// layerContacts made layers, layer by layer on the world's workers. The same bits either
+/// way, if solve writes only the contact and its bodies of finite mass.
+template <class Solve> void forEachContact(StepContext& step, Solve&& solve) {
+    const SolverLayers& layers = step.scratch.layers;
+    if (!layers.active) {
+        for (Contact& c : step.contacts)
+            solve(c);
+        return;
+    }
+    for (std::size_t layer = 0; layer + 1 < layers.starts.size(); ++layer) {
+        const std::uint32_t first = layers.starts[layer];
+        step.world.tasks->forEachBlock(layers.starts[layer + 1] - first, kContactsPerBlock,
+                                       [&](Block block) {
+                                           for (std::uint32_t k = block.begin; k < block.end; ++k)
+                                               solve(step.contacts[layers.order[first + k]]);
+                                       });
+    }
 }
 
 } // namespace jostle
