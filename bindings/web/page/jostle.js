@@ -27,7 +27,7 @@ class Jostle {
   /// A world from a scene: an object or a scene file's text. Its bodies, if any, are
   /// numbered from 0 in their order.
   createWorld(scene = {}) {
-    const text = typeof scene === "string" ? scene : JSON.stringify(scene);
+    const text = typeof scene === "string" ? scene : JSON.stringify({bodies: [], ...scene});
     const number = this.withText(text, (p) => this.module._jostle_game_world_create(p));
     this.check(number >= 0);
     return new JostleWorld(this, number);
