@@ -262,8 +262,16 @@ function frame(now) {
 // --- The check (?check): every sample's hash in the title ------------------------------
 
 function runCheck() {
-  const results = state.names.map((name, i) => `${name}=${state.page.check(i)}`);
+  const times = [];
+  const results = state.names.map((name, i) => {
+    const start = performance.now();
+    const hash = state.page.check(i);
+    times.push(`${name}=${(performance.now() - start).toFixed(1)}`);
+    return `${name}=${hash}`;
+  });
   const text = `jostle check ${results.join(" ")}`;
+  // The milliseconds of each check, beside jostle-web-sample-hashes --time's (docs/web.md).
+  document.getElementById("help").textContent = `ms ${times.join(" ")}`;
   document.getElementById("error").textContent = text;
   document.title = text;
 }

@@ -134,6 +134,29 @@ async function gameApi(page) {
   check(result.boxes === 2, "world.boxes() lists the floor and the crate");
 }
 
+/// A finger: in the tutorial, a short tap on empty space in the physical pane drops a
+/// box there (a finger has no right button).
+async function touch(page) {
+  await page.send("Emulation.setTouchEmulationEnabled", {enabled: true, maxTouchPoints: 1});
+  await page.goto(`${page.base}index.html?sample=1`);
+  await page.waitUntil("document.title === 'jostle: ready'");
+  const count = "jostlePage.state.page.bodies(1).length / 12";
+  const before = await page.evaluate(count);
+  // Above the scene, where nothing is: the point (400, 0) of the world.
+  const [x, y] = await page.evaluate(`(() => {
+    const [sx, sy] = jostlePage.state.views[1].toScreen(400, 0);
+    const r = document.getElementById("world").getBoundingClientRect();
+    return [r.left + sx, r.top + sy];
+  })()`);
+  await page.send("Input.dispatchTouchEvent", {type: "touchStart", touchPoints: [{x, y}]});
+  await page.send("Input.dispatchTouchEvent", {type: "touchEnd", touchPoints: []});
+  await page.waitUntil(`${count} === ${before + 1}`, 5);
+  const box = await page.evaluate(`(b => Array.from(b.subarray(b.length - 12, b.length - 8)))(jostlePage.state.page.bodies(1))`);
+  check(Math.abs(box[0] - 400) < 2 && box[1] < 60,
+        `a tap drops a box where the finger is: (${box[0].toFixed(1)}, ${box[1].toFixed(1)}), tapped at (400, 0)`);
+  await page.send("Emulation.setTouchEmulationEnabled", {enabled: false});
+}
+
 /// The tutorial's two models side by side with the debug view, for docs/web.png.
 async function tutorialPicture(page) {
   await page.goto(`${page.base}index.html?sample=1`);
@@ -157,6 +180,7 @@ async function main() {
     page.shots = shots;
     await platformer(page);
     await gameApi(page);
+    await touch(page);
     await tutorialPicture(page);
     check(page.errors.length === 0, `no errors in the page${page.errors.length ? ": " + page.errors.join("; ") : ""}`);
   } finally {
