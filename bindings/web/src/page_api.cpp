@@ -54,10 +54,13 @@ Page& page() {
     return instance;
 }
 
+void start(demo::Sample& sample);
+
+/// The sample shown; the first, started, if none was chosen yet.
 demo::Sample& current() {
     Page& p = page();
     if (p.current == nullptr)
-        p.current = p.samples.front().get();
+        start(*p.samples.front());
     return *p.current;
 }
 

@@ -5,8 +5,9 @@
 //   node browser_session.js <page dir> <screenshot dir>
 //
 // Expected values come from demo/sample_platformer.cpp: the floor's top is at y 512 (row
-// 16 of 32 px tiles), the player is 40 px tall, so it stands at y 492; it runs at 260
-// px/s and jumps 4 tiles (128 px) high.
+// 16 of 32 px tiles), the player is 22 x 40 px, so it stands at y 492; it runs at 260
+// px/s and jumps 4 tiles (128 px) high, which takes it above the jump-through platform
+// at (160, 400), 112 px wide and 10 high: a jump under it lands on it, at y 375.
 "use strict";
 
 const fs = require("node:fs");
@@ -17,6 +18,8 @@ const {serve} = require("./serve.js");
 const kStandingY = 512 - 20;
 const kRunSpeed = 260;
 const kJumpHeight = 128;
+const kPlatform = {x: 160, hw: 56, top: 395};
+const kPlayerHalf = {hw: 11, hh: 20};
 
 let failures = 0;
 function check(ok, what) {
@@ -55,14 +58,17 @@ async function platformer(page) {
   await page.press("Space");
   await page.waitUntil(`jostlePage.state.page.player().y < ${kStandingY - 20}`, 5);
   check(true, "space leaves the floor");
-  await page.waitUntil(`(p => p.floor && Math.abs(p.y - ${kStandingY}) < 0.5)(jostlePage.state.page.player())`, 5);
+  // Where it lands: on the platform if it jumped from under it, else on the floor.
+  const under = Math.abs(ran.x - kPlatform.x) < kPlatform.hw + kPlayerHalf.hw;
+  const landingY = under ? kPlatform.top - kPlayerHalf.hh : kStandingY;
+  await page.waitUntil(`(p => p.floor && Math.abs(p.y - ${landingY}) < 0.5)(jostlePage.state.page.player())`, 5);
   const top = await page.evaluate("lowest");
   const rise = kStandingY - top;
   check(rise > kJumpHeight * 0.8 && rise < kJumpHeight * 1.1,
         `the jump rises ${rise.toFixed(1)} px (${kJumpHeight})`);
   const landed = await player(page);
-  check(landed.floor && Math.abs(landed.y - kStandingY) < 0.5 && Math.abs(landed.vy) < 1,
-        `the player lands on the floor again (y ${landed.y.toFixed(2)})`);
+  check(landed.floor && Math.abs(landed.y - landingY) < 0.5 && Math.abs(landed.vy) < 1,
+        `the player lands on ${under ? "the jump-through platform" : "the floor again"} (y ${landed.y.toFixed(2)}, ${landingY})`);
   check(Math.abs(landed.x - ran.x) < 1, "a jump in place lands where it left");
 
   // Pause, so that the canvas and the module agree, then compare them.
