@@ -1,6 +1,7 @@
 // draw.js: a pane of a sample drawn on a Canvas 2D, as jostle-demo draws it
 // (demo/draw_pane.cpp): bodies in `jostle render`'s colours, labels, the title, and with
-// debug on, sleeping bodies dimmed, the sides each body touched, velocities and contacts.
+// debug on, sleeping bodies dimmed, the sides each body touched, velocities, contacts and
+// the picture of the broadphase grid (demo/grid_picture.hpp) under the bodies.
 "use strict";
 
 const Palette = {
@@ -17,6 +18,12 @@ const Palette = {
   velocity: [90, 220, 120],
   contact: [250, 250, 120],
   bullet: [255, 255, 255],
+  // The broadphase picture, under the bodies: cell lines just off the background, the
+  // main level's cells that hold boxes tinted, other levels' cells outlined, grown boxes.
+  gridLine: [40, 44, 58],
+  gridTint: "rgba(80, 190, 230, 0.16)",
+  gridOutline: [50, 110, 140],
+  grownBox: [110, 220, 250],
 };
 
 function rgb([r, g, b], percent = 100) {
@@ -140,25 +147,92 @@ function drawContacts(ctx, view, contacts) {
   }
 }
 
-function drawLegend(ctx, screen) {
+const kMinCellPixels = 6;   // closer lines would fill the pane rather than show cells
+const kMinGrowthPixels = 2; // a grown box is outlined only where its growth shows
+
+/// The broadphase picture, as demo/draw_grid_picture.cpp draws it: each box is filed in
+/// the cell of its level that holds its min corner, each cell drawn once.
+function drawGrid(ctx, view, grid) {
+  const cellSize = (level) => level >= 63 ? Infinity : grid.levelZero * 2 ** level;
+  const cells = new Map();
+  for (const box of grid.boxes) {
+    const cell = cellSize(box.level);
+    if (!isFinite(cell)) continue;
+    const x = Math.floor(box.minX / cell), y = Math.floor(box.minY / cell);
+    cells.set(`${box.level} ${x} ${y}`, [box.level, x, y, cell]);
+  }
+  const cellPath = ([, x, y, cell]) => {
+    const [sx, sy] = view.toScreen(x * cell, y * cell);
+    ctx.rect(sx, sy, cell * view.scale, cell * view.scale);
+  };
+  ctx.fillStyle = Palette.gridTint;
+  ctx.beginPath();
+  for (const cell of cells.values()) if (cell[0] === grid.mainLevel) cellPath(cell);
+  ctx.fill();
+  const main = cellSize(grid.mainLevel);
+  if (isFinite(main) && main * view.scale >= kMinCellPixels) {
+    const s = view.screen;
+    const [fromX, fromY] = view.toWorld(s.x, s.y);
+    const [toX, toY] = view.toWorld(s.x + s.w, s.y + s.h);
+    ctx.strokeStyle = rgb(Palette.gridLine);
+    ctx.beginPath();
+    for (let i = Math.floor(fromX / main); i <= Math.floor(toX / main) + 1; i++) {
+      const x = Math.round(view.toScreen(i * main, 0)[0]) + 0.5;
+      ctx.moveTo(x, s.y);
+      ctx.lineTo(x, s.y + s.h);
+    }
+    for (let i = Math.floor(fromY / main); i <= Math.floor(toY / main) + 1; i++) {
+      const y = Math.round(view.toScreen(0, i * main)[1]) + 0.5;
+      ctx.moveTo(s.x, y);
+      ctx.lineTo(s.x + s.w, y);
+    }
+    ctx.stroke();
+  }
+  ctx.strokeStyle = rgb(Palette.gridOutline);
+  ctx.beginPath();
+  for (const cell of cells.values()) if (cell[0] !== grid.mainLevel) cellPath(cell);
+  ctx.stroke();
+  ctx.strokeStyle = rgb(Palette.grownBox);
+  ctx.beginPath();
+  for (const box of grid.boxes) {
+    if (Math.max(box.growX, box.growY) * view.scale < kMinGrowthPixels) continue;
+    const [sx, sy] = view.toScreen(box.minX, box.minY);
+    ctx.rect(sx, sy, (box.maxX - box.minX) * view.scale, (box.maxY - box.minY) * view.scale);
+  }
+  ctx.stroke();
+}
+
+/// What the debug marks mean, each word in its mark's colour, and which grid the
+/// broadphase picture shows.
+function drawLegend(ctx, screen, grid) {
   const words = [[Palette.contact, "contacts"], [Palette.touching, "sides touched"],
                  [Palette.velocity, "velocity"],
-                 [Palette.types[2].map((c) => c * Palette.sleepingPercent / 100), "asleep"]];
+                 [Palette.types[2].map((c) => c * Palette.sleepingPercent / 100), "asleep"],
+                 [Palette.grownBox, "grown boxes"], [Palette.gridOutline, "grid cells"]];
   ctx.font = "12px ui-monospace, monospace";
   let x = screen.x + 10;
   const y = screen.y + kTitleHeight + 16;
-  const width = words.reduce((sum, [, w]) => sum + ctx.measureText(w).width + 14, 0);
-  ctx.fillStyle = rgb(Palette.background);
-  ctx.fillRect(x - 4, y - 12, width + 4, 17);
+  const plate = (text, at) => {
+    ctx.fillStyle = rgb(Palette.background);
+    ctx.fillRect(screen.x + 6, at - 12, ctx.measureText(text).width + 8, 17);
+  };
+  plate(words.map(([, w]) => w).join("  ") + "    ", y);
   for (const [colour, word] of words) {
     ctx.fillStyle = rgb(colour);
     ctx.fillText(word, x, y);
     x += ctx.measureText(word).width + 14;
   }
+  const main = grid.levelZero * 2 ** grid.mainLevel;
+  const caption = grid.boxes.length === 0 ? "broadphase: no boxes"
+    : `${grid.name} grid: ${grid.boxes.length} ${grid.boxes.length === 1 ? "box" : "boxes"}, ` +
+      `${grid.inMainLevel} in cells of ${Number(main.toPrecision(3))} (level ${grid.mainLevel})`;
+  plate(caption, y + 17);
+  ctx.fillStyle = rgb(Palette.textDim);
+  ctx.fillText(caption, screen.x + 10, y + 17);
 }
 
-/// Draws pane `index` of `page` (a JostlePage) through `view`.
-function drawPane(ctx, page, index, view, debug) {
+/// Draws pane `index` of `page` (a JostlePage) through `view`; steps are `dt` long.
+function drawPane(ctx, page, index, view, debug, dt) {
   const s = view.screen;
   ctx.save();
   ctx.beginPath();
@@ -171,6 +245,8 @@ function drawPane(ctx, page, index, view, debug) {
   ctx.rect(s.x, s.y + kTitleHeight, s.w, s.h - kTitleHeight);
   ctx.clip();
   ctx.lineWidth = 1;
+  const grid = debug ? page.grid(index, dt) : null;
+  if (debug) drawGrid(ctx, view, grid);
   const bodies = page.bodies(index);
   for (let i = 0; i < bodies.length; i += 12)
     drawBody(ctx, view, bodies.subarray(i, i + 12), debug);
@@ -188,7 +264,7 @@ function drawPane(ctx, page, index, view, debug) {
   ctx.fillStyle = rgb(Palette.textDim);
   ctx.fillText(page.paneTitle(index).toUpperCase(), s.x + 10, s.y + 20);
   line(ctx, [s.x, s.y + kTitleHeight - 0.5], [s.x + s.w, s.y + kTitleHeight - 0.5], Palette.border);
-  if (debug) drawLegend(ctx, s);
+  if (debug) drawLegend(ctx, s, grid);
   ctx.strokeStyle = rgb(Palette.border);
   ctx.strokeRect(s.x + 0.5, s.y + 0.5, s.w - 1, s.h - 1);
   ctx.restore();

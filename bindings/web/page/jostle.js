@@ -171,10 +171,26 @@ class JostlePage {
     return {minX, minY, maxX, maxY};
   }
 
+  bodyCount(pane) { return this.m._jostle_page_body_count(pane); }
   /// Every body of a pane: 12 floats each, as jostle_page_read_bodies (page_api.cpp).
   bodies(pane) { return this.read("_jostle_page_read_bodies", 12, pane); }
   /// The touching pairs: point x, y, normal x, y, extent (jostle_page_read_contacts).
   contacts(pane) { return this.read("_jostle_page_read_contacts", 5, pane); }
+
+  /// The picture of a pane's broadphase grid (demo/grid_picture.hpp) for steps of `dt`:
+  /// {name, mainLevel, levelZero, inMainLevel, boxes: [{minX, minY, maxX, maxY, growX,
+  /// growY, level}]}; level k's cells are levelZero × 2^k, the last level (63) infinite.
+  grid(pane, dt) {
+    const count = this.m._jostle_page_read_grid(pane, dt);
+    const data = this.jostle.floats(this.m._jostle_page_data(), 3 + 7 * count);
+    const boxes = [];
+    for (let i = 0; i < count; i++) {
+      const [minX, minY, maxX, maxY, growX, growY, level] = data.subarray(3 + 7 * i, 10 + 7 * i);
+      boxes.push({minX, minY, maxX, maxY, growX, growY, level});
+    }
+    return {name: this.jostle.text(this.m._jostle_page_grid_name()), mainLevel: data[0],
+            levelZero: data[1], inMainLevel: data[2], boxes};
+  }
 
   /// The labels of a pane: {text, x, y, hw, hh} of the body each is drawn above.
   labels(pane) {

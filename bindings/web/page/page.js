@@ -66,7 +66,7 @@ function showStats() {
   let bodies = 0;
   const models = [];
   for (let i = 0; i < state.page.paneCount(); i++) {
-    bodies += state.page.bodies(i).length / 12;
+    bodies += state.page.bodyCount(i);
     models.push(state.page.paneModel(i));
   }
   let text = `bodies ${bodies} · step ${state.stepMs.toFixed(2)} ms · model ${models.join(" | ")} · ${kStepHz} Hz`;
@@ -254,7 +254,7 @@ function frame(now) {
   ctx.fillStyle = "rgb(17, 18, 23)";
   ctx.fillRect(0, 0, canvas.clientWidth, canvas.clientHeight);
   for (let i = 0; i < state.views.length; i++)
-    drawPane(ctx, state.page, i, state.views[i], state.debug);
+    drawPane(ctx, state.page, i, state.views[i], state.debug, kDt);
   showStats();
   requestAnimationFrame(frame);
 }

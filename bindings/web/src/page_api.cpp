@@ -1,8 +1,10 @@
 // The page's side of the module: the demo's samples (demo/sample_*.cpp) behind a C
 // surface that bindings/web/page/jostle.js wraps. One page, one set of samples: the state
 // is a single Page. What is read back (bodies, contacts, labels) is written into one
-// float buffer and read from the module's memory, so that a frame costs a call per pane.
+// float buffer and read from the module's memory: a frame costs a few calls per pane,
+// not a call per body.
 #include "drawn_contact.hpp"
+#include "grid_picture.hpp"
 #include "mouse_drag.hpp"
 #include "sample_check.hpp"
 #include "sample_list.hpp"
@@ -183,6 +185,11 @@ EMSCRIPTEN_KEEPALIVE const char* jostle_page_pane_model(int index) {
     return pane != nullptr ? toString(pane->world->solver()) : "";
 }
 
+EMSCRIPTEN_KEEPALIVE int jostle_page_body_count(int index) {
+    const demo::Pane* pane = paneAt(index);
+    return pane != nullptr ? static_cast<int>(pane->world->bodyCount()) : 0;
+}
+
 /// The float buffer the last read wrote.
 EMSCRIPTEN_KEEPALIVE const float* jostle_page_data() {
     return page().out.data();
@@ -248,6 +255,32 @@ EMSCRIPTEN_KEEPALIVE int jostle_page_read_contacts(int index) {
         out.insert(out.end(), {contact.point.x, contact.point.y, direction.x, direction.y, along});
     });
     return static_cast<int>(out.size() / 5);
+}
+
+/// The picture of the pane's broadphase grid (demo/grid_picture.hpp), for steps of `dt`:
+/// 3 floats, its main level, level 0's cell size and the boxes in the main level; then
+/// 7 floats a box, its grid box min x, y, max x, y, its growth x, y and its level.
+/// Returns the number of boxes; the grid's name by jostle_page_grid_name.
+EMSCRIPTEN_KEEPALIVE int jostle_page_read_grid(int index, float dt) {
+    const demo::Pane* pane = paneAt(index);
+    if (pane == nullptr)
+        return 0;
+    const demo::GridPicture grid = demo::pictureGrid(*pane->world, dt);
+    std::vector<float>& out = page().out;
+    out = {static_cast<float>(grid.mainLevel), static_cast<float>(grid.levelZero),
+           static_cast<float>(grid.inMainLevel)};
+    for (const demo::GridBox& box : grid.boxes)
+        out.insert(out.end(),
+                   {box.bounds.min.x, box.bounds.min.y, box.bounds.max.x, box.bounds.max.y,
+                    box.growth.x, box.growth.y, static_cast<float>(box.level)});
+    page().text = grid.name;
+    return static_cast<int>(grid.boxes.size());
+}
+
+/// The name of the grid the last jostle_page_read_grid pictured ("moving", "resting",
+/// "dynamic", "static").
+EMSCRIPTEN_KEEPALIVE const char* jostle_page_grid_name() {
+    return page().text.c_str();
 }
 
 /// The labels of the pane whose bodies exist, 4 floats each: the body's centre x, y and
