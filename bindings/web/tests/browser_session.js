@@ -54,7 +54,7 @@ async function platformer(page) {
   check(ran.floor && Math.abs(ran.y - kStandingY) < 0.5, "running stays on the floor");
 
   // Space jumps: up by about 4 tiles, then down onto the floor again.
-  await page.evaluate("window.lowest = 1e9; (function watch() { const p = jostlePage.state.page.player(); lowest = Math.min(lowest, p.y); requestAnimationFrame(watch); })(); 0");
+  await page.evaluate("window.lowest = 1e9; (function watch() { const p = jostlePage.state.page.player(); if (p === null) return; lowest = Math.min(lowest, p.y); requestAnimationFrame(watch); })(); 0");
   await page.press("Space");
   await page.waitUntil(`jostlePage.state.page.player().y < ${kStandingY - 20}`, 5);
   check(true, "space leaves the floor");
@@ -140,6 +140,29 @@ async function gameApi(page) {
   check(result.boxes === 2, "world.boxes() lists the floor and the crate");
 }
 
+/// Keys 1 to 7 switch sample; a scene file loads into a pane of its own, and a bad one
+/// is refused with the loader's message, the current sample left as it was.
+async function samplesAndScenes(page) {
+  const name = "jostlePage.state.page.currentName()";
+  await page.press("Digit3");
+  check(await page.evaluate(name) === "pyramid", "key 3 opens the pyramid");
+  await page.press("Digit7");
+  check(await page.evaluate(name) === "slopes", "key 7 opens the slopes");
+  const result = await page.evaluate(`(() => {
+    const p = jostlePage.state.page;
+    let error = "";
+    try { p.loadScene('{"bodies": [{"x": 0, "y": 0, "hw": 0, "hh": 1}]}'); } catch (e) { error = e.message; }
+    const kept = p.currentName();
+    p.loadScene('{"solver": "classic", "bodies": [{"type": "static", "x": 0, "y": 10, "hw": 50, "hh": 5}, {"x": 0, "y": 0, "hw": 2, "hh": 2}]}');
+    return {error, kept, name: p.currentName(), panes: p.paneCount(), bodies: p.bodyCount(0),
+            model: p.paneModel(0)};
+  })()`);
+  check(/bodies\[0\]\.hw/.test(result.error) && result.kept === "slopes",
+        `a bad scene is refused: "${result.error}"`);
+  check(result.name === "scene" && result.panes === 1 && result.bodies === 2 &&
+        result.model === "classic", "a scene file loads: one pane, its two bodies, its model");
+}
+
 /// A finger: in the tutorial, a short tap on empty space in the physical pane drops a
 /// box there (a finger has no right button).
 async function touch(page) {
@@ -186,6 +209,7 @@ async function main() {
     page.shots = shots;
     await platformer(page);
     await gameApi(page);
+    await samplesAndScenes(page);
     await touch(page);
     await tutorialPicture(page);
     check(page.errors.length === 0, `no errors in the page${page.errors.length ? ": " + page.errors.join("; ") : ""}`);
