@@ -2,6 +2,7 @@
 #include "draw_pane.hpp"
 
 #include "draw_contacts.hpp"
+#include "draw_grid_picture.hpp"
 #include "font.hpp"
 #include "grid_picture.hpp"
 #include "palette.hpp"

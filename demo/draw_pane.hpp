@@ -5,6 +5,7 @@
 #pragma once
 
 #include "sample.hpp"
+#include "view.hpp"
 
 #include <SDL.h>
 

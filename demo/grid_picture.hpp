@@ -6,11 +6,9 @@
 // boxes use the velocity after the next step's gravity, which a picture cannot know.
 #pragma once
 
-#include "view.hpp"
+#include "world_box.hpp"
 
 #include "jostle/world.hpp"
-
-#include <SDL.h>
 
 #include <cstddef>
 #include <string>
@@ -45,10 +43,5 @@ struct GridPicture {
 /// The picture of `world`'s grid as its last step would have built it, steps being `dt`
 /// seconds long.
 GridPicture pictureGrid(const World& world, float dt);
-
-/// Draws `picture` under the bodies: faint lines of its main level's cells, the cells its
-/// boxes are filed in tinted (main level) or outlined (the others, coarser or finer), and
-/// boxes grown by their motion outlined where the growth shows.
-void drawGridPicture(SDL_Renderer* renderer, const GridPicture& picture, const View& view);
 
 } // namespace jostle::demo

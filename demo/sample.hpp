@@ -3,7 +3,7 @@
 #pragma once
 
 #include "contact_set.hpp"
-#include "view.hpp"
+#include "world_box.hpp"
 
 #include "jostle/scene.hpp"
 #include "jostle/world.hpp"

@@ -3,7 +3,7 @@
 // columns already inside the container, to settle fast; a demo wants to see them fall.)
 #include "sample_list.hpp"
 
-#include <random>
+#include "shared/random.hpp"
 
 namespace jostle::demo {
 
@@ -37,19 +37,18 @@ public:
         pane.view = {{-kHalfWidth - 4, -kPourHeight - 4}, {kHalfWidth + 4, 3}};
         pane.title = "physical";
         panes_.push_back(std::move(pane));
-        random_.seed(0x7a1e5u);
+        random_ = shared::Random(0x7a1e5u);
         poured_ = 0;
     }
 
     void beforeStep(const Controls& /*controls*/, float /*dt*/) override {
         World& world = *panes_.front().world;
-        std::uniform_real_distribution<float> half(kMinHalf, kMaxHalf);
-        std::uniform_real_distribution<float> across(-1.0f, 1.0f);
         // Each step's boxes at different heights, so they never start inside each other;
         // one may start inside a box of the step before, and is pushed out.
         for (int k = 0; k < kPerStep && poured_ < kBoxes; ++k, ++poured_) {
-            const float hw = half(random_), hh = half(random_);
-            world.createBody({.x = (kHalfWidth - hw) * across(random_),
+            const float hw = random_.uniform(kMinHalf, kMaxHalf);
+            const float hh = random_.uniform(kMinHalf, kMaxHalf);
+            world.createBody({.x = (kHalfWidth - hw) * random_.uniform(-1.0f, 1.0f),
                               .y = -kPourHeight - kSpacing * float(k),
                               .hw = hw,
                               .hh = hh,
@@ -59,7 +58,9 @@ public:
     }
 
 private:
-    std::minstd_rand random_;
+    /// jostle's own mapping of random bits to floats: the same rain with every standard
+    /// library, natively and in the browser.
+    shared::Random random_{0x7a1e5u};
     int poured_ = 0;
 };
 

@@ -2,17 +2,11 @@
 // with a margin, into the pane's pixels, and back again for the mouse.
 #pragma once
 
-#include "jostle/math.hpp"
+#include "world_box.hpp"
 
 #include <SDL.h>
 
 namespace jostle::demo {
-
-/// A box of a world by its corners; y grows downward, as on screen.
-struct WorldBox {
-    Vec2 min;
-    Vec2 max;
-};
 
 class View {
 public:

@@ -16,6 +16,8 @@ packages=(
   love                    # the LÖVE example runs in the tests
   clang libclang-rt-14-dev  # the sanitizer build and the fuzzers (libFuzzer)
   valgrind                # memcheck over a part of the suite
+  emscripten nodejs       # the web page's module (scripts/web.sh) and its tests in Node
+  chromium python3        # the page's tests in headless Chromium; web.sh serves the page
   "$@"
 )
 

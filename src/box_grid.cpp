@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <cstddef>
 #include <limits>
 
 namespace jostle {
@@ -187,7 +188,10 @@ void BoxGrid::build(const std::vector<Box>& boxes) {
         level.end = level.begin + counts[k];
         if (level.dense)
             continue;
-        std::sort(sorted_.begin() + level.begin, sorted_.begin() + level.end,
+        // Offsets as the iterator's signed type: on wasm32 that is 32 bits wide, and a
+        // uint32_t does not convert to it silently.
+        std::sort(sorted_.begin() + static_cast<std::ptrdiff_t>(level.begin),
+                  sorted_.begin() + static_cast<std::ptrdiff_t>(level.end),
                   [&](std::uint32_t p, std::uint32_t q) {
                       const Cell a = cellOfBox_[p], b = cellOfBox_[q];
                       return a.y != b.y ? a.y < b.y : a.x != b.x ? a.x < b.x : p < q;
