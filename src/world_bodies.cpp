@@ -1,9 +1,8 @@
-// World's bodies: creating and destroying them, their handles, and every getter and
-// setter, each setter checking its argument (body_properties.hpp has the rules).
-#include "body_properties.hpp"
+// World's bodies: creating and destroying them, their handles, and their getters and
+// setters, each setter checking its argument (body_properties.hpp has the rules); the
+// settings of characters are world_characters.cpp's.
+#include "body_setters.hpp"
 #include "integrate.hpp"
-#include "physical/sleep.hpp"
-#include "world_access.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -116,27 +115,6 @@ std::size_t World::bodyCount() const {
 }
 
 // --- Body getters and setters ----------------------------------------------------------
-
-namespace {
-
-/// A setter's argument under a property's rule: "setBounce: bounce must be in [0, 1]".
-void require(const char* function, const char* what, properties::Rule rule, float value) {
-    if (const char* problem = properties::problemOf(rule, value))
-        fail(function, std::string(what) + " " + problem);
-}
-
-/// A setter of a setting a body keeps as given: the argument checked by its property's
-/// rule, stored, and the body disturbed (docs/sleeping.md).
-template <class T>
-void setKept(WorldState& w, BodyId id, const char* function, const char* what,
-             const properties::Property& property, T Body::*member, T value) {
-    Body& b = lookUp(w, id, function);
-    require(function, what, property.rule, value);
-    b.*member = value;
-    disturb(w, id.index);
-}
-
-} // namespace
 
 BodyDef World::bodyDef(BodyId id) const {
     const Body& b = lookUp(*state_, id, "bodyDef");
@@ -334,72 +312,6 @@ std::size_t World::readPositions(std::span<Vec2> out) const {
 
 std::size_t World::readVelocities(std::span<Vec2> out) const {
     return readEach(*state_, out, &Body::velocity);
-}
-
-// --- Characters ---------------------------------------------------------------------------
-
-bool World::isCharacter(BodyId id) const {
-    return lookUp(*state_, id, "isCharacter").character;
-}
-
-void World::setCharacter(BodyId id, bool character) {
-    lookUp(*state_, id, "setCharacter").character = character;
-    disturb(*state_, id.index);
-}
-
-float World::wallFriction(BodyId id) const {
-    return lookUp(*state_, id, "wallFriction").wallFriction;
-}
-
-void World::setWallFriction(BodyId id, float friction) {
-    setKept(*state_, id, "setWallFriction", "friction", properties::kWallFriction,
-            &Body::wallFriction, friction);
-}
-
-float World::floorAngle(BodyId id) const {
-    lookUp(*state_, id, "floorAngle");
-    return state_->asGiven[id.index].floorAngle;
-}
-
-void World::setFloorAngle(BodyId id, float degrees) {
-    Body& b = lookUp(*state_, id, "setFloorAngle");
-    require("setFloorAngle", "degrees", properties::kFloorAngle.rule, degrees);
-    state_->asGiven[id.index].floorAngle = degrees;
-    b.floorCos = floorCosOf(degrees);
-    disturb(*state_, id.index);
-}
-
-float World::snapDown(BodyId id) const {
-    return lookUp(*state_, id, "snapDown").snapDown;
-}
-
-void World::setSnapDown(BodyId id, float distance) {
-    const bool was = lookUp(*state_, id, "setSnapDown").snapDown > 0.0f;
-    setKept(*state_, id, "setSnapDown", "distance", properties::kSnapDown, &Body::snapDown,
-            distance);
-    state_->snappingBodies += std::uint32_t(distance > 0.0f) - std::uint32_t(was);
-}
-
-float World::walkSpeed(BodyId id) const {
-    return lookUp(*state_, id, "walkSpeed").walkSpeed;
-}
-
-void World::setWalkSpeed(BodyId id, float speed) {
-    Body& b = lookUp(*state_, id, "setWalkSpeed");
-    requireFinite("setWalkSpeed", "speed", speed);
-    // A standing character, told to stand every frame, may sleep.
-    const bool changed = b.walkSpeed != speed;
-    b.walkSpeed = speed;
-    if (changed)
-        disturb(*state_, id.index);
-}
-
-std::optional<Ground> World::ground(BodyId id) const {
-    lookUp(*state_, id, "ground");
-    const GroundRecord g = groundOf(*state_, id);
-    if (g.body.isNull())
-        return std::nullopt;
-    return Ground{g.body, g.normal, state_->slots[g.body.index].velocity};
 }
 
 // --- Forces -------------------------------------------------------------------------------

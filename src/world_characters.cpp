@@ -1,0 +1,76 @@
+// World's characters: the character switch and its settings, walking, and the ground a
+// body stands on (docs/characters.md); each setter checks its argument.
+#include "body_setters.hpp"
+
+#include <cstdint>
+#include <optional>
+
+namespace jostle {
+
+// --- Characters ---------------------------------------------------------------------------
+
+bool World::isCharacter(BodyId id) const {
+    return lookUp(*state_, id, "isCharacter").character;
+}
+
+void World::setCharacter(BodyId id, bool character) {
+    lookUp(*state_, id, "setCharacter").character = character;
+    disturb(*state_, id.index);
+}
+
+float World::wallFriction(BodyId id) const {
+    return lookUp(*state_, id, "wallFriction").wallFriction;
+}
+
+void World::setWallFriction(BodyId id, float friction) {
+    setKept(*state_, id, "setWallFriction", "friction", properties::kWallFriction,
+            &Body::wallFriction, friction);
+}
+
+float World::floorAngle(BodyId id) const {
+    lookUp(*state_, id, "floorAngle");
+    return state_->asGiven[id.index].floorAngle;
+}
+
+void World::setFloorAngle(BodyId id, float degrees) {
+    Body& b = lookUp(*state_, id, "setFloorAngle");
+    require("setFloorAngle", "degrees", properties::kFloorAngle.rule, degrees);
+    state_->asGiven[id.index].floorAngle = degrees;
+    b.floorCos = floorCosOf(degrees);
+    disturb(*state_, id.index);
+}
+
+float World::snapDown(BodyId id) const {
+    return lookUp(*state_, id, "snapDown").snapDown;
+}
+
+void World::setSnapDown(BodyId id, float distance) {
+    const bool was = lookUp(*state_, id, "setSnapDown").snapDown > 0.0f;
+    setKept(*state_, id, "setSnapDown", "distance", properties::kSnapDown, &Body::snapDown,
+            distance);
+    state_->snappingBodies += std::uint32_t(distance > 0.0f) - std::uint32_t(was);
+}
+
+float World::walkSpeed(BodyId id) const {
+    return lookUp(*state_, id, "walkSpeed").walkSpeed;
+}
+
+void World::setWalkSpeed(BodyId id, float speed) {
+    Body& b = lookUp(*state_, id, "setWalkSpeed");
+    requireFinite("setWalkSpeed", "speed", speed);
+    // A standing character, told to stand every frame, may sleep.
+    const bool changed = b.walkSpeed != speed;
+    b.walkSpeed = speed;
+    if (changed)
+        disturb(*state_, id.index);
+}
+
+std::optional<Ground> World::ground(BodyId id) const {
+    lookUp(*state_, id, "ground");
+    const GroundRecord g = groundOf(*state_, id);
+    if (g.body.isNull())
+        return std::nullopt;
+    return Ground{g.body, g.normal, state_->slots[g.body.index].velocity};
+}
+
+} // namespace jostle
