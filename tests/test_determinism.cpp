@@ -38,6 +38,7 @@
 #include "jostle/tilemap.hpp"
 #include "jostle/world.hpp"
 #include "physical/solver_layers.hpp"
+#include "shared/fnv1a.hpp"
 #include "tasks.hpp"
 #include "world_access.hpp"
 
@@ -76,27 +77,13 @@ private:
 };
 
 // FNV-1a over the bits of what the world says about itself.
-class Hash {
+class Hash : public shared::Fnv1a {
 public:
-    void add(std::uint32_t word) {
-        for (int byte = 0; byte < 4; ++byte) {
-            value_ ^= (word >> (8 * byte)) & 0xFFu;
-            value_ *= 1099511628211ULL;
-        }
-    }
-    void add(float f) { add(std::bit_cast<std::uint32_t>(f)); }
-    void add(Vec2 v) {
-        add(v.x);
-        add(v.y);
-    }
+    using Fnv1a::add;
     // The slot alone: a handle's world (its serial number) differs from world to world
     // and with the worlds made before, and nothing in the simulation depends on it or on
     // the generation.
     void add(BodyId id) { add(id.index); }
-    std::uint64_t value() const { return value_; }
-
-private:
-    std::uint64_t value_ = 14695981039346656037ULL;
 };
 
 void hashStep(const World& world, Hash& hash) {

@@ -1,31 +1,13 @@
 // Running a sample for the check: see sample_check.hpp.
 #include "sample_check.hpp"
 
-#include <bit>
+#include "shared/fnv1a.hpp"
 
 namespace jostle::web {
 
 namespace {
 
 constexpr float kDt = 1.0f / 60.0f;
-
-class Fnv1a {
-public:
-    void add(std::uint32_t word) {
-        for (int byte = 0; byte < 4; ++byte) {
-            value_ ^= (word >> (8 * byte)) & 0xFFu;
-            value_ *= 1099511628211ULL;
-        }
-    }
-    void add(Vec2 v) {
-        add(std::bit_cast<std::uint32_t>(v.x));
-        add(std::bit_cast<std::uint32_t>(v.y));
-    }
-    std::uint64_t value() const { return value_; }
-
-private:
-    std::uint64_t value_ = 14695981039346656037ULL;
-};
 
 } // namespace
 
@@ -39,7 +21,7 @@ demo::Controls checkControls(int step) {
 
 std::uint64_t runSampleCheck(demo::Sample& sample, int steps) {
     sample.reset();
-    Fnv1a hash;
+    shared::Fnv1a hash;
     for (int step = 0; step < steps; ++step) {
         sample.beforeStep(checkControls(step), kDt);
         for (demo::Pane& pane : sample.panes())
