@@ -332,6 +332,12 @@ bool finishContact(const StepContext& step, Contact& c, const BodyPair& pair,
     return true;
 }
 
+/// Keeps a pair of a sensor and a body that may overlap it, the sensor first.
+void addSensorPair(StepContext& step, const BodyPair& pair) {
+    const bool aIsSensor = step.world.slots[pair.a].sensor;
+    step.scratch.sensorPairs.push_back(aIsSensor ? pair : BodyPair{pair.b, pair.a});
+}
+
 /// Pairs per block of the parallel build.
 constexpr std::uint32_t kPairsPerBlock = 1024;
 
@@ -357,8 +363,7 @@ void buildInParallel(StepContext& step) {
     for (std::size_t k = 0; k < pairs.size(); ++k) {
         const BodyPair& pair = pairs[k];
         if (made[k] == PairOutcome::kSensor) {
-            const bool aIsSensor = w.slots[pair.a].sensor;
-            step.scratch.sensorPairs.push_back(aIsSensor ? pair : BodyPair{pair.b, pair.a});
+            addSensorPair(step, pair);
         } else if (made[k] == PairOutcome::kContact) {
             Contact& c = step.contacts[kept++];
             if (&c != &step.contacts[k])
@@ -379,10 +384,8 @@ void buildWithCallback(StepContext& step) {
     for (const BodyPair& pair : w.pairs) {
         Contact c;
         PairOutcome outcome = examinePair(step, pair, c);
-        if (outcome.kind == PairOutcome::kSensor) {
-            const bool aIsSensor = w.slots[pair.a].sensor;
-            step.scratch.sensorPairs.push_back(aIsSensor ? pair : BodyPair{pair.b, pair.a});
-        }
+        if (outcome.kind == PairOutcome::kSensor)
+            addSensorPair(step, pair);
         if (outcome.kind != PairOutcome::kContact)
             continue;
         Collision info{w.idOf(pair.a), w.idOf(pair.b), outcome.normal,

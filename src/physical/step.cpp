@@ -19,6 +19,8 @@
 #include "step_context.hpp"
 #include "support.hpp"
 
+#include <cstddef>
+
 namespace jostle {
 
 void stepPhysical(WorldState& world, float dt) {
@@ -35,9 +37,11 @@ void stepPhysical(WorldState& world, float dt) {
     layerContacts(step);
     solveVelocities(step);
     propagateShock(step);
+    const std::size_t layered = step.contacts.size();
     sweepFastBodies(step);
     integratePositions(step);
-    layerContacts(step); // the sweep may have added contacts
+    if (step.contacts.size() != layered)
+        layerContacts(step); // the sweep added contacts at the end
     correctPositions(step);
     snapToGround(step);
     storeImpulses(step);
