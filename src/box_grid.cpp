@@ -18,6 +18,17 @@ float sizeOf(const Box& box) {
     return std::max(box.max.x - box.min.x, box.max.y - box.min.y);
 }
 
+/// Boxes per block of build's passes over them.
+constexpr std::uint32_t kBoxesPerBlock = 2048;
+
+/// Calls run(Block) over the boxes [0, n): in blocks on `tasks`, or as one block.
+template <class Run> void forBlocks(TaskRunner* tasks, std::uint32_t n, Run&& run) {
+    if (tasks != nullptr)
+        tasks->forEachBlock(n, kBoxesPerBlock, run);
+    else if (n > 0)
+        run(Block{0, 0, n});
+}
+
 } // namespace
 
 int BoxGrid::levelOf(const Box& box) const {
@@ -69,15 +80,21 @@ void BoxGrid::run(int levelIndex, std::int64_t x, std::int64_t y, std::uint32_t&
     }
 }
 
-int BoxGrid::mergedLevels(double base) const {
+int BoxGrid::mergedLevels(double base, TaskRunner* tasks) {
     // How many boxes each of the first levels would hold; the last count, all the rest.
+    static_assert(kMaxMerged == 1);
+    forBlocks(tasks, std::uint32_t(boxes_.size()), [&](Block block) {
+        std::uint32_t(&counts)[kMaxMerged + 2] = blockSums_[block.index].firstLevels;
+        counts[0] = counts[1] = counts[2] = 0;
+        for (std::uint32_t i = block.begin; i < block.end; ++i) {
+            const double size = double(sizeOf(boxes_[i]));
+            ++counts[int(base < size) + int(2.0 * base < size)];
+        }
+    });
     std::size_t counts[kMaxMerged + 2] = {};
-    for (const Box& box : boxes_) {
-        int level = 0;
-        for (double size = base; level <= kMaxMerged && size < double(sizeOf(box)); size *= 2.0)
-            ++level;
-        ++counts[level];
-    }
+    for (const BlockSums& sums : blockSums_)
+        for (int k = 0; k < kMaxMerged + 2; ++k)
+            counts[k] += sums.firstLevels[k];
     // Merge the first levels into one when together they hold most boxes: a world of
     // boxes of nearly one size (grown by their motion, some cross a doubling) then has
     // one level, and no box looks into another level for its neighbours.
@@ -90,9 +107,9 @@ int BoxGrid::mergedLevels(double base) const {
     return 0; // sizes spread out: the levels as they are
 }
 
-void BoxGrid::build(const std::vector<Box>& boxes) {
-    boxes_ = boxes;
-    const std::size_t n = boxes_.size();
+void BoxGrid::build(const std::vector<Box>& boxes, TaskRunner* tasks) {
+    const auto n = std::uint32_t(boxes.size());
+    boxes_.resize(n);
     usedLevels_ = 0;
     for (Level& level : levels_)
         level = Level{};
@@ -100,20 +117,31 @@ void BoxGrid::build(const std::vector<Box>& boxes) {
     cells_.reset(0);
     if (n == 0)
         return;
+    blockSums_.resize(tasks ? tasks->blocksOf(n, kBoxesPerBlock) : 1);
 
     // Level 0 fits the smallest box, a quarter to spare (boxes a little larger than the
     // smallest, grown by their motion say, still share its level); each level doubles.
     // If 63 levels cannot span the sizes, the small boxes share a coarser level: slower,
     // still correct. The last level is one infinite cell, for whatever is larger still.
+    forBlocks(tasks, n, [&](Block block) {
+        float smallest = INFINITY, largest = 0.0f;
+        for (std::uint32_t i = block.begin; i < block.end; ++i) {
+            boxes_[i] = boxes[i];
+            smallest = std::min(smallest, sizeOf(boxes[i]));
+            largest = std::max(largest, sizeOf(boxes[i]));
+        }
+        blockSums_[block.index].smallest = smallest;
+        blockSums_[block.index].largest = largest;
+    });
     float smallest = INFINITY, largest = 0.0f;
-    for (const Box& box : boxes_) {
-        smallest = std::min(smallest, sizeOf(box));
-        largest = std::max(largest, sizeOf(box));
+    for (const BlockSums& sums : blockSums_) {
+        smallest = std::min(smallest, sums.smallest);
+        largest = std::max(largest, sums.largest);
     }
     const double tiny = double(std::numeric_limits<float>::min());
     double base = std::max(double(smallest), tiny) * 1.25;
     base = std::max(base, std::ldexp(std::max(double(largest), tiny), -(kLevels - 2)));
-    base = std::ldexp(base, mergedLevels(base));
+    base = std::ldexp(base, mergedLevels(base, tasks));
     for (int k = 0; k < kLevels; ++k) {
         levels_[k].size = std::ldexp(base, k);
         levels_[k].inverse = 1.0 / levels_[k].size;
@@ -124,19 +152,38 @@ void BoxGrid::build(const std::vector<Box>& boxes) {
     // Each box's level and cell, and the cells each level's boxes span.
     keyOfBox_.resize(n);
     cellOfBox_.resize(n);
+    forBlocks(tasks, n, [&](Block block) {
+        BlockSums& sums = blockSums_[block.index];
+        std::fill(std::begin(sums.counts), std::end(sums.counts), 0u);
+        for (std::uint32_t i = block.begin; i < block.end; ++i) {
+            const int level = levelOf(boxes_[i]);
+            const Cell c = cellOf(boxes_[i].min, levels_[level]);
+            keyOfBox_[i] = std::uint32_t(level); // its key, once the levels are laid out
+            cellOfBox_[i] = c;
+            if (sums.counts[level]++ == 0)
+                sums.low[level] = sums.high[level] = c;
+            sums.low[level] = {std::min(sums.low[level].x, c.x), std::min(sums.low[level].y, c.y)};
+            sums.high[level] = {std::max(sums.high[level].x, c.x),
+                                std::max(sums.high[level].y, c.y)};
+        }
+    });
     std::uint32_t counts[kLevels] = {};
     Cell low[kLevels], high[kLevels];
-    for (std::size_t i = 0; i < n; ++i) {
-        const int level = levelOf(boxes_[i]);
-        const Cell c = cellOf(boxes_[i].min, levels_[level]);
-        keyOfBox_[i] = std::uint32_t(level); // its key, once the levels are laid out
-        cellOfBox_[i] = c;
-        if (counts[level]++ == 0) {
-            low[level] = high[level] = c;
-            usedLevels_ |= std::uint64_t{1} << level;
+    for (const BlockSums& sums : blockSums_) {
+        for (int level = 0; level < kLevels; ++level) {
+            if (sums.counts[level] == 0)
+                continue;
+            if (counts[level] == 0) {
+                low[level] = sums.low[level];
+                high[level] = sums.high[level];
+                usedLevels_ |= std::uint64_t{1} << level;
+            }
+            counts[level] += sums.counts[level];
+            low[level] = {std::min(low[level].x, sums.low[level].x),
+                          std::min(low[level].y, sums.low[level].y)};
+            high[level] = {std::max(high[level].x, sums.high[level].x),
+                           std::max(high[level].y, sums.high[level].y)};
         }
-        low[level] = {std::min(low[level].x, c.x), std::min(low[level].y, c.y)};
-        high[level] = {std::max(high[level].x, c.x), std::max(high[level].y, c.y)};
     }
 
     // The keys of the sort, level after level: a key per cell of a level whose boxes are
@@ -169,11 +216,13 @@ void BoxGrid::build(const std::vector<Box>& boxes) {
     };
     // One counting sort by key: by level, then (dense levels) by cell, each cell's boxes
     // in insertion order.
+    forBlocks(tasks, n, [&](Block block) {
+        for (std::uint32_t i = block.begin; i < block.end; ++i)
+            keyOfBox_[i] = keyOf(i);
+    });
     cells_.reset(keys);
-    for (std::uint32_t i = 0; i < n; ++i) {
-        keyOfBox_[i] = keyOf(i);
+    for (std::uint32_t i = 0; i < n; ++i)
         cells_.count(keyOfBox_[i]);
-    }
     cells_.endCounting();
     for (std::uint32_t i = 0; i < n; ++i)
         sorted_[cells_.place(keyOfBox_[i])] = i;
@@ -201,10 +250,12 @@ void BoxGrid::build(const std::vector<Box>& boxes) {
 
     sortedBoxes_.resize(n);
     sortedCells_.resize(n);
-    for (std::size_t k = 0; k < n; ++k) {
-        sortedBoxes_[k] = boxes_[sorted_[k]];
-        sortedCells_[k] = cellOfBox_[sorted_[k]];
-    }
+    forBlocks(tasks, n, [&](Block block) {
+        for (std::uint32_t k = block.begin; k < block.end; ++k) {
+            sortedBoxes_[k] = boxes_[sorted_[k]];
+            sortedCells_[k] = cellOfBox_[sorted_[k]];
+        }
+    });
 
     // The hash table of the sparse levels' cells: one slot per run of equal cells.
     table_.assign(std::bit_ceil(std::max<std::size_t>(2, 2 * hashedRuns)), HashSlot{});

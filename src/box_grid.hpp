@@ -20,6 +20,7 @@
 
 #include "counting_sort.hpp"
 #include "geometry.hpp"
+#include "tasks.hpp"
 
 #include <algorithm>
 #include <cstdint>
@@ -30,7 +31,8 @@ namespace jostle {
 class BoxGrid {
 public:
     /// Replaces the grid's contents with these boxes; the i-th is named i in results.
-    void build(const std::vector<Box>& boxes);
+    /// With `tasks`, the passes over the boxes run in blocks on its workers: the same grid.
+    void build(const std::vector<Box>& boxes, TaskRunner* tasks = nullptr);
 
     std::size_t size() const { return boxes_.size(); }
     const Box& bounds(std::uint32_t i) const { return boxes_[i]; }
@@ -84,12 +86,23 @@ private:
         std::uint32_t cellStart = 0;
     };
 
+    static constexpr int kMaxMerged = 1;
+    static constexpr double kMergedShare = 0.9;
+
+    /// What a block of boxes adds up to in build's passes over them: sizes, then how
+    /// many would go in each of the first levels, then each level's boxes and the cells
+    /// they span. Combined in block order (counts, minima, maxima: exact in any order).
+    struct BlockSums {
+        float smallest, largest;
+        std::uint32_t firstLevels[kMaxMerged + 2];
+        std::uint32_t counts[kLevels];
+        Cell low[kLevels], high[kLevels];
+    };
+
     int levelOf(const Box& box) const;
     /// By how many doublings to grow the first level's cells so that it holds most of
     /// the boxes (at most kMaxMerged: cells up to twice as wide as the smallest box).
-    int mergedLevels(double base) const;
-    static constexpr int kMaxMerged = 1;
-    static constexpr double kMergedShare = 0.9;
+    int mergedLevels(double base, TaskRunner* tasks);
     Cell cellOf(Vec2 point, const Level& level) const;
     std::size_t hashOf(int level, Cell cell) const;
     /// The run of sorted_ that holds cell (x, y) of `level`: [first, last).
@@ -118,6 +131,7 @@ private:
     void pairsAcrossLevels(int level, std::uint32_t from, std::uint32_t to, Visit&& visit) const;
 
     std::vector<Box> boxes_;              ///< as given: bounds(i)
+    std::vector<BlockSums> blockSums_;    ///< build's scratch, by block of boxes
     std::vector<std::uint32_t> keyOfBox_; ///< build's scratch: each box's level, then key
     std::vector<Cell> cellOfBox_;
     std::vector<std::uint32_t> sorted_; ///< box indices by level, then cell, then index

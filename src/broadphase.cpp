@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <span>
 
 namespace jostle {
 
@@ -23,7 +24,7 @@ void refreshRestingGrid(WorldState& world) {
             boxes.push_back(body.box());
         }
     }
-    world.restingGrid.build(boxes);
+    world.restingGrid.build(boxes, world.tasks.get());
 }
 
 namespace {
@@ -72,20 +73,38 @@ private:
     static constexpr std::uint32_t kLeftOut = UINT32_MAX;
     using Found = WorldState::RestingFind;
 
+    /// The moving bodies, in creation order, and the grid of the boxes they may sweep:
+    /// each block of live bodies counts its moving ones, then writes them at its place.
     void buildMovingGrid() {
-        w_.movingSlots.clear();
-        w_.movingDynamic.clear();
-        std::vector<Box>& bounds_ = w_.boundsScratch;
-        bounds_.clear();
-        for (BodyId id : w_.order.live()) {
-            const Body& body = w_.slots[id.index];
-            if (!w_.isResting(body)) {
-                w_.movingSlots.push_back(id.index);
-                w_.movingDynamic.push_back(body.isDynamic());
-                bounds_.push_back(reach(body, dt_));
+        const std::span<const BodyId> live = w_.order.live();
+        const auto count = std::uint32_t(live.size());
+        std::vector<std::uint32_t>& starts = w_.blockStarts;
+        starts.assign(w_.tasks->blocksOf(count, kBodiesPerBlock) + 1, 0);
+        w_.tasks->forEachBlock(count, kBodiesPerBlock, [&](Block block) {
+            std::uint32_t moving = 0;
+            for (std::uint32_t k = block.begin; k < block.end; ++k)
+                moving += w_.isResting(w_.slots[live[k].index]) ? 0u : 1u;
+            starts[block.index + 1] = moving;
+        });
+        for (std::size_t b = 1; b < starts.size(); ++b)
+            starts[b] += starts[b - 1];
+        w_.movingSlots.resize(starts.back());
+        w_.movingDynamic.resize(starts.back());
+        std::vector<Box>& bounds = w_.boundsScratch;
+        bounds.resize(starts.back());
+        w_.tasks->forEachBlock(count, kBodiesPerBlock, [&](Block block) {
+            std::uint32_t at = starts[block.index];
+            for (std::uint32_t k = block.begin; k < block.end; ++k) {
+                const Body& body = w_.slots[live[k].index];
+                if (w_.isResting(body))
+                    continue;
+                w_.movingSlots[at] = live[k].index;
+                w_.movingDynamic[at] = body.isDynamic();
+                bounds[at] = reach(body, dt_);
+                ++at;
             }
-        }
-        w_.movingGrid.build(bounds_);
+        });
+        w_.movingGrid.build(bounds, w_.tasks.get());
     }
 
     /// Pairs of moving bodies: found in blocks, then kept within the budget in order.

@@ -184,6 +184,7 @@ struct WorldState {
     BoxGrid movingGrid;
     std::vector<std::uint32_t> movingSlots;  ///< grid index -> slot, in creation order
     std::vector<std::uint8_t> movingDynamic; ///< grid index -> is the body dynamic
+    std::vector<std::uint32_t> blockStarts;  ///< the broadphase's scratch: where each block writes
     /// What each block of the pair search found (broadphase.cpp): pairs of moving grid
     /// indices, and resting bodies met by moving ones.
     PerBlock<std::pair<std::uint32_t, std::uint32_t>> movingFound;
