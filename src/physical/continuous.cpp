@@ -184,23 +184,38 @@ void sweepFastBodies(StepContext& step) {
     WorldState& w = step.world;
     ContinuousScratch& s = step.scratch.continuous;
     s.unforeseen.assign(w.slots.size(), 0);
-    for (const SolverBody& body : step.bodies) {
-        Vec2& velocity = w.slots[body.slot].velocity;
-        const Vec2 solved{body.velocity[0], body.velocity[1]};
-        if (body.invMass > 0.0f && movesUnforeseen(step, w.slots[body.slot], velocity, solved))
-            s.unforeseen[body.slot] = 1;
-        velocity = solved;
-    }
-    for (std::uint32_t slot : w.movingSlots) {
-        Body& body = w.slots[slot];
-        if (!body.isDynamic() || !w.isLive(slot))
-            continue;
-        const Vec2 motion = body.velocity * step.dt;
-        const float size = std::min(body.half.x, body.half.y);
-        if (std::abs(motion.x) <= size && std::abs(motion.y) <= size && !s.unforeseen[slot])
-            continue;
-        sweep(step, slot, motion);
-    }
+    const auto solverBodies = std::uint32_t(step.bodies.size());
+    w.tasks->forEachBlock(solverBodies, kBodiesPerBlock, [&](Block block) {
+        for (std::uint32_t k = block.begin; k < block.end; ++k) {
+            const SolverBody& body = step.bodies[k];
+            Vec2& velocity = w.slots[body.slot].velocity;
+            const Vec2 solved{body.velocity[0], body.velocity[1]};
+            if (body.invMass > 0.0f && movesUnforeseen(step, w.slots[body.slot], velocity, solved))
+                s.unforeseen[body.slot] = 1;
+            velocity = solved;
+        }
+    });
+    // Which bodies hit something: looked for in blocks, since a body that is no bullet
+    // meets only static and kinematic bodies, which no sweep moves. The sweeps themselves
+    // run in order, a bullet meeting what the sweeps before it moved.
+    const auto moving = std::uint32_t(w.movingSlots.size());
+    s.toSweep.reset(w.tasks->blocksOf(moving, kBodiesPerBlock));
+    w.tasks->forEachBlock(moving, kBodiesPerBlock, [&](Block block) {
+        for (std::uint32_t k = block.begin; k < block.end; ++k) {
+            const std::uint32_t slot = w.movingSlots[k];
+            const Body& body = w.slots[slot];
+            if (!body.isDynamic() || !w.isLive(slot))
+                continue;
+            const Vec2 motion = body.velocity * step.dt;
+            const float size = std::min(body.half.x, body.half.y);
+            if (std::abs(motion.x) <= size && std::abs(motion.y) <= size && !s.unforeseen[slot])
+                continue;
+            if (body.bullet || firstHit(step, slot, motion))
+                s.toSweep[block.index].push_back(slot);
+        }
+    });
+    s.toSweep.forEachInOrder(
+        [&](std::uint32_t slot) { sweep(step, slot, w.slots[slot].velocity * step.dt); });
     // What the sweeps met joins the step's contacts, for position correction and events.
     if (!s.found.empty()) {
         step.contacts.insert(step.contacts.end(), s.found.begin(), s.found.end());

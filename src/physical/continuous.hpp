@@ -6,6 +6,7 @@
 #pragma once
 
 #include "../geometry.hpp"
+#include "../tasks.hpp"
 #include "contact.hpp"
 
 #include <cstddef>
@@ -28,6 +29,7 @@ struct FirstHit {
 
 struct ContinuousScratch {
     std::vector<std::uint8_t> unforeseen; ///< by slot: moves where its contacts did not look
+    PerBlock<std::uint32_t> toSweep;      ///< slots whose sweep hits something, by block
     std::vector<Contact> found;           ///< found by the sweeps, not among the step's
     std::size_t sweepStart = 0;           ///< the first of `found` the current sweep made
 };
