@@ -340,6 +340,8 @@ void addSensorPair(StepContext& step, const BodyPair& pair) {
 
 /// Pairs per block of the parallel build.
 constexpr std::uint32_t kPairsPerBlock = 1024;
+/// How many pairs ahead the build asks the memory for a pair's bodies and cached contact.
+constexpr std::uint32_t kLookAhead = 8;
 
 /// Without a pre-solve callback: the pairs examined in blocks, each contact written at its
 /// pair's index, then packed in pair order with solver bodies given in that order.
@@ -348,9 +350,17 @@ void buildInParallel(StepContext& step) {
     const std::vector<BodyPair>& pairs = w.pairs;
     std::vector<std::uint8_t>& made = step.scratch.contactsBuild.made;
     made.resize(pairs.size());
+    // Last step's contacts are overwritten, not made anew first: only the rest are.
     step.contacts.resize(pairs.size());
     w.tasks->forEachBlock(std::uint32_t(pairs.size()), kPairsPerBlock, [&](Block block) {
         for (std::uint32_t k = block.begin; k < block.end; ++k) {
+            // The reads of a pair are scattered over memory: ask for them a few pairs ahead.
+            if (k + kLookAhead < block.end) {
+                const BodyPair& ahead = pairs[k + kLookAhead];
+                __builtin_prefetch(&w.slots[ahead.a]);
+                __builtin_prefetch(&w.slots[ahead.b]);
+                w.contactCache.prefetch(ahead.a);
+            }
             Contact& c = step.contacts[k];
             c = Contact{};
             const PairOutcome outcome = examinePair(step, pairs[k], c);
@@ -421,13 +431,13 @@ void buildContacts(StepContext& step) {
     w.physical.solverIndex.assign(w.slots.size(), StepContext::kNoSolverBody);
     step.bodies.clear();
     step.scratch.contactsBuild.vetoed.clear();
-    step.contacts.clear();
-    step.contacts.reserve(w.pairs.size());
     step.scratch.sensorPairs.clear();
-    if (w.preSolve)
+    if (w.preSolve) {
+        step.contacts.clear();
         buildWithCallback(step);
-    else
+    } else {
         buildInParallel(step);
+    }
 }
 
 bool isVetoed(const StepContext& step, std::uint32_t slotA, std::uint32_t slotB) {
