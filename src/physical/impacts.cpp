@@ -103,11 +103,13 @@ void resolveImpacts(StepContext& step) {
     ImpactsScratch& s = step.scratch.impacts;
     const std::size_t bodyCount = step.bodies.size();
     s.gravityInStep.resize(bodyCount);
-    for (std::size_t k = 0; k < bodyCount; ++k) {
-        const Body& body = step.world.slots[step.bodies[k].slot];
-        s.gravityInStep[k] =
-            body.isDynamic() ? step.world.def.gravity * (body.gravityScale * step.dt) : Vec2{};
-    }
+    step.world.tasks->forEachBlock(std::uint32_t(bodyCount), kBodiesPerBlock, [&](Block block) {
+        for (std::uint32_t k = block.begin; k < block.end; ++k) {
+            const Body& body = step.world.slots[step.bodies[k].slot];
+            s.gravityInStep[k] =
+                body.isDynamic() ? step.world.def.gravity * (body.gravityScale * step.dt) : Vec2{};
+        }
+    });
     s.changedInSweep.assign(bodyCount, 0);
     const float threshold = step.restitutionThreshold();
     bool shifted = false;

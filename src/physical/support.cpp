@@ -14,6 +14,8 @@ namespace jostle {
 namespace {
 
 constexpr std::uint32_t kUnsupported = UINT32_MAX;
+/// Contacts per block of the loop that finds supporters.
+constexpr std::uint32_t kSupportersPerBlock = 2048;
 
 /// The contact graph over solver bodies, as runs of neighbours.
 void buildGraph(StepContext& step) {
@@ -145,14 +147,24 @@ void orderBySupport(StepContext& step) {
     buildGraph(step);
     findLevels(step);
     findBacking(step);
-    const std::vector<std::uint32_t>& levels = step.scratch.support.levels;
+    SupportScratch& s = step.scratch.support;
+    const auto contacts = std::uint32_t(step.contacts.size());
+    TaskRunner& tasks = *step.world.tasks;
+    s.topOfBlock.assign(tasks.blocksOf(contacts, kSupportersPerBlock), 0);
+    tasks.forEachBlock(contacts, kSupportersPerBlock, [&](Block block) {
+        std::uint32_t top = 0;
+        for (std::uint32_t k = block.begin; k < block.end; ++k) {
+            Contact& c = step.contacts[k];
+            c.supporter = supporterOf(step, c);
+            const std::uint32_t level = std::min(s.levels[c.ia], s.levels[c.ib]);
+            if (level != kUnsupported)
+                top = std::max(top, level + 1);
+        }
+        s.topOfBlock[block.index] = top;
+    });
     std::uint32_t top = 0;
-    for (Contact& c : step.contacts) {
-        c.supporter = supporterOf(step, c);
-        const std::uint32_t level = std::min(levels[c.ia], levels[c.ib]);
-        if (level != kUnsupported)
-            top = std::max(top, level + 1);
-    }
+    for (std::uint32_t blockTop : s.topOfBlock)
+        top = std::max(top, blockTop);
     sortByLevel(step, top);
 }
 

@@ -24,6 +24,7 @@ struct SupportScratch {
     std::vector<std::uint32_t> queue;
     Buckets byLevel;
     std::vector<std::uint32_t> destination; ///< where the sort moves each contact
+    std::vector<std::uint32_t> topOfBlock;  ///< one above the highest level, by block of contacts
 };
 
 /// Sets each contact's supporter and sorts step.contacts by support level, ties in the
