@@ -6,6 +6,7 @@
 #pragma once
 
 #include "jostle/scene.hpp"
+#include "jostle/world.hpp"
 
 #include <memory>
 #include <span>
@@ -23,6 +24,9 @@ public:
 
     /// Writes the centre of every body, in scene order, to `out` (one per scene body).
     virtual void positions(std::span<Vec2> out) const = 0;
+
+    /// Where the last step's time went, stage by stage: jostle's alone (World::profile).
+    virtual const StepProfile* profile() const { return nullptr; }
 };
 
 enum class EngineKind {

@@ -17,6 +17,8 @@ public:
 
     void step(float dt) override { world_.step(dt); }
 
+    const StepProfile* profile() const override { return &world_.profile(); }
+
     void positions(std::span<Vec2> out) const override {
         // No body is destroyed, so creation order is scene order.
         const std::span<const BodyId> ids = world_.bodies();

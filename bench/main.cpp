@@ -6,6 +6,7 @@
 //     jostle-bench --series gas --csv series.csv   one family at several sizes
 //     jostle-bench --markdown           the table for docs/benchmarks.md
 //     jostle-bench --workers 1,2,4      jostle on 1, 2 and 4 threads (default 1,2)
+//     jostle-bench --stages             and where jostle's steps spent their time
 //     jostle-bench --lifecycle 1000000  creating and destroying a million bodies, timed
 //
 // Progress goes to standard error, the table to standard output. Exit status: 0 when
@@ -42,6 +43,7 @@ struct Options {
     double maxSeconds = 20.0;
     std::string csv;
     bool markdown = false;
+    bool stages = false;
     bool list = false;
     int lifecycle = 0;
     std::vector<int> workers{1, 2};
@@ -148,6 +150,14 @@ int runAll(const Options& options) {
         printIntroduction(stdout, options.maxSeconds);
         printTable(stdout, results, false);
     }
+    if (options.stages) {
+        std::fputc('\n', stdout);
+        if (!options.markdown)
+            std::fputs("Mean milliseconds per step in each stage of jostle's step "
+                       "(World::profile):\n\n",
+                       stdout);
+        printStages(stdout, results, options.markdown);
+    }
     if (!options.csv.empty() && !writeCsv(options.csv, results)) {
         std::fprintf(stderr, "jostle-bench: error: %s: cannot write\n", options.csv.c_str());
         return kFailure;
@@ -189,6 +199,9 @@ int main(int argc, char** argv) {
     app.add_option("--csv", options.csv, "Also write the results to this CSV file");
     app.add_flag("--markdown", options.markdown,
                  "Print only the table, as markdown (for docs/benchmarks.md)");
+    app.add_flag("--stages", options.stages,
+                 "Also print where jostle's steps spent their time, stage by stage "
+                 "(World::profile)");
     app.add_flag("--list", options.list, "List the cases that would run, and stop");
     app.add_option("--lifecycle", options.lifecycle,
                    "Instead of the scenes: create this many bodies in jostle and destroy them "

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace jostle::bench {
@@ -33,18 +34,15 @@ std::string length(float value) {
     return format("%.3f", static_cast<double>(value));
 }
 
-struct Row {
-    std::array<std::string, 11> cells;
-};
+using Cells = std::vector<std::string>;
 
-constexpr std::array<const char*, 11> kHeader{
-    "scene",       "bodies",     "engine",    "steps",       "ms/step", "speed-up",
-    "jostle/peer", "bytes/body", "top drift", "max overlap", "escaped"};
+const Cells kHeader{"scene",       "bodies",     "engine",    "steps",       "ms/step", "speed-up",
+                    "jostle/peer", "bytes/body", "top drift", "max overlap", "escaped"};
 
-Row makeRow(std::span<const RunResult> all, const RunResult& r) {
+Cells makeRow(std::span<const RunResult> all, const RunResult& r) {
     const std::optional<double> ratio = jostleRatio(all, r);
     const std::optional<double> faster = speedUp(all, r);
-    return {{
+    return {
         r.caseName,
         std::to_string(r.bodies),
         label(r),
@@ -56,7 +54,49 @@ Row makeRow(std::span<const RunResult> all, const RunResult& r) {
         r.quality.topDrift ? length(*r.quality.topDrift) : "-",
         length(r.quality.maxPenetration),
         std::to_string(r.quality.escaped),
-    }};
+    };
+}
+
+/// Rows under a header, each column as wide as its widest cell: the scene (column 0) and
+/// the engine (column 2) to the left, numbers to the right. Plain text puts a blank line
+/// between scenes; markdown makes a GitHub table.
+void printGrid(std::FILE* out, const Cells& header, const std::vector<Cells>& rows, bool markdown) {
+    std::vector<std::size_t> width(header.size());
+    for (std::size_t c = 0; c < header.size(); ++c) {
+        width[c] = header[c].size();
+        for (const Cells& row : rows)
+            width[c] = std::max(width[c], row[c].size());
+    }
+    const auto leftAligned = [](std::size_t c) { return c == 0 || c == 2; };
+    const auto printRow = [&](const Cells& cells) {
+        for (std::size_t c = 0; c < header.size(); ++c) {
+            const int w = static_cast<int>(width[c]);
+            if (markdown)
+                std::fprintf(out, "| %*s ", leftAligned(c) ? -w : w, cells[c].c_str());
+            else
+                std::fprintf(out, c == 0 ? "%*s" : "  %*s", leftAligned(c) ? -w : w,
+                             cells[c].c_str());
+        }
+        std::fputs(markdown ? "|\n" : "\n", out);
+    };
+
+    printRow(header);
+    if (markdown) {
+        for (std::size_t c = 0; c < header.size(); ++c) {
+            std::string rule(width[c] + 2, '-');
+            if (!leftAligned(c))
+                rule.back() = ':';
+            std::fprintf(out, "|%s", rule.c_str());
+        }
+        std::fputs("|\n", out);
+    }
+    std::string previous;
+    for (const Cells& row : rows) {
+        if (!markdown && !previous.empty() && row[0] != previous)
+            std::fputc('\n', out);
+        previous = row[0];
+        printRow(row);
+    }
 }
 
 } // namespace
@@ -82,50 +122,26 @@ std::optional<double> speedUp(std::span<const RunResult> all, const RunResult& r
 }
 
 void printTable(std::FILE* out, std::span<const RunResult> results, bool markdown) {
-    std::vector<Row> rows;
+    std::vector<Cells> rows;
     for (const RunResult& r : results)
         rows.push_back(makeRow(results, r));
+    printGrid(out, kHeader, rows, markdown);
+}
 
-    std::array<std::size_t, kHeader.size()> width{};
-    for (std::size_t c = 0; c < kHeader.size(); ++c) {
-        width[c] = std::string(kHeader[c]).size();
-        for (const Row& row : rows)
-            width[c] = std::max(width[c], row.cells[c].size());
+void printStages(std::FILE* out, std::span<const RunResult> results, bool markdown) {
+    Cells header{"scene", "bodies", "engine"};
+    for (const StageField& stage : kStages)
+        header.emplace_back(stage.name);
+    std::vector<Cells> rows;
+    for (const RunResult& r : results) {
+        if (!r.stages)
+            continue;
+        Cells row{r.caseName, std::to_string(r.bodies), label(r)};
+        for (const StageField& stage : kStages)
+            row.push_back(milliseconds(static_cast<double>(*r.stages.*stage.ms)));
+        rows.push_back(std::move(row));
     }
-    // Text columns (scene, engine) to the left, numbers to the right.
-    const auto leftAligned = [](std::size_t c) { return c == 0 || c == 2; };
-    const auto printRow = [&](const auto& cells) {
-        for (std::size_t c = 0; c < kHeader.size(); ++c) {
-            const int w = static_cast<int>(width[c]);
-            const std::string cell = cells[c];
-            if (markdown)
-                std::fprintf(out, "| %*s ", leftAligned(c) ? -w : w, cell.c_str());
-            else
-                std::fprintf(out, c == 0 ? "%*s" : "  %*s", leftAligned(c) ? -w : w, cell.c_str());
-        }
-        std::fputs(markdown ? "|\n" : "\n", out);
-    };
-
-    std::array<std::string, kHeader.size()> header;
-    for (std::size_t c = 0; c < kHeader.size(); ++c)
-        header[c] = kHeader[c];
-    printRow(header);
-    if (markdown) {
-        for (std::size_t c = 0; c < kHeader.size(); ++c) {
-            std::string rule(width[c] + 2, '-');
-            if (!leftAligned(c))
-                rule.back() = ':';
-            std::fprintf(out, "|%s", rule.c_str());
-        }
-        std::fputs("|\n", out);
-    }
-    std::string previous;
-    for (const Row& row : rows) {
-        if (!markdown && !previous.empty() && row.cells[0] != previous)
-            std::fputc('\n', out); // a blank line between scenes
-        previous = row.cells[0];
-        printRow(row.cells);
-    }
+    printGrid(out, header, rows, markdown);
 }
 
 bool writeCsv(const std::string& path, std::span<const RunResult> results) {

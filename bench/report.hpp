@@ -20,6 +20,10 @@ std::optional<double> speedUp(std::span<const RunResult> all, const RunResult& r
 /// The table, one row per result, in the order given. Markdown: a GitHub table.
 void printTable(std::FILE* out, std::span<const RunResult> results, bool markdown);
 
+/// For the results that profiled their steps (jostle's), the mean milliseconds of each
+/// stage of the step (World::profile), a row per result. Markdown: a GitHub table.
+void printStages(std::FILE* out, std::span<const RunResult> results, bool markdown);
+
 /// Writes the results as CSV with a header row; false if the file cannot be written.
 bool writeCsv(const std::string& path, std::span<const RunResult> results);
 

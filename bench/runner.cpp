@@ -53,10 +53,18 @@ RunResult run(const Case& c, const Scene& scene, EngineKind engine, int workers,
         const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
         times.push_back(seconds);
         measured += seconds;
+        if (const StepProfile* profile = world->profile()) {
+            StepProfile& sum = result.stages ? *result.stages : result.stages.emplace();
+            for (const StageField& stage : kStages)
+                sum.*stage.ms += profile->*stage.ms;
+        }
         if (measured > limits.maxSeconds && i + 1 >= RunLimits::kMinSteps)
             break;
     }
     result.measuredSteps = static_cast<int>(times.size());
+    if (result.stages && !times.empty())
+        for (const StageField& stage : kStages)
+            result.stages.value().*stage.ms /= static_cast<float>(times.size());
     if (!times.empty()) {
         const auto middle = times.begin() + static_cast<std::ptrdiff_t>(times.size() / 2);
         std::nth_element(times.begin(), middle, times.end());

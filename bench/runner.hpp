@@ -5,6 +5,7 @@
 #include "engine.hpp"
 #include "shared/quality.hpp"
 
+#include <optional>
 #include <string>
 
 namespace jostle::bench {
@@ -31,6 +32,28 @@ struct RunResult {
     double msPerStep = 0.0; ///< median of the measured steps
     double bytesPerBody = 0.0;
     shared::Quality quality;
+    /// The mean time of each stage over the measured steps, for an engine that profiles
+    /// its steps (jostle).
+    std::optional<StepProfile> stages;
+};
+
+/// The stages of jostle's step profile, by name, in the order the step runs them.
+struct StageField {
+    const char* name;
+    float StepProfile::*ms;
+};
+inline constexpr StageField kStages[] = {
+    {"pairs", &StepProfile::pairs},
+    {"contacts", &StepProfile::contacts},
+    {"support", &StepProfile::support},
+    {"impacts", &StepProfile::impacts},
+    {"velocities", &StepProfile::velocities},
+    {"sweeps", &StepProfile::sweeps},
+    {"positions", &StepProfile::positions},
+    {"store", &StepProfile::store},
+    {"events", &StepProfile::events},
+    {"sleep", &StepProfile::sleep},
+    {"step", &StepProfile::step},
 };
 
 /// Builds the case's scene in `engine` on `workers` threads, steps it `warmup` times, reads

@@ -6,6 +6,7 @@
 #include "integrate.hpp"
 #include "physical/sleep.hpp"
 #include "physical/step.hpp"
+#include "stopwatch.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -147,8 +148,13 @@ Touching World::touching(BodyId id) const {
 
 // --- World settings and stepping -------------------------------------------------------
 
+const StepProfile& World::profile() const {
+    return state_->profile;
+}
+
 void World::step(float dt) {
     WorldState& w = *state_;
+    Stopwatch stopwatch;
     if (w.stepping)
         fail("step", "called from a callback during step()");
     if (!std::isfinite(dt) || dt <= 0.0f)
@@ -157,6 +163,7 @@ void World::step(float dt) {
         fail("step", "dt must be in [1e-9, 1e9] (math.hpp)");
 
     StepScope scope(w);
+    w.profile = {};
     w.pairsLeftOut = 0; // the physical model's broadphase counts them
     // A sleeping body keeps the separation of its last awake step: what held it up
     // still does ("grounded" stays true while it sleeps on the ground).
@@ -175,6 +182,7 @@ void World::step(float dt) {
         throw;
     }
     keepInsideTheWorld(w);
+    w.profile.step = stopwatch.lap();
 }
 
 Vec2 World::gravity() const {

@@ -195,6 +195,9 @@ struct WorldState {
     };
     PerBlock<RestingFind> restingFound;
 
+    /// Where the last step's time went (World::profile).
+    StepProfile profile;
+
     /// The threads a step may share its work with (jostle/tasks.hpp).
     std::unique_ptr<TaskRunner> tasks;
 

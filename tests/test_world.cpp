@@ -1,6 +1,7 @@
 // Handles, getters and setters, argument checks, and changes made during a step.
 #include "jostle/world.hpp"
 
+#include <array>
 #include <gtest/gtest.h>
 
 #include <functional>
@@ -333,6 +334,37 @@ TEST_P(DuringStep, AnExceptionFromACallbackLeavesTheWorldUsable) {
 
 INSTANTIATE_TEST_SUITE_P(EitherModel, DuringStep,
                          ::testing::Values(Solver::Classic, Solver::Physical));
+
+TEST(World, ProfileSharesTheStepAmongItsStages) {
+    auto stages = [](const StepProfile& p) {
+        return std::array{p.pairs,  p.contacts,  p.support, p.impacts, p.velocities,
+                          p.sweeps, p.positions, p.store,   p.events,  p.sleep};
+    };
+    for (Solver solver : {Solver::Physical, Solver::Classic}) {
+        World world(WorldDef{.gravity = {0, 10}, .solver = solver});
+        for (float ms : stages(world.profile()))
+            EXPECT_EQ(ms, 0.0f); // no step yet
+        EXPECT_EQ(world.profile().step, 0.0f);
+        world.createBody({.type = BodyType::Static, .x = 0, .y = 10, .hw = 50, .hh = 1});
+        for (int i = 0; i < 200; ++i)
+            world.createBody(
+                {.x = float(i % 20) * 2 - 20, .y = float(i / 20) * 2 - 10, .hw = 0.9f, .hh = 0.9f});
+        world.step(1.0f / 60.0f);
+        const StepProfile& p = world.profile();
+        EXPECT_GT(p.step, 0.0f);
+        float sum = 0.0f;
+        for (float ms : stages(p)) {
+            EXPECT_GE(ms, 0.0f);
+            sum += ms;
+        }
+        // The stages are laps within the step's own time; the classic model has none.
+        EXPECT_LE(sum, p.step * 1.001f);
+        if (solver == Solver::Physical)
+            EXPECT_GT(sum, 0.0f);
+        else
+            EXPECT_EQ(sum, 0.0f);
+    }
+}
 
 } // namespace
 } // namespace jostle

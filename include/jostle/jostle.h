@@ -601,6 +601,16 @@ const jostle_crush_event* jostle_world_crushes(const jostle_world* world, int* c
 /// max_contacts_per_body of them (physical model): 0 in a sane scene.
 uint64_t jostle_world_pairs_left_out(const jostle_world* world);
 
+/// Where the last step's time went, in milliseconds of wall-clock time, stage by stage
+/// (jostle::StepProfile says what each holds; the classic model fills `step` only).
+typedef struct jostle_step_profile {
+    float step, pairs, contacts, support, impacts, velocities, sweeps, positions, store, events,
+        sleep;
+} jostle_step_profile;
+
+/// All 0 before the first step.
+jostle_step_profile jostle_world_get_profile(const jostle_world* world);
+
 // === The pre-solve callback ================================================================
 
 /// A pair about to collide, as the solver sees it before it responds (jostle::Collision).

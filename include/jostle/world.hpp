@@ -194,6 +194,24 @@ struct Touching {
     bool wallRight = false; ///< on the body's right
 };
 
+/// Where the last step's time went, in milliseconds of wall-clock time: for finding what
+/// a scene costs, never part of the results. The physical model fills every stage; the
+/// classic model fills `step` only.
+struct StepProfile {
+    float step = 0.0f;     ///< the whole of step(), the stages below and the rest
+    float pairs = 0.0f;    ///< the broadphase: its grids, and the pairs that may touch
+    float contacts = 0.0f; ///< contacts made of the pairs, warm-started from the last step
+    float support = 0.0f;  ///< ordering contacts from the ground up (and in layers, for threads)
+    float impacts = 0.0f;  ///< collisions and bounces
+    float velocities =
+        0.0f;               ///< forces and gravity, the solver's velocity passes, shock propagation
+    float sweeps = 0.0f;    ///< continuous collision
+    float positions = 0.0f; ///< moving the bodies, position correction, snapping to ground
+    float store = 0.0f;     ///< what the next step remembers of this one (contacts, platforms)
+    float events = 0.0f;    ///< contact, sensor and crush events
+    float sleep = 0.0f;     ///< islands falling asleep
+};
+
 /// Called for every pair the solver is about to respond to (overlapping, touching, or
 /// in the physical model about to touch within the step) before it responds. Return
 /// false to let the pair pass through each other this time (a one-way platform, a ghost,
@@ -391,6 +409,8 @@ public:
     std::uint64_t pairsLeftOut() const;
     /// What the body touched in the last step, relative to gravity (physical model).
     Touching touching(BodyId id) const;
+    /// Where the last step's time went, stage by stage (all 0 before the first step).
+    const StepProfile& profile() const;
 
     // --- The world ---------------------------------------------------------------------
 

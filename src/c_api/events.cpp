@@ -71,4 +71,13 @@ uint64_t jostle_world_pairs_left_out(const jostle_world* world) {
     return guard(__func__, std::uint64_t{0}, [&] { return worldOf(world).world.pairsLeftOut(); });
 }
 
+jostle_step_profile jostle_world_get_profile(const jostle_world* world) {
+    return guard(__func__, jostle_step_profile{}, [&] {
+        const StepProfile& p = worldOf(world).world.profile();
+        return jostle_step_profile{p.step,    p.pairs,      p.contacts, p.support,
+                                   p.impacts, p.velocities, p.sweeps,   p.positions,
+                                   p.store,   p.events,     p.sleep};
+    });
+}
+
 } // extern "C"

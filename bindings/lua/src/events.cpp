@@ -13,6 +13,7 @@
 #include "binding.hpp"
 
 #include <cmath>
+#include <utility>
 
 namespace jostle::lua {
 
@@ -176,6 +177,22 @@ int worldGetPairsLeftOut(lua_State* L) {
     return 1;
 }
 
+/// world:getProfile(): where the last step's time went, in milliseconds, by stage.
+int worldGetProfile(lua_State* L) {
+    const StepProfile& p = checkWorld(L, 1, "World:getProfile").world.profile();
+    lua_createtable(L, 0, 11);
+    const std::pair<const char*, float> stages[] = {
+        {"step", p.step},       {"pairs", p.pairs},         {"contacts", p.contacts},
+        {"support", p.support}, {"impacts", p.impacts},     {"velocities", p.velocities},
+        {"sweeps", p.sweeps},   {"positions", p.positions}, {"store", p.store},
+        {"events", p.events},   {"sleep", p.sleep}};
+    for (const auto& [name, ms] : stages) {
+        lua_pushnumber(L, ms);
+        lua_setfield(L, -2, name);
+    }
+    return 1;
+}
+
 // --- The pre-solve callback --------------------------------------------------------------
 
 /// world:setPreSolve(function(c) ... end) or nil to remove it. Changed from inside the
@@ -206,6 +223,7 @@ constexpr luaL_Reg kEventMethods[] = {
     {"getSensorEnds", worldGetSensorEnds},
     {"getCrushes", worldGetCrushes},
     {"getPairsLeftOut", worldGetPairsLeftOut},
+    {"getProfile", worldGetProfile},
     {"setPreSolve", worldSetPreSolve},
     {"getPreSolve", worldGetPreSolve},
     {nullptr, nullptr},

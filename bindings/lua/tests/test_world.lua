@@ -318,6 +318,13 @@ test("a world stepped on two workers gives the same positions as on one", functi
   local two, b = crowd(2)
   t.equal(one:getWorkers(), 1, "one worker by default")
   t.equal(two:getWorkers(), 2, "two workers")
+  local p, stages = two:getProfile(), 0
+  for _, name in ipairs({"pairs", "contacts", "support", "impacts", "velocities", "sweeps",
+                         "positions", "store", "events", "sleep"}) do
+    t.truthy(p[name] >= 0, "profile." .. name)
+    stages = stages + p[name]
+  end
+  t.truthy(p.step > 0 and stages <= p.step * 1.001, "the stages are laps within the step")
   for i = 1, #a do
     local x1, y1 = a[i]:getPosition()
     local x2, y2 = b[i]:getPosition()
