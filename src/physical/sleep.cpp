@@ -49,13 +49,17 @@ private:
 /// How long each body has been at rest.
 void updateRestTimes(StepContext& step, Islands& islands) {
     WorldState& w = step.world;
-    for (std::uint32_t slot : w.movingSlots) {
-        Body& body = w.slots[slot];
-        if (!body.isDynamic() || !w.isLive(slot))
-            continue;
-        body.sleepTime =
-            length(body.velocity) < restingSpeed(body) ? body.sleepTime + step.dt : 0.0f;
-    }
+    const auto moving = std::uint32_t(w.movingSlots.size());
+    w.tasks->forEachBlock(moving, kBodiesPerBlock, [&](Block block) {
+        for (std::uint32_t k = block.begin; k < block.end; ++k) {
+            const std::uint32_t slot = w.movingSlots[k];
+            Body& body = w.slots[slot];
+            if (!body.isDynamic() || !w.isLive(slot))
+                continue;
+            body.sleepTime =
+                length(body.velocity) < restingSpeed(body) ? body.sleepTime + step.dt : 0.0f;
+        }
+    });
     for (const Contact& c : step.contacts) {
         const std::uint32_t slotA = step.bodies[c.ia].slot, slotB = step.bodies[c.ib].slot;
         Body& a = w.slots[slotA];
