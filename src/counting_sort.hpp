@@ -15,8 +15,10 @@ class Buckets {
 public:
     /// Starts over with keys 0 .. keyCount - 1, all empty.
     void reset(std::size_t keyCount) { starts_.assign(keyCount + 1, 0); }
-    /// Counting pass: one more item of `key`.
-    void count(std::size_t key) { ++starts_[key + 1]; }
+    /// Counting pass: one more item of `key`. Returns its rank, how many items of `key`
+    /// were counted before it: after endCounting() its place is begin(key) + rank, which
+    /// a placing pass on several threads can find without placing in order.
+    std::uint32_t count(std::size_t key) { return starts_[key + 1]++; }
     /// Ends the counting pass: every run starts where the one before ends. Returns how
     /// many items were counted.
     std::uint32_t endCounting() {

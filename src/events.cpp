@@ -77,19 +77,32 @@ void compare(const WorldState& world, std::vector<TouchRecord>& now,
 
 } // namespace
 
-void recordContact(WorldState& world, std::uint32_t body, std::uint32_t other, Vec2 normal,
+FoundTouch touchOf(const WorldState& world, std::uint32_t body, std::uint32_t other, Vec2 normal,
                    float approachSpeed, float impulse) {
-    StepEvents& events = world.events;
+    const StepEvents& events = world.events;
     // The surface pushes each body away from the other.
-    events.touching[body] |= surfaceOf(normal, events.down, world.slots[body].floorCos);
-    events.touching[other] |= surfaceOf(-normal, events.down, world.slots[other].floorCos);
+    const TouchingBit flagBody = surfaceOf(normal, events.down, world.slots[body].floorCos);
+    const TouchingBit flagOther = surfaceOf(-normal, events.down, world.slots[other].floorCos);
     // Listed with the body created first as `a`, the normal pointing towards it.
     if (world.createdBefore(body, other))
-        events.contactsNow.push_back(
-            {world.refOf(body), world.refOf(other), normal, approachSpeed, impulse});
-    else
-        events.contactsNow.push_back(
-            {world.refOf(other), world.refOf(body), -normal, approachSpeed, impulse});
+        return {{world.refOf(body), world.refOf(other), normal, approachSpeed, impulse},
+                flagBody,
+                flagOther};
+    return {{world.refOf(other), world.refOf(body), -normal, approachSpeed, impulse},
+            flagOther,
+            flagBody};
+}
+
+void recordTouch(WorldState& world, const FoundTouch& touch) {
+    StepEvents& events = world.events;
+    events.touching[touch.record.a.index] |= touch.flagA;
+    events.touching[touch.record.b.index] |= touch.flagB;
+    events.contactsNow.push_back(touch.record);
+}
+
+void recordContact(WorldState& world, std::uint32_t body, std::uint32_t other, Vec2 normal,
+                   float approachSpeed, float impulse) {
+    recordTouch(world, touchOf(world, body, other, normal, approachSpeed, impulse));
 }
 
 Vec2 pointOf(const WorldState& world, const TouchRecord& record) {

@@ -69,16 +69,26 @@ bool stopAtTheEdge(Body& body) {
 }
 
 void keepInsideTheWorld(WorldState& world) {
-    for (BodyId id : world.order.live()) {
-        Body& b = world.slots[id.index];
-        // Sleeping bodies too: a body can fall asleep in the very step that carried it
-        // past the edge (slow enough to rest, with a long enough dt).
-        if (b.type == BodyType::Static)
-            continue;
-        b.velocity = withinRange(b.velocity);
-        if (stopAtTheEdge(b) && b.asleep)
+    const std::span<const BodyId> live = world.order.live();
+    const auto count = std::uint32_t(live.size());
+    // A flag per block, set on the workers, read after: no two threads write one.
+    std::vector<std::uint8_t>& movedAsleep = world.movedAsleepByBlock;
+    movedAsleep.assign(world.tasks->blocksOf(count, kBodiesPerBlock), 0);
+    world.tasks->forEachBlock(count, kBodiesPerBlock, [&](Block block) {
+        for (std::uint32_t k = block.begin; k < block.end; ++k) {
+            Body& b = world.slots[live[k].index];
+            // Sleeping bodies too: a body can fall asleep in the very step that carried it
+            // past the edge (slow enough to rest, with a long enough dt).
+            if (b.type == BodyType::Static)
+                continue;
+            b.velocity = withinRange(b.velocity);
+            if (stopAtTheEdge(b) && b.asleep)
+                movedAsleep[block.index] = 1;
+        }
+    });
+    for (std::uint8_t moved : movedAsleep)
+        if (moved)
             world.restingDirty = true; // it moved within the grid of resting bodies
-    }
 }
 
 } // namespace jostle

@@ -200,6 +200,8 @@ struct WorldState {
 
     /// The threads a step may share its work with (jostle/tasks.hpp).
     std::unique_ptr<TaskRunner> tasks;
+    /// keepInsideTheWorld's scratch: whether each block of bodies moved a sleeping one.
+    std::vector<std::uint8_t> movedAsleepByBlock;
 
     /// Forces applied since the last step (World::applyForce), in the order given.
     std::vector<std::pair<BodyId, Vec2>> forces;

@@ -22,31 +22,38 @@ const CachedContact* ContactCache::find(std::uint32_t a, std::uint32_t b) const 
 void storeImpulses(StepContext& step) {
     WorldState& w = step.world;
     ContactCache& cache = w.contactCache;
+    const auto count = std::uint32_t(step.contacts.size());
+    std::vector<std::uint32_t>& ranks = step.scratch.store.ranks;
+    ranks.resize(count);
     cache.beginRebuild(w.slots.size());
-    for (const Contact& c : step.contacts)
-        cache.count(step.bodies[c.ia].slot);
+    for (std::uint32_t k = 0; k < count; ++k)
+        ranks[k] = cache.count(step.bodies[step.contacts[k].ia].slot);
     cache.endCounting();
-    for (const Contact& c : step.contacts) {
+    // The cache takes contacts in any order; each body's separation adds up its contacts'
+    // pushes in contact order, which the solver's layers keep.
+    forEachContact(step, [&](const Contact& c) {
+        const auto k = std::uint32_t(&c - step.contacts.data());
         const std::uint32_t slotA = step.bodies[c.ia].slot, slotB = step.bodies[c.ib].slot;
         Body& a = w.slots[slotA];
         Body& b = w.slots[slotB];
-        const float total = c.totalImpulse();
         // What held a touching pair together starts the next step; what closed a gap was a
         // blow, not a push that goes on.
         const bool closing = c.targetSpeed < 0.0f;
-        cache.add(slotA, slotB,
+        cache.add(slotA, ranks[k], slotB,
                   {a.generation, b.generation, c.normal(), closing ? 0.0f : c.normalImpulse,
                    closing ? 0.0f : c.tangentImpulse});
         // How far the contact's impulse pushed each body out this step (position
         // correction was counted when it was written back); the held body felt none of the
-        // shock pass's.
-        const float dt = step.dt;
-        a.separation +=
-            c.normal() * ((c.supporter == 1 ? c.normalImpulse : total) * c.invMassA * dt);
-        b.separation -=
-            c.normal() * ((c.supporter == 2 ? c.normalImpulse : total) * c.invMassB * dt);
-    }
-    cache.endRebuild();
+        // shock pass's. An infinitely heavy body is pushed nowhere (its separation stays 0),
+        // and may be in several contacts of a layer at once.
+        const float total = c.totalImpulse();
+        if (c.invMassA > 0.0f)
+            a.separation +=
+                c.normal() * ((c.supporter == 1 ? c.normalImpulse : total) * c.invMassA * step.dt);
+        if (c.invMassB > 0.0f)
+            b.separation -=
+                c.normal() * ((c.supporter == 2 ? c.normalImpulse : total) * c.invMassB * step.dt);
+    });
 }
 
 } // namespace jostle

@@ -28,7 +28,8 @@ struct CachedContact {
 /// results, so nothing of its layout can leak into them.
 ///
 /// Rebuilt in place from this step's contacts, with no second copy: a counting pass
-/// (count(a) for each), then a filling pass (add(a, b, contact) for each, same order).
+/// (count(a) for each, in order, giving each its rank), then a filling pass (add for each,
+/// in any order, on any thread).
 class ContactCache {
 public:
     /// Empties the cache.
@@ -43,16 +44,16 @@ public:
 
     /// Starts a rebuild for a world of `slotCount` slots; the old contents are gone.
     void beginRebuild(std::size_t slotCount) { runs_.reset(slotCount); }
-    /// Counting pass: one more contact whose first body is `a`.
-    void count(std::uint32_t a) { runs_.count(a); }
+    /// Counting pass: one more contact whose first body is `a`. Returns its rank among
+    /// them, for add().
+    std::uint32_t count(std::uint32_t a) { return runs_.count(a); }
     /// Ends the counting pass.
     void endCounting() { entries_.resize(runs_.endCounting()); }
-    /// Filling pass: the contacts counted, in the same order.
-    void add(std::uint32_t a, std::uint32_t b, const CachedContact& contact) {
-        entries_[runs_.place(a)] = {b, contact};
+    /// Filling pass: the contact of rank `rank` among those of `a`. Contacts of different
+    /// ranks may be added at once on several threads.
+    void add(std::uint32_t a, std::uint32_t rank, std::uint32_t b, const CachedContact& contact) {
+        entries_[runs_.begin(a) + rank] = {b, contact};
     }
-    /// Ends the rebuild.
-    void endRebuild() { runs_.endPlacing(); }
 
 private:
     struct Entry {
@@ -66,5 +67,10 @@ private:
 /// Stage: store impulses. Rebuilds the world's contact cache from step.contacts, and adds
 /// to each body's separation how far its contacts' impulses pushed it.
 void storeImpulses(StepContext& step);
+
+/// storeImpulses' scratch: each contact's rank in the cache (ContactCache::count).
+struct StoreScratch {
+    std::vector<std::uint32_t> ranks;
+};
 
 } // namespace jostle

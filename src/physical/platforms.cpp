@@ -52,11 +52,14 @@ void carryRiders(StepContext& step) {
 
 void rememberPlatformVelocities(StepContext& step) {
     WorldState& w = step.world;
-    for (BodyId id : w.order.live()) {
-        Body& body = w.slots[id.index];
-        if (body.type == BodyType::Kinematic)
-            body.lastStepVelocity = body.velocity;
-    }
+    const std::span<const BodyId> live = w.order.live();
+    w.tasks->forEachBlock(std::uint32_t(live.size()), kBodiesPerBlock, [&](Block block) {
+        for (std::uint32_t k = block.begin; k < block.end; ++k) {
+            Body& body = w.slots[live[k].index];
+            if (body.type == BodyType::Kinematic)
+                body.lastStepVelocity = body.velocity;
+        }
+    });
 }
 
 } // namespace jostle

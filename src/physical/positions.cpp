@@ -82,26 +82,33 @@ void integratePositions(StepContext& step) {
 
 void correctPositions(StepContext& step) {
     WorldState& w = step.world;
-    for (SolverBody& body : step.bodies) {
-        body.position[0] = w.slots[body.slot].position.x;
-        body.position[1] = w.slots[body.slot].position.y;
-    }
+    const auto count = std::uint32_t(step.bodies.size());
+    w.tasks->forEachBlock(count, kBodiesPerBlock, [&](Block block) {
+        for (std::uint32_t k = block.begin; k < block.end; ++k) {
+            SolverBody& body = step.bodies[k];
+            body.position[0] = w.slots[body.slot].position.x;
+            body.position[1] = w.slots[body.slot].position.y;
+        }
+    });
     // A pass that moved nothing leaves the next one nothing to do.
     for (int i = 0; i < step.options.positionIterations && correctionPass(step); ++i) {
     }
-    for (const SolverBody& body : step.bodies) {
-        if (body.invMass <= 0.0f)
-            continue;
-        // What position correction moved the body is part of its separation.
-        Body& written = w.slots[body.slot];
-        const Vec2 corrected{body.position[0], body.position[1]};
-        const Vec2 moved = corrected - written.position;
-        written.separation += moved;
-        written.position = corrected;
-        // Still being pushed out of an overlap: not at rest, whatever its speed.
-        if (length(moved) > restingSpeed(written) * step.dt)
-            written.sleepTime = 0.0f;
-    }
+    w.tasks->forEachBlock(count, kBodiesPerBlock, [&](Block block) {
+        for (std::uint32_t k = block.begin; k < block.end; ++k) {
+            const SolverBody& body = step.bodies[k];
+            if (body.invMass <= 0.0f)
+                continue;
+            // What position correction moved the body is part of its separation.
+            Body& written = w.slots[body.slot];
+            const Vec2 corrected{body.position[0], body.position[1]};
+            const Vec2 moved = corrected - written.position;
+            written.separation += moved;
+            written.position = corrected;
+            // Still being pushed out of an overlap: not at rest, whatever its speed.
+            if (length(moved) > restingSpeed(written) * step.dt)
+                written.sleepTime = 0.0f;
+        }
+    });
 }
 
 } // namespace jostle

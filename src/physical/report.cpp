@@ -14,11 +14,14 @@ namespace {
 /// being crushed (if held on the other side): the solver could not push it out.
 constexpr float kCrushDepth = 0.1f;
 
+/// Contacts per block: each block lists the pairs of its contacts that touch, and its
+/// crush candidates, in contact order.
+constexpr std::uint32_t kContactsPerReportBlock = 1024;
+
 /// A dynamic body that a kinematic body moving into it overlaps deeper than kCrushDepth
 /// of its size becomes a candidate.
-void findCrush(StepContext& step, const Contact& c, std::uint32_t slotA, std::uint32_t slotB,
-               float overlap) {
-    const WorldState& w = step.world;
+void findCrush(const WorldState& w, const Contact& c, std::uint32_t slotA, std::uint32_t slotB,
+               float overlap, std::vector<CrushCandidate>& candidates) {
     const Body& a = w.slots[slotA];
     const Body& b = w.slots[slotB];
     const bool kinematicA = a.type == BodyType::Kinematic,
@@ -32,15 +35,14 @@ void findCrush(StepContext& step, const Contact& c, std::uint32_t slotA, std::ui
     const float half =
         c.axis == Contact::kSloped ? std::min(bodyHalf.x, bodyHalf.y) : bodyHalf[c.axis];
     if (dot(w.slots[by].velocity, into) > 0.0f && overlap > kCrushDepth * half)
-        step.scratch.crushCandidates.push_back({body, by, into});
+        candidates.push_back({body, by, into});
 }
 
 /// Each candidate with a contact on its far side, against something heavy (static,
 /// kinematic, or a body that holds it), is crushed.
 void reportCrushes(StepContext& step) {
     WorldState& w = step.world;
-    std::vector<CrushCandidate>& candidates = step.scratch.crushCandidates;
-    for (const CrushCandidate& candidate : candidates) {
+    step.scratch.report.crushCandidates.forEachInOrder([&](const CrushCandidate& candidate) {
         for (const Contact& c : step.contacts) {
             const std::uint32_t slotA = step.bodies[c.ia].slot, slotB = step.bodies[c.ib].slot;
             if (slotA != candidate.body && slotB != candidate.body)
@@ -58,29 +60,38 @@ void reportCrushes(StepContext& step) {
                 break;
             }
         }
-    }
-    candidates.clear();
+    });
 }
 
 } // namespace
 
 void reportEvents(StepContext& step) {
     WorldState& w = step.world;
-    step.scratch.crushCandidates.clear();
-    for (const Contact& c : step.contacts) {
-        // The solver bodies hold where the step leaves every body of a contact.
-        const float gap = -step.overlapOf(c);
-        const float skin = std::max(
-            2.0f * c.slop, kMinimumSkin * (c.axis == Contact::kSloped ? c.size : c.extent));
-        const std::uint32_t slotA = step.bodies[c.ia].slot, slotB = step.bodies[c.ib].slot;
-        // A pair that collided touched this step, if only for a moment: a bounce from the
-        // middle of the step ends it apart.
-        if (gap <= skin || c.collisionImpulse > 0.0f)
-            recordContact(w, slotA, slotB, c.normal(), c.approachSpeed, c.totalImpulse());
-        // Only a dynamic body against an infinitely heavy one can be crushed.
-        if ((c.invMassA == 0.0f) != (c.invMassB == 0.0f))
-            findCrush(step, c, slotA, slotB, -gap);
-    }
+    ReportScratch& scratch = step.scratch.report;
+    const auto count = std::uint32_t(step.contacts.size());
+    const std::uint32_t blocks = w.tasks->blocksOf(count, kContactsPerReportBlock);
+    scratch.touches.reset(blocks);
+    scratch.crushCandidates.reset(blocks);
+    w.tasks->forEachBlock(count, kContactsPerReportBlock, [&](Block block) {
+        std::vector<FoundTouch>& touches = scratch.touches[block.index];
+        for (std::uint32_t k = block.begin; k < block.end; ++k) {
+            const Contact& c = step.contacts[k];
+            // The solver bodies hold where the step leaves every body of a contact.
+            const float gap = -step.overlapOf(c);
+            const float skin = std::max(
+                2.0f * c.slop, kMinimumSkin * (c.axis == Contact::kSloped ? c.size : c.extent));
+            const std::uint32_t slotA = step.bodies[c.ia].slot, slotB = step.bodies[c.ib].slot;
+            // A pair that collided touched this step, if only for a moment: a bounce from
+            // the middle of the step ends it apart.
+            if (gap <= skin || c.collisionImpulse > 0.0f)
+                touches.push_back(
+                    touchOf(w, slotA, slotB, c.normal(), c.approachSpeed, c.totalImpulse()));
+            // Only a dynamic body against an infinitely heavy one can be crushed.
+            if ((c.invMassA == 0.0f) != (c.invMassB == 0.0f))
+                findCrush(w, c, slotA, slotB, -gap, scratch.crushCandidates[block.index]);
+        }
+    });
+    scratch.touches.forEachInOrder([&](const FoundTouch& touch) { recordTouch(w, touch); });
     for (const BodyPair& pair : step.scratch.sensorPairs) {
         if (!w.isLive(pair.a) || !w.isLive(pair.b))
             continue;

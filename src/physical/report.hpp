@@ -2,6 +2,8 @@
 // sensor overlaps, and bodies crushed by kinematic ones, handed to the world's events.
 #pragma once
 
+#include "../events.hpp"
+#include "../tasks.hpp"
 #include "jostle/math.hpp"
 
 #include <cstdint>
@@ -16,6 +18,12 @@ struct StepContext;
 struct CrushCandidate {
     std::uint32_t body, by;
     Vec2 into; ///< from the kinematic body into the dynamic one
+};
+
+/// What each block of contacts found, read back in block order (report.cpp).
+struct ReportScratch {
+    PerBlock<FoundTouch> touches;
+    PerBlock<CrushCandidate> crushCandidates;
 };
 
 void reportEvents(StepContext& step);

@@ -5,6 +5,7 @@
 
 #include "../broadphase.hpp"
 #include "contact.hpp"
+#include "contact_cache.hpp"
 #include "contacts.hpp"
 #include "continuous.hpp"
 #include "impacts.hpp"
@@ -25,13 +26,14 @@ struct PhysicalScratch {
     std::vector<std::uint32_t> solverIndex; ///< by slot
     /// Pairs of a sensor (`a`) and a body that may overlap it.
     std::vector<BodyPair> sensorPairs;
-    std::vector<CrushCandidate> crushCandidates;
     ContactsScratch contactsBuild;
     SupportScratch support;
     ContinuousScratch continuous;
     PlatformScratch platforms;
     SleepScratch sleep;
     ImpactsScratch impacts;
+    ReportScratch report;
+    StoreScratch store;
     SolverLayers layers;
 };
 
