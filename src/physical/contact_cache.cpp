@@ -3,20 +3,44 @@
 
 #include "step_context.hpp"
 
+#include <algorithm>
+
 namespace jostle {
 
 void ContactCache::clear() {
     runs_.reset(0);
     entries_.clear();
+    longRuns_.clear();
 }
 
 const CachedContact* ContactCache::find(std::uint32_t a, std::uint32_t b) const {
     if (a >= runs_.keyCount())
         return nullptr;
-    for (std::uint32_t k = runs_.begin(a); k < runs_.end(a); ++k)
+    const std::uint32_t begin = runs_.begin(a), end = runs_.end(a);
+    if (end - begin > kLongRun) {
+        const Entry* first = entries_.data() + begin;
+        const Entry* last = entries_.data() + end;
+        const Entry* found = std::lower_bound(
+            first, last, b, [](const Entry& entry, std::uint32_t key) { return entry.b < key; });
+        return found != last && found->b == b ? &found->contact : nullptr;
+    }
+    for (std::uint32_t k = begin; k < end; ++k)
         if (entries_[k].b == b)
             return &entries_[k].contact;
     return nullptr;
+}
+
+void ContactCache::endRebuild(TaskRunner& tasks) {
+    tasks.forEachBlock(std::uint32_t(longRuns_.size()), 1, [&](Block block) {
+        for (std::uint32_t k = block.begin; k < block.end; ++k) {
+            const std::uint32_t a = longRuns_[k];
+            // By the other slot, a pair's contacts in the step's order: the first is found.
+            std::sort(entries_.data() + runs_.begin(a), entries_.data() + runs_.end(a),
+                      [](const Entry& x, const Entry& y) {
+                          return x.b != y.b ? x.b < y.b : x.rank < y.rank;
+                      });
+        }
+    });
 }
 
 void storeImpulses(StepContext& step) {
@@ -54,6 +78,7 @@ void storeImpulses(StepContext& step) {
             b.separation -=
                 c.normal() * ((c.supporter == 2 ? c.normalImpulse : total) * c.invMassB * step.dt);
     });
+    cache.endRebuild(*w.tasks);
 }
 
 } // namespace jostle

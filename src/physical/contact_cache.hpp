@@ -4,6 +4,7 @@
 #pragma once
 
 #include "../counting_sort.hpp"
+#include "../tasks.hpp"
 #include "jostle/math.hpp"
 
 #include <cstdint>
@@ -24,12 +25,14 @@ struct CachedContact {
 
 /// Last step's contacts, looked up by the pair's slots. Stored grouped by the first
 /// slot (a counting sort, rebuilt every step), so a lookup scans the few contacts of one
-/// body, and lookups in creation order walk the table front to back. Never iterated for
-/// results, so nothing of its layout can leak into them.
+/// body, and lookups in creation order walk the table front to back. A body with many
+/// contacts (a floor under a crowd) has its run sorted by the other slot and searched by
+/// halves. Never iterated for results, so nothing of its layout can leak into them: a
+/// lookup finds the first of the step's contacts of the pair, however the runs lie.
 ///
 /// Rebuilt in place from this step's contacts, with no second copy: a counting pass
-/// (count(a) for each, in order, giving each its rank), then a filling pass (add for each,
-/// in any order, on any thread).
+/// (count(a) for each, in order, giving each its rank), a filling pass (add for each, in
+/// any order, on any thread), then endRebuild.
 class ContactCache {
 public:
     /// Empties the cache.
@@ -43,25 +46,39 @@ public:
     }
 
     /// Starts a rebuild for a world of `slotCount` slots; the old contents are gone.
-    void beginRebuild(std::size_t slotCount) { runs_.reset(slotCount); }
+    void beginRebuild(std::size_t slotCount) {
+        runs_.reset(slotCount);
+        longRuns_.clear();
+    }
     /// Counting pass: one more contact whose first body is `a`. Returns its rank among
     /// them, for add().
-    std::uint32_t count(std::uint32_t a) { return runs_.count(a); }
+    std::uint32_t count(std::uint32_t a) {
+        const std::uint32_t rank = runs_.count(a);
+        if (rank == kLongRun)
+            longRuns_.push_back(a);
+        return rank;
+    }
     /// Ends the counting pass.
     void endCounting() { entries_.resize(runs_.endCounting()); }
     /// Filling pass: the contact of rank `rank` among those of `a`. Contacts of different
     /// ranks may be added at once on several threads.
     void add(std::uint32_t a, std::uint32_t rank, std::uint32_t b, const CachedContact& contact) {
-        entries_[runs_.begin(a) + rank] = {b, contact};
+        entries_[runs_.begin(a) + rank] = {b, rank, contact};
     }
+    /// Ends the rebuild: sorts the long runs, on `tasks`' workers.
+    void endRebuild(TaskRunner& tasks);
 
 private:
+    /// Runs longer than this are sorted and searched by halves.
+    static constexpr std::uint32_t kLongRun = 16;
     struct Entry {
         std::uint32_t b = 0;
+        std::uint32_t rank = 0; ///< in the run as counted: the step's order of its contacts
         CachedContact contact;
     };
     Buckets runs_; ///< by slot a: its entries
     std::vector<Entry> entries_;
+    std::vector<std::uint32_t> longRuns_; ///< the slots whose runs are longer than kLongRun
 };
 
 /// Stage: store impulses. Rebuilds the world's contact cache from step.contacts, and adds
