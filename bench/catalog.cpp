@@ -8,6 +8,7 @@
 
 #include "shared/scenes.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <stdexcept>
 #include <system_error>
@@ -36,6 +37,10 @@ Case makeCase(std::string_view family, int size, int warmup, int steps) {
         c.make = [size] { return shared::tilemap(size); };
     else if (family == "pile")
         c.make = [size] { return shared::pile(size); };
+    else if (family == "long_floor")
+        c.make = [size] { return shared::crowdOnFloor(size, 1); };
+    else if (family == "tiled_floor")
+        c.make = [size] { return shared::crowdOnFloor(size, std::max(1, size / 32)); };
     else
         throw std::invalid_argument("unknown scene \"" + std::string(family) + "\"");
     return c;
@@ -78,8 +83,11 @@ std::vector<Case> defaultCases(bool quick) {
 
 /// Scenes run only when named: stress, not speed.
 std::vector<Case> stressCases() {
-    // 10,000 boxes dropped at one spot: what a step costs whatever the scene holds.
-    return {makeCase("pile", 10000, 0, 10)};
+    // 10,000 boxes dropped at one spot: what a step costs whatever the scene holds. 10,000
+    // boxes resting on one long floor and on 312 floor pieces: a floor that touches
+    // thousands of bodies costs what its pieces cost.
+    return {makeCase("pile", 10000, 0, 10), makeCase("long_floor", 10000, 60, 240),
+            makeCase("tiled_floor", 10000, 60, 240)};
 }
 
 std::vector<Case> selectCases(std::string_view name, bool quick) {

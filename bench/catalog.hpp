@@ -20,8 +20,9 @@ struct Case {
     int steps = 0;  ///< steps measured
 };
 
-/// The scene families: pyramid, many_pyramids, rain, gas, tilemap; and pile, a stress
-/// scene run only when named (--scene pile_10k).
+/// The scene families: pyramid, many_pyramids, rain, gas, tilemap; and, run only when
+/// named, pile, a stress scene (--scene pile_10k), and long_floor and tiled_floor, a crowd
+/// on one long floor and on a tiled one (--scene long_floor_10k,tiled_floor_10k).
 const std::vector<std::string_view>& families();
 
 /// The cases run by default (full sizes), or with --quick (small sizes, few steps).

@@ -146,6 +146,26 @@ Scene pile(int count) {
     return scene;
 }
 
+Scene crowdOnFloor(int count, int pieces) {
+    requirePositive(count, "crowd count");
+    requirePositive(pieces, "floor pieces");
+    constexpr float kPitch = 2.0f * kUnitHalf + 0.25f;
+    Scene scene = emptyScene({0.0f, kGravity});
+    scene.bodies.reserve(static_cast<std::size_t>(count) + static_cast<std::size_t>(pieces));
+    const float length = static_cast<float>(count) * kPitch;
+    const float piece = length / static_cast<float>(pieces);
+    for (int k = 0; k < pieces; ++k)
+        add(scene, staticBox(-0.5f * length + piece * (static_cast<float>(k) + 0.5f), 1.0f,
+                             0.5f * piece, 1.0f));
+    for (int i = 0; i < count; ++i)
+        add(scene, {.x = -0.5f * length + kPitch * (static_cast<float>(i) + 0.5f),
+                    .y = -kUnitHalf,
+                    .hw = kUnitHalf,
+                    .hh = kUnitHalf,
+                    .friction = kFriction});
+    return scene;
+}
+
 Scene gas(int count) {
     requirePositive(count, "gas count");
     constexpr float kSpacing = 3.0f;   // between centres at the start

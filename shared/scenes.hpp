@@ -64,4 +64,10 @@ Scene tilemap(int actors);
 /// to build but a bug or an editor can. count >= 1.
 Scene pile(int count);
 
+/// `count` unit boxes standing in a row, a quarter unit apart, on a static floor as long
+/// as the row, made of `pieces` equal static boxes: one long body, or the many short ones
+/// a tile map makes. A floor that touches thousands of bodies at once costs about what
+/// its pieces cost. count >= 1, pieces >= 1.
+Scene crowdOnFloor(int count, int pieces);
+
 } // namespace jostle::shared

@@ -78,6 +78,24 @@ TEST_P(SharedScenes, TilemapActorsStayInTheLevel) {
     EXPECT_EQ(run.quality.escaped, 0);
 }
 
+TEST_P(SharedScenes, ACrowdStandsStillOnOneLongFloorAndOnAPiecedOne) {
+    // Unit boxes set down exactly on the floor: nothing pushes them anywhere, and each may
+    // sink into the floor by up to twice the slop.
+    const float restingOverlap = 2.0f * kSlopFraction * 0.5f;
+    for (int pieces : {1, 40}) {
+        const Scene scene = shared::crowdOnFloor(2000, pieces);
+        const Outcome run = simulate(scene, 300, GetParam());
+        EXPECT_LE(run.quality.maxPenetration, restingOverlap + 1e-5f) << pieces;
+        EXPECT_EQ(run.quality.escaped, 0) << pieces;
+        for (std::size_t k = std::size_t(pieces); k < scene.bodies.size(); ++k) {
+            const BodyDef& start = scene.bodies[k].def;
+            ASSERT_EQ(run.positions[k].x, start.x) << pieces << " pieces, box " << k;
+            ASSERT_NEAR(run.positions[k].y, start.y, restingOverlap + 1e-5f)
+                << pieces << " pieces, box " << k;
+        }
+    }
+}
+
 INSTANTIATE_TEST_SUITE_P(SleepingOffAndOn, SharedScenes, ::testing::Bool());
 
 // Elastic boxes in a closed box: collisions may lose energy (several at once are solved
