@@ -77,8 +77,11 @@ void compare(const WorldState& world, std::vector<TouchRecord>& now,
 
 } // namespace
 
-FoundTouch touchOf(const WorldState& world, std::uint32_t body, std::uint32_t other, Vec2 normal,
-                   float approachSpeed, float impulse) {
+namespace {
+
+// recordContact's two halves, here where the compiler can join them again.
+FoundTouch findTouch(const WorldState& world, std::uint32_t body, std::uint32_t other, Vec2 normal,
+                     float approachSpeed, float impulse) {
     const StepEvents& events = world.events;
     // The surface pushes each body away from the other.
     const TouchingBit flagBody = surfaceOf(normal, events.down, world.slots[body].floorCos);
@@ -93,16 +96,27 @@ FoundTouch touchOf(const WorldState& world, std::uint32_t body, std::uint32_t ot
             flagBody};
 }
 
-void recordTouch(WorldState& world, const FoundTouch& touch) {
+void listTouch(WorldState& world, const FoundTouch& touch) {
     StepEvents& events = world.events;
     events.touching[touch.record.a.index] |= touch.flagA;
     events.touching[touch.record.b.index] |= touch.flagB;
     events.contactsNow.push_back(touch.record);
 }
 
+} // namespace
+
+FoundTouch touchOf(const WorldState& world, std::uint32_t body, std::uint32_t other, Vec2 normal,
+                   float approachSpeed, float impulse) {
+    return findTouch(world, body, other, normal, approachSpeed, impulse);
+}
+
+void recordTouch(WorldState& world, const FoundTouch& touch) {
+    listTouch(world, touch);
+}
+
 void recordContact(WorldState& world, std::uint32_t body, std::uint32_t other, Vec2 normal,
                    float approachSpeed, float impulse) {
-    recordTouch(world, touchOf(world, body, other, normal, approachSpeed, impulse));
+    listTouch(world, findTouch(world, body, other, normal, approachSpeed, impulse));
 }
 
 Vec2 pointOf(const WorldState& world, const TouchRecord& record) {

@@ -72,6 +72,8 @@ void reportEvents(StepContext& step) {
     const std::uint32_t blocks = w.tasks->blocksOf(count, kContactsPerReportBlock);
     scratch.touches.reset(blocks);
     scratch.crushCandidates.reset(blocks);
+    // One worker runs the blocks in order, on this thread: what they find is listed at once.
+    const bool inOrder = w.tasks->workers() == 1;
     w.tasks->forEachBlock(count, kContactsPerReportBlock, [&](Block block) {
         std::vector<FoundTouch>& touches = scratch.touches[block.index];
         for (std::uint32_t k = block.begin; k < block.end; ++k) {
@@ -83,9 +85,13 @@ void reportEvents(StepContext& step) {
             const std::uint32_t slotA = step.bodies[c.ia].slot, slotB = step.bodies[c.ib].slot;
             // A pair that collided touched this step, if only for a moment: a bounce from
             // the middle of the step ends it apart.
-            if (gap <= skin || c.collisionImpulse > 0.0f)
-                touches.push_back(
-                    touchOf(w, slotA, slotB, c.normal(), c.approachSpeed, c.totalImpulse()));
+            if (gap <= skin || c.collisionImpulse > 0.0f) {
+                if (inOrder)
+                    recordContact(w, slotA, slotB, c.normal(), c.approachSpeed, c.totalImpulse());
+                else
+                    touches.push_back(
+                        touchOf(w, slotA, slotB, c.normal(), c.approachSpeed, c.totalImpulse()));
+            }
             // Only a dynamic body against an infinitely heavy one can be crushed.
             if ((c.invMassA == 0.0f) != (c.invMassB == 0.0f))
                 findCrush(w, c, slotA, slotB, -gap, scratch.crushCandidates[block.index]);
