@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <span>
 
 namespace jostle {
 
@@ -41,15 +40,11 @@ void applyForces(WorldState& world, float dt) {
 }
 
 void integrateAwakeBodies(WorldState& world, float dt) {
-    const std::span<const BodyId> bodies = world.order.live();
     // Each body on its own: any split gives the same result.
-    world.tasks->forEachBlock(std::uint32_t(bodies.size()), kBodiesPerBlock, [&](Block block) {
-        for (std::uint32_t k = block.begin; k < block.end; ++k) {
-            Body& body = world.slots[bodies[k].index];
-            if (body.isDynamic() && !body.asleep) {
-                integrateVelocity(world.def, body, dt);
-                body.dropThroughTime = std::max(0.0f, body.dropThroughTime - dt);
-            }
+    world.forEachLiveBody([&](Body& body, Block) {
+        if (body.isDynamic() && !body.asleep) {
+            integrateVelocity(world.def, body, dt);
+            body.dropThroughTime = std::max(0.0f, body.dropThroughTime - dt);
         }
     });
 }
@@ -69,22 +64,18 @@ bool stopAtTheEdge(Body& body) {
 }
 
 void keepInsideTheWorld(WorldState& world) {
-    const std::span<const BodyId> live = world.order.live();
-    const auto count = std::uint32_t(live.size());
     // A flag per block, set on the workers, read after: no two threads write one.
     std::vector<std::uint8_t>& movedAsleep = world.movedAsleepByBlock;
-    movedAsleep.assign(world.tasks->blocksOf(count, kBodiesPerBlock), 0);
-    world.tasks->forEachBlock(count, kBodiesPerBlock, [&](Block block) {
-        for (std::uint32_t k = block.begin; k < block.end; ++k) {
-            Body& b = world.slots[live[k].index];
-            // Sleeping bodies too: a body can fall asleep in the very step that carried it
-            // past the edge (slow enough to rest, with a long enough dt).
-            if (b.type == BodyType::Static)
-                continue;
-            b.velocity = withinRange(b.velocity);
-            if (stopAtTheEdge(b) && b.asleep)
-                movedAsleep[block.index] = 1;
-        }
+    movedAsleep.assign(
+        world.tasks->blocksOf(std::uint32_t(world.order.live().size()), kBodiesPerBlock), 0);
+    world.forEachLiveBody([&](Body& b, Block block) {
+        // Sleeping bodies too: a body can fall asleep in the very step that carried it
+        // past the edge (slow enough to rest, with a long enough dt).
+        if (b.type == BodyType::Static)
+            return;
+        b.velocity = withinRange(b.velocity);
+        if (stopAtTheEdge(b) && b.asleep)
+            movedAsleep[block.index] = 1;
     });
     for (std::uint8_t moved : movedAsleep)
         if (moved)

@@ -19,6 +19,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <span>
 #include <utility>
 #include <vector>
 
@@ -237,6 +238,16 @@ struct WorldState {
     }
     bool isLive(std::uint32_t slot) const { return slots[slot].alive; }
     bool isResting(const Body& body) const { return body.type == BodyType::Static || body.asleep; }
+    /// Calls visit(body, block) for every live body, in blocks of kBodiesPerBlock in
+    /// creation order on the world's workers: visit may write only `body`, and what is
+    /// its block's own (by block.index).
+    template <class Visit> void forEachLiveBody(Visit&& visit) {
+        const std::span<const BodyId> live = order.live();
+        tasks->forEachBlock(std::uint32_t(live.size()), kBodiesPerBlock, [&](Block block) {
+            for (std::uint32_t k = block.begin; k < block.end; ++k)
+                visit(slots[live[k].index], block);
+        });
+    }
     /// Calls visit(other, normal, record) for each body that `id` touched at the end of the
     /// last step and that is still there; `normal` points from `other` towards `id`.
     template <class Visit> void forEachContactOf(BodyId id, Visit&& visit) const {

@@ -51,14 +51,9 @@ void carryRiders(StepContext& step) {
 }
 
 void rememberPlatformVelocities(StepContext& step) {
-    WorldState& w = step.world;
-    const std::span<const BodyId> live = w.order.live();
-    w.tasks->forEachBlock(std::uint32_t(live.size()), kBodiesPerBlock, [&](Block block) {
-        for (std::uint32_t k = block.begin; k < block.end; ++k) {
-            Body& body = w.slots[live[k].index];
-            if (body.type == BodyType::Kinematic)
-                body.lastStepVelocity = body.velocity;
-        }
+    step.world.forEachLiveBody([](Body& body, Block) {
+        if (body.type == BodyType::Kinematic)
+            body.lastStepVelocity = body.velocity;
     });
 }
 
