@@ -1,6 +1,7 @@
 // Defects an attack on every surface found (issue 19), each as the smallest case that
 // shows it: callbacks that create and destroy bodies mid-step, and scenes that pile bodies
 // at one spot.
+#include "jostle/tilemap.hpp"
 #include "jostle/world.hpp"
 
 #include <gtest/gtest.h>
@@ -85,6 +86,62 @@ TEST_P(EitherModel, PreSolveCreatesAndDestroysBodiesOfEveryType) {
 
 INSTANTIATE_TEST_SUITE_P(Hardening, EitherModel,
                          ::testing::Values(Solver::Classic, Solver::Physical));
+
+// Issue 28: a pre-solve that creates a body (or sets a tile) while another body sleeps
+// rebuilds the resting grid mid-step; a fast body's sweep then met the new body, whose slot
+// was past the step's per-slot tables (heap overflow under ASan).
+enum class Maker { StaticBox, Circle, SolidTile };
+
+class MadeWhileOneSleeps : public ::testing::TestWithParam<Maker> {};
+
+TEST_P(MadeWhileOneSleeps, InTheWayOfAFastBodyIsMetBySweepWithoutOverflow) {
+    WorldDef def;
+    def.gravity = {0, 800};
+    World world(def);
+    world.createBody({.type = BodyType::Static, .x = 0, .y = 100, .hw = 1000, .hh = 10});
+    const BodyId sleeper = world.createBody({.x = -500, .y = 85, .hw = 5, .hh = 5});
+    const BodyId a = world.createBody({.x = 0, .y = 85, .hw = 5, .hh = 5});
+    // An empty map around the fast body's path, made before anything sleeps.
+    const TileMapId map = createTileMap(world, {.x = 140, .y = 40, .tile = 20, .rows = {".."}});
+    for (int s = 0; s < 120; ++s)
+        world.step(1.0f / 60);
+    ASSERT_FALSE(world.isAwake(sleeper));
+    world.wake(a);
+    const BodyId fast =
+        world.createBody({.x = 100, .y = 50, .hw = 5, .hh = 5, .vx = 6000, .gravityScale = 0});
+    bool once = false;
+    world.setPreSolve([&](Collision&) {
+        if (!once) {
+            once = true;
+            switch (GetParam()) {
+            case Maker::StaticBox:
+                world.createBody({.type = BodyType::Static, .x = 150, .y = 50, .hw = 10, .hh = 10});
+                break;
+            case Maker::Circle:
+                world.createBody({.type = BodyType::Static,
+                                  .x = 150,
+                                  .y = 50,
+                                  .hw = 10,
+                                  .hh = 10,
+                                  .radius = 10});
+                break;
+            case Maker::SolidTile:
+                setTile(world, map, 0, 0, true);
+                break;
+            }
+        }
+        return true;
+    });
+    world.step(1.0f / 60);
+    EXPECT_TRUE(once);
+    // The fast body stops at what was made in its path (its left face, x = 140), within
+    // what position correction leaves of an overlap in one step: it does not pass through.
+    EXPECT_NEAR(world.position(fast).x, 140.0f - 5.0f, 0.5f);
+    EXPECT_TRUE(std::isfinite(world.position(sleeper).y));
+}
+
+INSTANTIATE_TEST_SUITE_P(Hardening, MadeWhileOneSleeps,
+                         ::testing::Values(Maker::StaticBox, Maker::Circle, Maker::SolidTile));
 
 // 1,000 boxes at one spot make half a million overlapping pairs; a step kept a contact for each
 // (10,000 such boxes took 8 GB). Each dynamic body now has a budget of contacts.

@@ -26,8 +26,11 @@ struct StepContext {
     std::vector<Contact>& contacts;
 
     static constexpr std::uint32_t kNoSolverBody = UINT32_MAX;
-    /// The solver body of a body, made on first use.
+    /// The solver body of a body, made on first use. A body a callback created during the
+    /// step may be met too (a sweep meets a static body made in its way).
     std::uint32_t solverBodyOf(std::uint32_t slot) {
+        if (slot >= scratch.solverIndex.size())
+            scratch.solverIndex.resize(world.slots.size(), kNoSolverBody);
         std::uint32_t& index = scratch.solverIndex[slot];
         if (index == kNoSolverBody) {
             const Body& body = world.slots[slot];
