@@ -21,7 +21,7 @@ inline void require(const char* function, const char* what, properties::Rule rul
 template <class T>
 inline void setKept(WorldState& w, BodyId id, const char* function, const char* what,
                     const properties::Property& property, T Body::*member, T value) {
-    Body& b = lookUp(w, id, function);
+    Body& b = lookUpToChange(w, id, function);
     require(function, what, property.rule, value);
     b.*member = value;
     disturb(w, id.index);

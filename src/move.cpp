@@ -36,14 +36,23 @@ private:
     std::unordered_map<std::uint32_t, Response> chosen_;
 };
 
-} // namespace
+/// Marks the world as walked by a move while it lives, however the walk ends (a filter may
+/// throw): the filter may read the world, not change it (requireChangeable).
+class MoveUnderWay {
+public:
+    explicit MoveUnderWay(WorldState& w) : w_(w) { w_.moveUnderWay = true; }
+    ~MoveUnderWay() { w_.moveUnderWay = false; }
+    MoveUnderWay(const MoveUnderWay&) = delete;
+    MoveUnderWay& operator=(const MoveUnderWay&) = delete;
 
-MoveOutcome move(World& world, BodyId id, Vec2 delta, const MoveFilter& filter) {
-    WorldState& w = WorldAccess::state(world);
-    const Body& self = lookUp(w, id, "move");
-    requireFinite("move", "delta", delta);
-    if (!inRange(self.position + delta))
-        fail("move", "position + delta must be of magnitude <= 1e9 (math.hpp)");
+private:
+    WorldState& w_;
+};
+
+/// Where body `id` goes moving by `delta`, and what it meets on the way; nothing moves.
+MoveOutcome walk(WorldState& w, BodyId id, Vec2 delta, const MoveFilter& filter) {
+    const MoveUnderWay underWay(w);
+    const Body& self = w.slots[id.index];
     const Vec2 half = self.half;
     // A rounded body moves as its shape; a ramp or a segment as its box.
     const float radius = self.shape == ShapeKind::Round ? w.shapes[id.index].radius : 0.0f;
@@ -126,6 +135,18 @@ MoveOutcome move(World& world, BodyId id, Vec2 delta, const MoveFilter& filter) 
                 left -= n * (2.0f * into);
         left = slideAlong(left, against);
     }
+    return out;
+}
+
+} // namespace
+
+MoveOutcome move(World& world, BodyId id, Vec2 delta, const MoveFilter& filter) {
+    WorldState& w = WorldAccess::state(world);
+    const Body& self = lookUpToChange(w, id, "move");
+    requireFinite("move", "delta", delta);
+    if (!inRange(self.position + delta))
+        fail("move", "position + delta must be of magnitude <= 1e9 (math.hpp)");
+    MoveOutcome out = walk(w, id, delta, filter);
     world.setPosition(id, out.centre);
     return out;
 }

@@ -54,6 +54,7 @@ const TileMapData& lookUp(const WorldState& world, TileMapId id, const char* fun
 // --- Maps --------------------------------------------------------------------------------
 
 TileMapId createTileMap(World& world, const TileMapDef& def) {
+    requireChangeable(WorldAccess::state(world), "createTileMap");
     if (auto problem = checkTileMapDef(def))
         fail("createTileMap", "TileMapDef." + problem->field + ": " + problem->problem);
     // Refused before anything is made: the map's boxes would be made before its ramps.
@@ -88,6 +89,7 @@ TileMapId createTileMap(World& world, const TileMapDef& def) {
 }
 
 void destroyTileMap(World& world, TileMapId id) {
+    requireChangeable(WorldAccess::state(world), "destroyTileMap");
     TileMapData& map = lookUp(WorldAccess::state(world), id, "destroyTileMap");
     Boxes(world, id).removeAll();
     const std::uint32_t generation = map.generation;
@@ -169,6 +171,7 @@ void setTile(World& world, TileMapId id, int column, int row, bool solid) {
 }
 
 void setTile(World& world, TileMapId id, int column, int row, char tile) {
+    requireChangeable(WorldAccess::state(world), "setTile");
     TileMapData& map = lookUp(WorldAccess::state(world), id, "setTile");
     if (column < 0 || column >= map.columns || row < 0 || row >= map.rows)
         fail("setTile", describe(column, row) + " is outside the map (" +

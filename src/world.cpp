@@ -64,14 +64,16 @@ namespace {
 // A world destroyed or overwritten from inside its own step would pull its state from
 // under the solver; a destructor cannot throw, so this stops the program with a message.
 void refuseWhileStepping(const std::unique_ptr<WorldState>& state, const char* what) {
-    if (state && state->stepping) {
-        std::fprintf(stderr, "jostle: %s from a callback during step(): stopping\n", what);
+    if (state && (state->stepping || state->moveUnderWay)) {
+        std::fprintf(stderr, "jostle: %s from a callback during %s: stopping\n", what,
+                     state->moveUnderWay ? "move()" : "step()");
         std::abort();
     }
 }
 
 // The world's settings change only between steps: the step reads them throughout.
 void requireNotStepping(const WorldState& w, const char* function) {
+    requireChangeable(w, function);
     if (w.stepping)
         fail(function, "called from a callback during step(): change the world's settings "
                        "after step() returns");
@@ -155,6 +157,7 @@ const StepProfile& World::profile() const {
 void World::step(float dt) {
     WorldState& w = *state_;
     Stopwatch stopwatch;
+    requireChangeable(w, "step");
     if (w.stepping)
         fail("step", "called from a callback during step()");
     if (!std::isfinite(dt) || dt <= 0.0f)

@@ -55,4 +55,18 @@ inline const Body& lookUp(const WorldState& world, BodyId id, const char* functi
     return lookUp(const_cast<WorldState&>(world), id, function);
 }
 
+/// Every function that changes the world checks this first: never from move()'s filter,
+/// whose sweep goes on through the world as it was.
+inline void requireChangeable(const WorldState& world, const char* function) {
+    if (world.moveUnderWay)
+        fail(function, "called from move()'s filter (the world cannot change until the move "
+                       "is done)");
+}
+
+/// The live body `id` names, for a function that changes it.
+inline Body& lookUpToChange(WorldState& world, BodyId id, const char* function) {
+    requireChangeable(world, function);
+    return lookUp(world, id, function);
+}
+
 } // namespace jostle

@@ -42,6 +42,7 @@ template <class F> void forEachKeptSetting(F&& f) {
 } // namespace
 
 BodyId World::createBody(const BodyDef& def) {
+    requireChangeable(*state_, "createBody");
     if (auto problem = checkBodyDef(def))
         fail("createBody", "BodyDef." + problem->field + ": " + problem->problem);
 
@@ -91,7 +92,7 @@ BodyId World::createBody(const BodyDef& def) {
 
 void World::destroyBody(BodyId id) {
     WorldState& w = *state_;
-    Body& body = lookUp(w, id, "destroyBody");
+    Body& body = lookUpToChange(w, id, "destroyBody");
     disturb(w, id.index);
     w.events.destroyedSincePublish = true;
     if (body.type == BodyType::Static)
@@ -139,7 +140,7 @@ BodyType World::type(BodyId id) const {
 }
 
 void World::setType(BodyId id, BodyType type) {
-    Body& b = lookUp(*state_, id, "setType");
+    Body& b = lookUpToChange(*state_, id, "setType");
     if (const char* problem = properties::formProblem(type))
         fail("setType", std::string("type ") + problem);
     if (type == BodyType::Dynamic && (b.shape == ShapeKind::Ramp || b.shape == ShapeKind::Segment))
@@ -159,7 +160,7 @@ Vec2 World::position(BodyId id) const {
 }
 
 void World::setPosition(BodyId id, Vec2 centre) {
-    Body& b = lookUp(*state_, id, "setPosition");
+    Body& b = lookUpToChange(*state_, id, "setPosition");
     requireFinite("setPosition", "centre", centre);
     disturb(*state_, id.index); // what rested on it, where it was
     b.position = centre;
@@ -171,7 +172,7 @@ Vec2 World::velocity(BodyId id) const {
 }
 
 void World::setVelocity(BodyId id, Vec2 velocity) {
-    Body& b = lookUp(*state_, id, "setVelocity");
+    Body& b = lookUpToChange(*state_, id, "setVelocity");
     requireFinite("setVelocity", "velocity", velocity);
     if (b.type == BodyType::Static && (velocity.x != 0.0f || velocity.y != 0.0f))
         fail("setVelocity", "a static body cannot move (make it kinematic)");
@@ -184,7 +185,7 @@ Vec2 World::halfExtents(BodyId id) const {
 }
 
 void World::setHalfExtents(BodyId id, Vec2 halfExtents) {
-    Body& b = lookUp(*state_, id, "setHalfExtents");
+    Body& b = lookUpToChange(*state_, id, "setHalfExtents");
     require("setHalfExtents", "halfExtents.x", properties::kHw.rule, halfExtents.x);
     require("setHalfExtents", "halfExtents.y", properties::kHh.rule, halfExtents.y);
     if (std::min(halfExtents.x, halfExtents.y) < state_->shapes[id.index].radius)
@@ -218,7 +219,7 @@ float World::mass(BodyId id) const {
 }
 
 void World::setMass(BodyId id, float mass) {
-    Body& b = lookUp(*state_, id, "setMass");
+    Body& b = lookUpToChange(*state_, id, "setMass");
     // An explicit mass: a size (BodyDef::mass's 0, "from density", is setDensity's to ask).
     require("setMass", "mass", properties::Rule::Size, mass);
     b.mass = mass;
@@ -227,7 +228,7 @@ void World::setMass(BodyId id, float mass) {
 }
 
 void World::setDensity(BodyId id, float density) {
-    Body& b = lookUp(*state_, id, "setDensity");
+    Body& b = lookUpToChange(*state_, id, "setDensity");
     require("setDensity", "density", properties::kDensity.rule, density);
     b.mass = 0.0f;
     b.density = density;
@@ -257,7 +258,7 @@ bool World::isBullet(BodyId id) const {
 }
 
 void World::setBullet(BodyId id, bool bullet) {
-    lookUp(*state_, id, "setBullet").bullet = bullet;
+    lookUpToChange(*state_, id, "setBullet").bullet = bullet;
 }
 
 bool World::isAwake(BodyId id) const {
@@ -265,7 +266,7 @@ bool World::isAwake(BodyId id) const {
 }
 
 void World::wake(BodyId id) {
-    lookUp(*state_, id, "wake");
+    lookUpToChange(*state_, id, "wake");
     disturb(*state_, id.index); // its island, and the time it has been still, start over
 }
 
@@ -274,7 +275,7 @@ Vec2 World::oneWay(BodyId id) const {
 }
 
 void World::setOneWay(BodyId id, Vec2 normal) {
-    Body& body = lookUp(*state_, id, "setOneWay");
+    Body& body = lookUpToChange(*state_, id, "setOneWay");
     if (!isValidOneWay(normal))
         fail("setOneWay", "normal must be {0, 0} or one of {±1, 0}, {0, ±1}");
     if (normal != Vec2{} && !body.isBox())
@@ -284,7 +285,7 @@ void World::setOneWay(BodyId id, Vec2 normal) {
 }
 
 void World::dropThrough(BodyId id, float seconds) {
-    Body& body = lookUp(*state_, id, "dropThrough");
+    Body& body = lookUpToChange(*state_, id, "dropThrough");
     if (body.type != BodyType::Dynamic)
         fail("dropThrough", "only a dynamic body drops through one-way platforms");
     if (!(seconds >= 0.0f) || !std::isfinite(seconds))
@@ -317,7 +318,7 @@ std::size_t World::readVelocities(std::span<Vec2> out) const {
 // --- Forces -------------------------------------------------------------------------------
 
 void World::applyForce(BodyId id, Vec2 force) {
-    const Body& b = lookUp(*state_, id, "applyForce");
+    const Body& b = lookUpToChange(*state_, id, "applyForce");
     requireFinite("applyForce", "force", force);
     if (!b.isDynamic())
         return;
@@ -326,7 +327,7 @@ void World::applyForce(BodyId id, Vec2 force) {
 }
 
 void World::applyImpulse(BodyId id, Vec2 impulse) {
-    Body& b = lookUp(*state_, id, "applyImpulse");
+    Body& b = lookUpToChange(*state_, id, "applyImpulse");
     requireFinite("applyImpulse", "impulse", impulse);
     if (!b.isDynamic())
         return;
@@ -339,7 +340,7 @@ std::uint32_t World::category(BodyId id) const {
 }
 
 void World::setCategory(BodyId id, std::uint32_t bits) {
-    lookUp(*state_, id, "setCategory").category = bits;
+    lookUpToChange(*state_, id, "setCategory").category = bits;
     disturb(*state_, id.index);
 }
 
@@ -348,7 +349,7 @@ std::uint32_t World::mask(BodyId id) const {
 }
 
 void World::setMask(BodyId id, std::uint32_t bits) {
-    lookUp(*state_, id, "setMask").mask = bits;
+    lookUpToChange(*state_, id, "setMask").mask = bits;
     disturb(*state_, id.index);
 }
 
@@ -357,7 +358,7 @@ bool World::isSensor(BodyId id) const {
 }
 
 void World::setSensor(BodyId id, bool sensor) {
-    lookUp(*state_, id, "setSensor").sensor = sensor;
+    lookUpToChange(*state_, id, "setSensor").sensor = sensor;
     disturb(*state_, id.index);
 }
 
@@ -367,7 +368,7 @@ void* World::userData(BodyId id) const {
 }
 
 void World::setUserData(BodyId id, void* data) {
-    lookUp(*state_, id, "setUserData");
+    lookUpToChange(*state_, id, "setUserData");
     state_->asGiven[id.index].userData = data;
 }
 

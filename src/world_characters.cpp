@@ -14,7 +14,7 @@ bool World::isCharacter(BodyId id) const {
 }
 
 void World::setCharacter(BodyId id, bool character) {
-    lookUp(*state_, id, "setCharacter").character = character;
+    lookUpToChange(*state_, id, "setCharacter").character = character;
     disturb(*state_, id.index);
 }
 
@@ -33,7 +33,7 @@ float World::floorAngle(BodyId id) const {
 }
 
 void World::setFloorAngle(BodyId id, float degrees) {
-    Body& b = lookUp(*state_, id, "setFloorAngle");
+    Body& b = lookUpToChange(*state_, id, "setFloorAngle");
     require("setFloorAngle", "degrees", properties::kFloorAngle.rule, degrees);
     state_->asGiven[id.index].floorAngle = degrees;
     b.floorCos = floorCosOf(degrees);
@@ -45,7 +45,7 @@ float World::snapDown(BodyId id) const {
 }
 
 void World::setSnapDown(BodyId id, float distance) {
-    const bool was = lookUp(*state_, id, "setSnapDown").snapDown > 0.0f;
+    const bool was = lookUpToChange(*state_, id, "setSnapDown").snapDown > 0.0f;
     setKept(*state_, id, "setSnapDown", "distance", properties::kSnapDown, &Body::snapDown,
             distance);
     state_->snappingBodies += std::uint32_t(distance > 0.0f) - std::uint32_t(was);
@@ -56,7 +56,7 @@ float World::walkSpeed(BodyId id) const {
 }
 
 void World::setWalkSpeed(BodyId id, float speed) {
-    Body& b = lookUp(*state_, id, "setWalkSpeed");
+    Body& b = lookUpToChange(*state_, id, "setWalkSpeed");
     requireFinite("setWalkSpeed", "speed", speed);
     // A standing character, told to stand every frame, may sleep.
     const bool changed = b.walkSpeed != speed;

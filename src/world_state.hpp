@@ -148,6 +148,8 @@ struct WorldState {
     /// slot a solver still refers to is reused before the step ends.
     bool stepping = false;
     std::vector<std::uint32_t> pendingFree;
+    /// True while move() walks the world: its filter may read the world, not change it.
+    bool moveUnderWay = false;
 
     /// Last step's contacts of the physical model, by pairKey. Only looked up, never
     /// iterated, so its hash order cannot leak into the results.

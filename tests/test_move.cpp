@@ -2,11 +2,16 @@
 // pins down, in jostle's terms (bump gives a rect's top-left corner and size; jostle a
 // centre and half extents), plus the places where jostle's rules differ on purpose.
 #include "jostle/query.hpp"
+#include "jostle/tilemap.hpp"
 #include "jostle/world.hpp"
 
 #include <gtest/gtest.h>
 
+#include <functional>
 #include <map>
+#include <memory>
+#include <string>
+#include <vector>
 
 namespace jostle {
 namespace {
@@ -174,6 +179,111 @@ TEST_F(MoveTest, BadArgumentsThrow) {
     EXPECT_THROW(move(world, item, {2e9f, 0}), Error);
     world.destroyBody(item);
     EXPECT_THROW(move(world, item, {1, 0}), Error);
+}
+
+// Issue 28: a filter that changed the world freed what the walk was reading (a filter that
+// created a body: use-after-free in the candidates; one that destroyed the world: in the
+// cast). Every call that changes the world now throws from a filter, as in C and Lua.
+TEST_F(MoveTest, EveryCallThatChangesTheWorldIsRefusedFromTheFilter) {
+    const BodyId wall = world.createBody(rect(3, 0, 1, 1));
+    const std::vector<std::function<void()>> changes = {
+        [&] { world.createBody(rect(10, 10, 1, 1)); },
+        [&] { world.destroyBody(wall); },
+        [&] {
+            world.setPosition(wall, {5, 5});
+        },
+        [&] {
+            world.setVelocity(item, {1, 0});
+        },
+        [&] {
+            world.setHalfExtents(wall, {2, 2});
+        },
+        [&] { world.setBounce(wall, 0.5f); },
+        [&] { world.setType(wall, BodyType::Kinematic); },
+        [&] { world.setUserData(wall, nullptr); },
+        [&] { world.setBullet(item, true); },
+        [&] { world.setSensor(wall, true); },
+        [&] { world.setWalkSpeed(item, 1); },
+        [&] { world.wake(wall); },
+        [&] {
+            world.applyImpulse(item, {1, 0});
+        },
+        [&] {
+            world.setGravity({0, 1});
+        },
+        [&] { world.step(1.0f / 60); },
+        [&] {
+            move(world, wall, {1, 0});
+        },
+        [&] { createTileMap(world, {.tile = 1, .rows = {"#"}}); },
+    };
+    for (std::size_t k = 0; k < changes.size(); ++k) {
+        std::string message;
+        const MoveOutcome out = move(world, item, {5, 0}, [&](BodyId) {
+            try {
+                changes[k]();
+            } catch (const Error& e) {
+                message = e.what();
+            }
+            return Response::Slide;
+        });
+        EXPECT_NE(message.find("called from move()'s filter"), std::string::npos)
+            << "change " << k << ": " << message;
+        // Nothing changed: the wall is where it was, and stops the move.
+        EXPECT_EQ(out.centre, (Vec2{2.5f, 0.5f})) << "change " << k;
+        ASSERT_TRUE(world.isValid(wall));
+        EXPECT_EQ(world.position(wall), (Vec2{3.5f, 0.5f}));
+        world.setPosition(item, {0.5f, 0.5f});
+    }
+    // Reading is allowed, and once the move is done the world changes again.
+    move(world, item, {1, 0}, [&](BodyId other) {
+        EXPECT_EQ(world.position(other), (Vec2{3.5f, 0.5f}));
+        return Response::Slide;
+    });
+    world.createBody(rect(10, 10, 1, 1));
+    EXPECT_EQ(world.bodyCount(), 3u);
+}
+
+// The attack's case: move() called from a pre-solve, with a filter that creates bodies.
+TEST(MoveFromACallback, AFilterCreatingBodiesFromAPreSolveIsRefusedAndTheStepGoesOn) {
+    World world(WorldDef{.gravity = {0, 100}});
+    world.createBody({.type = BodyType::Static, .x = 0, .y = 2, .hw = 50, .hh = 1});
+    world.createBody({.x = 0, .y = 0.5f, .hw = 1, .hh = 1});
+    const BodyId mover = world.createBody(rect(-20, -20, 1, 1, BodyType::Kinematic));
+    world.createBody(rect(-10, -20, 1, 1));
+    int refused = 0;
+    world.setPreSolve([&](Collision&) {
+        move(world, mover, {20, 0}, [&](BodyId) {
+            try {
+                for (int i = 0; i < 100; ++i)
+                    world.createBody(rect(float(i) * 3, -40, 1, 1));
+            } catch (const Error&) {
+                ++refused;
+            }
+            return Response::Slide;
+        });
+        return true;
+    });
+    for (int i = 0; i < 5; ++i)
+        world.step(1.0f / 60);
+    EXPECT_GT(refused, 0);
+    EXPECT_EQ(world.bodyCount(), 4u);
+}
+
+// Destroying the world from a filter cannot throw (a destructor): it stops the program
+// with a message, as destroying it from a step's callback does.
+TEST(MoveFromACallbackDeathTest, DestroyingTheWorldFromTheFilterStopsWithAMessage) {
+    EXPECT_DEATH(
+        {
+            auto world = std::make_unique<World>(WorldDef{});
+            const BodyId item = world->createBody(rect(0, 0, 1, 1, BodyType::Kinematic));
+            world->createBody(rect(3, 0, 1, 1));
+            move(*world, item, {5, 0}, [&](BodyId) {
+                world.reset();
+                return Response::Slide;
+            });
+        },
+        "World destroyed from a callback during move");
 }
 
 } // namespace

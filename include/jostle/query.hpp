@@ -242,7 +242,10 @@ enum class Response : std::uint8_t {
 };
 
 /// Chooses the response to each body in the way. Called at most once per body and move,
-/// while move() walks the world: it may read the world, and must not change it.
+/// while move() walks the world: it may read the world, not change it. Every call that
+/// would change it (createBody, destroyBody, a setter, step, move, a tile map's change)
+/// throws jostle::Error from the filter, "...: called from move()'s filter", and changes
+/// nothing; destroying the world from it stops the program with a message.
 using MoveFilter = std::function<Response(BodyId other)>;
 
 /// A body move() met.
