@@ -2,8 +2,12 @@
 // no job system.
 #include "tasks.hpp"
 
+#include "jostle/error.hpp"
+
 #include <atomic>
 #include <mutex>
+#include <string>
+#include <system_error>
 #include <thread>
 #include <vector>
 
@@ -39,13 +43,29 @@ template <class T> T waitWhileEqual(const std::atomic<T>& value, T old) {
 /// calling thread (worker 0). Between tasks they spin a little, then sleep.
 class ThreadPool {
 public:
+    /// Starts `threads` threads, or, if the system will not start them all, stops those
+    /// it started and throws jostle::Error.
     explicit ThreadPool(std::uint32_t threads) {
         threads_.reserve(threads);
-        for (std::uint32_t k = 0; k < threads; ++k)
-            threads_.emplace_back([this, k] { serve(k + 1); });
+        try {
+            for (std::uint32_t k = 0; k < threads; ++k)
+                threads_.emplace_back([this, k] { serve(k + 1); });
+        } catch (const std::system_error& error) {
+            const std::size_t started = threads_.size();
+            stop();
+            throw Error("World: WorldDef.tasks.workers = " + std::to_string(threads + 1) +
+                        ": the system would start only " + std::to_string(started) +
+                        " threads beside the calling one (" + error.what() + ")");
+        }
     }
 
-    ~ThreadPool() {
+    ~ThreadPool() { stop(); }
+
+    ThreadPool(const ThreadPool&) = delete;
+    ThreadPool& operator=(const ThreadPool&) = delete;
+
+    /// Tells the threads to stop and joins them.
+    void stop() {
         {
             std::lock_guard<std::mutex> lock(mutex_);
             stopping_ = true;
@@ -54,6 +74,7 @@ public:
         generation_.notify_all();
         for (std::thread& thread : threads_)
             thread.join();
+        threads_.clear();
     }
 
     /// Runs task over [0, items), one item a turn, and returns when all have run.
@@ -148,8 +169,105 @@ void TaskRunner::dispatch(TaskFn task, std::uint32_t blocks, void* context) {
         pool_->run(task, blocks, context);
         return;
     }
-    if (void* handle = system_.enqueueTask(task, blocks, 1, context, system_.userContext))
+    dispatchGuarded(task, blocks, context);
+}
+
+namespace {
+
+/// A task as handed to a game's job system, which is trusted with nothing: each range it
+/// runs is checked against the contract (within the task, on a worker in range) and each
+/// block is claimed before it runs, so a range run twice, out of bounds or never cannot
+/// touch the step's memory wrongly. finishOnCallingThread runs what was left undone.
+class GuardedTask {
+public:
+    GuardedTask(TaskFn task, std::uint32_t blocks, void* context, std::uint32_t workers,
+                std::atomic<std::uint8_t>* claimed)
+        : task_(task), blocks_(blocks), context_(context), workers_(workers), claimed_(claimed) {
+        for (std::uint32_t b = 0; b < blocks; ++b)
+            claimed_[b].store(0, std::memory_order_relaxed);
+    }
+
+    static void run(std::uint32_t begin, std::uint32_t end, std::uint32_t worker, void* self) {
+        static_cast<GuardedTask*>(self)->runRange(begin, end, worker);
+    }
+
+    /// After finishTask: runs the blocks no range ran, then waits for those still running.
+    void finishOnCallingThread() {
+        for (std::uint32_t b = 0; b < blocks_; ++b)
+            if (claimed_[b].exchange(1, std::memory_order_acq_rel) == 0) {
+                note("never ran item " + std::to_string(b));
+                task_(b, b + 1, 0, context_);
+                finished_.fetch_add(1, std::memory_order_release);
+            }
+        while (finished_.load(std::memory_order_acquire) != blocks_)
+            std::this_thread::yield();
+    }
+
+    /// The first way the job system broke the contract, or "".
+    std::string problem() {
+        std::lock_guard<std::mutex> lock(mutex_);
+        return problem_;
+    }
+
+private:
+    void runRange(std::uint32_t begin, std::uint32_t end, std::uint32_t worker) {
+        if (!(begin < end && end <= blocks_)) {
+            note("ran the range [" + std::to_string(begin) + ", " + std::to_string(end) +
+                 ") of a task of " + std::to_string(blocks_) + " items");
+            return;
+        }
+        if (worker >= workers_)
+            note("ran a range on worker " + std::to_string(worker) + " of " +
+                 std::to_string(workers_));
+        for (std::uint32_t b = begin; b < end; ++b) {
+            if (claimed_[b].exchange(1, std::memory_order_acq_rel) != 0) {
+                note("ran item " + std::to_string(b) + " twice");
+                continue;
+            }
+            task_(b, b + 1, worker, context_);
+            finished_.fetch_add(1, std::memory_order_release);
+        }
+    }
+
+    void note(const std::string& what) {
+        std::lock_guard<std::mutex> lock(mutex_);
+        if (problem_.empty())
+            problem_ = what;
+    }
+
+    TaskFn task_;
+    std::uint32_t blocks_;
+    void* context_;
+    std::uint32_t workers_;
+    std::atomic<std::uint8_t>* claimed_;
+    std::atomic<std::uint32_t> finished_{0};
+    std::mutex mutex_;
+    std::string problem_;
+};
+
+} // namespace
+
+void TaskRunner::dispatchGuarded(TaskFn task, std::uint32_t blocks, void* context) {
+    if (claimedCapacity_ < blocks) {
+        claimed_ = std::make_unique<std::atomic<std::uint8_t>[]>(blocks);
+        claimedCapacity_ = blocks;
+    }
+    GuardedTask guarded(task, blocks, context, workers_, claimed_.get());
+    if (void* handle =
+            system_.enqueueTask(&GuardedTask::run, blocks, 1, &guarded, system_.userContext))
         system_.finishTask(handle, system_.userContext);
+    guarded.finishOnCallingThread();
+    if (brokenContract_.empty())
+        brokenContract_ = guarded.problem();
+}
+
+std::optional<std::string> TaskRunner::takeBrokenContract() {
+    if (brokenContract_.empty())
+        return std::nullopt;
+    std::string problem = std::move(brokenContract_);
+    brokenContract_.clear();
+    return "the game's task system broke its contract (jostle/tasks.hpp): it " + problem +
+           "; jostle did each item once, on the calling thread where it had to";
 }
 
 } // namespace jostle

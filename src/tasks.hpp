@@ -6,8 +6,11 @@
 
 #include "jostle/tasks.hpp"
 
+#include <atomic>
 #include <cstdint>
 #include <memory>
+#include <optional>
+#include <string>
 #include <vector>
 
 namespace jostle {
@@ -80,13 +83,23 @@ public:
     /// may be shorter), on the workers, and returns when all have run.
     template <class Run> void forEachBlock(std::uint32_t count, std::uint32_t block, Run&& run);
 
+    /// How the game's job system broke the contract of jostle/tasks.hpp since this was last
+    /// asked (the first way it did), or nothing. The work was done all the same: each block
+    /// once, what the job system left undone on the calling thread.
+    std::optional<std::string> takeBrokenContract();
+
 private:
     void dispatch(TaskFn task, std::uint32_t blocks, void* context);
+    void dispatchGuarded(TaskFn task, std::uint32_t blocks, void* context);
 
     TaskSystem system_;
     std::uint32_t workers_;
     std::uint32_t testBlock_ = 0;
     std::unique_ptr<ThreadPool> pool_;
+    /// For a game's job system: which blocks of the task under way have been taken.
+    std::unique_ptr<std::atomic<std::uint8_t>[]> claimed_;
+    std::uint32_t claimedCapacity_ = 0;
+    std::string brokenContract_;
 };
 
 template <class Run>

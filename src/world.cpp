@@ -7,11 +7,13 @@
 #include "physical/sleep.hpp"
 #include "physical/step.hpp"
 #include "stopwatch.hpp"
+#include "tasks.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <optional>
 #include <string>
 
 namespace jostle {
@@ -186,6 +188,8 @@ void World::step(float dt) {
     }
     keepInsideTheWorld(w);
     w.profile.step = stopwatch.lap();
+    if (std::optional<std::string> broken = w.tasks->takeBrokenContract())
+        fail("step", *broken);
 }
 
 Vec2 World::gravity() const {

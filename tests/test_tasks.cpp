@@ -5,8 +5,16 @@
 
 #include <gtest/gtest.h>
 
+#include <sys/resource.h>
+#include <unistd.h>
+
+#include <algorithm>
 #include <atomic>
 #include <cstdint>
+#include <fstream>
+#include <string>
+#include <thread>
+#include <utility>
 #include <vector>
 
 namespace {
@@ -97,6 +105,147 @@ TEST(TaskSystem, WorldsWithThreadsComeAndGo) {
         world.step(1.0f / 60.0f);
         EXPECT_GT(world.velocity(world.bodies().back()).y, 0.0f) << "the step ran";
     }
+}
+
+// --- Job systems that break the contract (issue 28) ----------------------------------------
+
+/// A job system that breaks the contract of jostle/tasks.hpp in one way, on the calling
+/// thread or on two threads at once.
+struct BrokenJobs {
+    enum class Breach { None, RunsEachRangeTwice, OnePastTheEnd, SkipsARange, RunsHalf };
+    Breach breach = Breach::None;
+    bool twoThreads = false;
+    static void* enqueue(TaskFn task, std::uint32_t items, std::uint32_t, void* taskContext,
+                         void* user) {
+        const BrokenJobs& jobs = *static_cast<BrokenJobs*>(user);
+        auto ranges = [&](std::uint32_t first, std::uint32_t step, std::uint32_t worker) {
+            for (std::uint32_t begin = first; begin < items; begin += step) {
+                switch (jobs.breach) {
+                case Breach::None:
+                    task(begin, begin + 1, worker, taskContext);
+                    break;
+                case Breach::RunsEachRangeTwice:
+                    task(begin, begin + 1, worker, taskContext);
+                    task(begin, begin + 1, worker, taskContext);
+                    break;
+                case Breach::OnePastTheEnd:
+                    task(begin, std::min(items, begin + 1) + (begin + 1 == items), worker,
+                         taskContext);
+                    break;
+                case Breach::SkipsARange:
+                    if (begin != items / 2)
+                        task(begin, begin + 1, worker, taskContext);
+                    break;
+                case Breach::RunsHalf:
+                    if (begin < items / 2)
+                        task(begin, begin + 1, worker, taskContext);
+                    break;
+                }
+            }
+        };
+        if (jobs.twoThreads) {
+            std::thread other([&] { ranges(1, 2, 1); });
+            ranges(0, 2, 0);
+            other.join();
+        } else {
+            ranges(0, 1, 0);
+        }
+        return nullptr; // all ran before returning
+    }
+    static void finish(void*, void*) {}
+};
+
+std::vector<Vec2> positionsOf(const World& world) {
+    std::vector<Vec2> out(world.bodyCount());
+    world.readPositions(out);
+    return out;
+}
+
+// A job system that runs a range twice, runs one out of bounds, or never runs some: the
+// step is done all the same, each block once (the same bits as a good job system gives),
+// and step() then throws jostle::Error saying how the contract was broken. Before, these
+// wrote out of bounds (UBSan in box_grid.cpp, ASan in broadphase.cpp) or left bodies
+// silently unmoved.
+TEST(TaskSystem, AJobSystemThatBreaksTheContractCannotCorruptTheStep) {
+    using Breach = BrokenJobs::Breach;
+    const std::pair<Breach, const char*> breaches[] = {
+        {Breach::RunsEachRangeTwice, "twice"},
+        {Breach::OnePastTheEnd, "ran the range"},
+        {Breach::SkipsARange, "never ran item"},
+        {Breach::RunsHalf, "never ran item"},
+    };
+    BrokenJobs good;
+    World reference = crowdOf(6000, {.workers = 4,
+                                     .enqueueTask = &BrokenJobs::enqueue,
+                                     .finishTask = &BrokenJobs::finish,
+                                     .userContext = &good});
+    for (int i = 0; i < 3; ++i)
+        reference.step(1.0f / 60.0f);
+    for (bool twoThreads : {false, true})
+        for (const auto& [breach, says] : breaches) {
+            BrokenJobs jobs{breach, twoThreads};
+            World world = crowdOf(6000, {.workers = 4,
+                                         .enqueueTask = &BrokenJobs::enqueue,
+                                         .finishTask = &BrokenJobs::finish,
+                                         .userContext = &jobs});
+            for (int i = 0; i < 3; ++i) {
+                try {
+                    world.step(1.0f / 60.0f);
+                    ADD_FAILURE() << "step " << i << " did not throw, breach " << int(breach);
+                } catch (const Error& e) {
+                    const std::string message = e.what();
+                    EXPECT_NE(message.find("step: the game's task system broke its contract"),
+                              std::string::npos)
+                        << message;
+                    EXPECT_NE(message.find(says), std::string::npos) << message;
+                }
+            }
+            EXPECT_EQ(positionsOf(world), positionsOf(reference))
+                << "breach " << int(breach) << (twoThreads ? " on two threads" : "");
+        }
+}
+
+#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+#define JOSTLE_SANITIZED 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer) || __has_feature(thread_sanitizer)
+#define JOSTLE_SANITIZED 1
+#endif
+#endif
+
+// When the system will not start a world's threads, the world is refused with
+// jostle::Error, the threads it did start stopped; the process used to terminate (the
+// pool's constructor threw with threads still running). The threads are kept from
+// starting by a limit on the process's address space, which a sanitizer's shadow memory
+// would not fit in: skipped in those builds.
+TEST(TaskSystem, ThreadsThatCannotStartAreAnErrorNotATermination) {
+#ifdef JOSTLE_SANITIZED
+    GTEST_SKIP() << "an address-space limit and a sanitizer's shadow memory do not mix";
+#else
+    rlimit was{};
+    ASSERT_EQ(getrlimit(RLIMIT_AS, &was), 0);
+    std::ifstream statm("/proc/self/statm");
+    std::size_t pages = 0;
+    statm >> pages;
+    ASSERT_GT(pages, 0u);
+    // Room for the process as it is and 48 MB more: a thread's stack alone takes 8 MB.
+    const rlimit tight{pages * std::size_t(sysconf(_SC_PAGESIZE)) + (48u << 20), was.rlim_max};
+    ASSERT_EQ(setrlimit(RLIMIT_AS, &tight), 0);
+    std::string message;
+    try {
+        World world(WorldDef{.tasks = {.workers = 64}});
+    } catch (const Error& e) {
+        message = e.what();
+    }
+    setrlimit(RLIMIT_AS, &was);
+    EXPECT_NE(message.find("World: WorldDef.tasks.workers = 64: the system would start only"),
+              std::string::npos)
+        << message;
+    // And the process goes on: a world with threads steps as before.
+    World world = crowdOf(3000, {.workers = 2});
+    world.step(1.0f / 60.0f);
+    EXPECT_GT(world.velocity(world.bodies().back()).y, 0.0f);
+#endif
 }
 
 } // namespace

@@ -37,10 +37,22 @@ using EnqueueTaskFn = void* (*)(TaskFn task, std::uint32_t itemCount, std::uint3
 /// Waits until every range of the task enqueueTask returned `userTask` for has run.
 using FinishTaskFn = void (*)(void* userTask, void* userContext);
 
+// A job system that breaks this contract cannot corrupt the world: jostle checks every
+// range it runs (within [0, itemCount), on a worker in [0, workers)) and takes each item
+// once, so an item run twice, a range out of bounds or a range never run changes nothing
+// it should not; what was left undone is run on the calling thread after finishTask. The
+// step then ends as it would have, and World::step throws jostle::Error saying how the
+// contract was broken ("step: the game's task system broke its contract (jostle/
+// tasks.hpp): it ran item 3 twice; ..."). What jostle cannot catch: a range still
+// running, or starting, after finishTask has returned.
+
 /// How a world shares its step among threads (WorldDef::tasks).
 struct TaskSystem {
     /// How many threads may work on a step at once, the calling thread included, in
-    /// [1, 64]. 1 (the default): the calling thread alone, no threads started.
+    /// [1, 64]. 1 (the default): the calling thread alone, no threads started. If the
+    /// system will not start jostle's own threads, the World constructor stops those it
+    /// started and throws jostle::Error ("World: WorldDef.tasks.workers = 64: the system
+    /// would start only 12 threads beside the calling one (...)").
     int workers = 1;
     /// The game's job system, both or neither. Neither, with workers > 1: jostle's own
     /// threads.
