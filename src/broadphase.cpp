@@ -59,18 +59,17 @@ public:
         w_.restingFound.forEachInOrder([&](const Found& found) {
             if (found.wake)
                 toWake.push_back(found.slot);
-            else if (found.slot == kLeftOut)
-                ++w_.pairsLeftOut;
             else
                 add(w_.movingSlots[found.moving], found.slot);
         });
+        for (std::uint32_t leftOut : w_.restingLeftOut)
+            w_.pairsLeftOut += leftOut;
         for (std::uint32_t slot : toWake)
             wakeIsland(w_, slot);
         return toWake.empty();
     }
 
 private:
-    static constexpr std::uint32_t kLeftOut = UINT32_MAX;
     using Found = WorldState::RestingFind;
 
     /// The moving bodies, in creation order, and the grid of the boxes they may sweep:
@@ -107,58 +106,99 @@ private:
         w_.movingGrid.build(bounds, w_.tasks.get());
     }
 
-    /// Pairs of moving bodies: found in blocks, then kept within the budget in order.
+    /// Pairs of moving bodies: found in blocks, then kept within the budget in order. A
+    /// block keeps at most a budget of pairs for each of its grid items: one that finds
+    /// more holds a pile, and keeping them all would take memory quadratic in the pile.
+    /// It gives up, and its items are searched again in order, each pair spent as found.
     void findMovingPairs() {
         const BoxGrid& grid = w_.movingGrid;
         PerBlock<std::pair<std::uint32_t, std::uint32_t>>& found = w_.movingFound;
-        found.reset(w_.tasks->blocksOf(grid.pairItems(), kItemsPerBlock));
+        const std::uint32_t blocks = w_.tasks->blocksOf(grid.pairItems(), kItemsPerBlock);
+        found.reset(blocks);
+        w_.movingPiled.assign(blocks, 0);
         w_.tasks->forEachBlock(grid.pairItems(), kItemsPerBlock, [&](Block block) {
             std::vector<std::pair<std::uint32_t, std::uint32_t>>& mine = found[block.index];
-            grid.forEachPairOf(block.begin, block.end, [&](std::uint32_t i, std::uint32_t j) {
-                const std::uint32_t a = w_.movingSlots[std::min(i, j)];
-                const std::uint32_t b = w_.movingSlots[std::max(i, j)];
-                if (w_.movingDynamic[i] || w_.movingDynamic[j] || oneIsSensor(a, b))
-                    mine.emplace_back(i, j);
-            });
+            const std::size_t most = std::size_t(block.end - block.begin) * budget_;
+            for (std::uint32_t k = block.begin; k < block.end && mine.size() <= most; ++k)
+                grid.forEachPairOf(k, k + 1, [&](std::uint32_t i, std::uint32_t j) {
+                    if (mine.size() <= most && isPair(i, j))
+                        mine.emplace_back(i, j);
+                });
+            if (mine.size() > most) {
+                mine.clear();
+                w_.movingPiled[block.index] = 1;
+            }
         });
         // The moving grid holds its bodies in creation order: the smaller index is `a`.
         w_.pairsTaken.assign(w_.movingSlots.size(), 0);
-        found.forEachInOrder([&](const std::pair<std::uint32_t, std::uint32_t>& pair) {
-            const auto [i, j] = pair;
-            if (withinBudget(i, j))
-                pairs_.push_back({w_.movingSlots[std::min(i, j)], w_.movingSlots[std::max(i, j)]});
-            else
-                ++w_.pairsLeftOut;
-        });
+        const std::uint32_t block = w_.tasks->blockSize(kItemsPerBlock);
+        for (std::uint32_t b = 0; b < blocks; ++b) {
+            if (!w_.movingPiled[b]) {
+                for (const auto& [i, j] : found[b])
+                    spend(i, j);
+                continue;
+            }
+            const std::uint32_t begin = b * block;
+            grid.forEachPairOf(begin, std::min(grid.pairItems(), begin + block),
+                               [&](std::uint32_t i, std::uint32_t j) {
+                                   if (isPair(i, j))
+                                       spend(i, j);
+                               });
+        }
+    }
+
+    /// Whether the moving bodies i and j (grid indices) make a pair worth a contact.
+    bool isPair(std::uint32_t i, std::uint32_t j) const {
+        return w_.movingDynamic[i] || w_.movingDynamic[j] ||
+               oneIsSensor(w_.movingSlots[i], w_.movingSlots[j]);
+    }
+
+    /// Keeps the pair of moving bodies i and j if the budget allows.
+    void spend(std::uint32_t i, std::uint32_t j) {
+        if (withinBudget(i, j))
+            pairs_.push_back({w_.movingSlots[std::min(i, j)], w_.movingSlots[std::max(i, j)]});
+        else
+            ++w_.pairsLeftOut;
     }
 
     /// Moving bodies against resting ones. Resting bodies have a budget of their own (a
     /// crowd never crowds out the floor), each moving body's its own: blocks of moving
-    /// bodies spend it themselves.
+    /// bodies spend it themselves. A moving body wakes at most a budget of sleepers a
+    /// round (run() goes round again while any woke).
     void findRestingPairs() {
         const auto moving = std::uint32_t(w_.movingSlots.size());
         PerBlock<Found>& found = w_.restingFound;
-        found.reset(w_.tasks->blocksOf(moving, kItemsPerBlock));
+        const std::uint32_t blocks = w_.tasks->blocksOf(moving, kItemsPerBlock);
+        found.reset(blocks);
+        w_.restingLeftOut.assign(blocks, 0);
         w_.tasks->forEachBlock(moving, kItemsPerBlock, [&](Block block) {
             std::vector<Found>& mine = found[block.index];
+            std::uint32_t leftOut = 0;
             for (std::uint32_t i = block.begin; i < block.end; ++i) {
                 const std::uint32_t a = w_.movingSlots[i];
                 const Body& body = w_.slots[a];
                 // A kinematic body at rest wakes nobody, and meets only sensors (a
                 // character moved by setPosition picks up a coin).
                 const bool moves = body.velocity.x != 0.0f || body.velocity.y != 0.0f;
-                std::uint32_t taken = 0;
+                std::uint32_t taken = 0, woken = 0;
                 w_.restingGrid.query(w_.movingGrid.bounds(i), [&](std::uint32_t k) {
                     const std::uint32_t b = w_.restingSlots[k];
                     if (w_.slots[b].asleep) {
-                        if (body.isDynamic() || moves)
+                        if ((body.isDynamic() || moves) && woken < budget_) {
                             mine.push_back({i, b, true});
+                            ++woken;
+                        }
                     } else if (body.isDynamic() || oneIsSensor(a, b)) {
-                        mine.push_back({i, taken < budget_ ? b : kLeftOut, false});
-                        taken += taken < budget_ ? 1u : 0u;
+                        if (taken < budget_) {
+                            mine.push_back({i, b, false});
+                            ++taken;
+                        } else {
+                            ++leftOut;
+                        }
                     }
                 });
             }
+            w_.restingLeftOut[block.index] = leftOut;
         });
     }
 

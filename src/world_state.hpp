@@ -189,14 +189,17 @@ struct WorldState {
     std::vector<std::uint8_t> movingDynamic; ///< grid index -> is the body dynamic
     std::vector<std::uint32_t> blockStarts;  ///< the broadphase's scratch: where each block writes
     /// What each block of the pair search found (broadphase.cpp): pairs of moving grid
-    /// indices, and resting bodies met by moving ones.
+    /// indices (none from a block that found more than its budget: a pile, searched again
+    /// in order), and resting bodies met by moving ones with the pairs left out.
     PerBlock<std::pair<std::uint32_t, std::uint32_t>> movingFound;
+    std::vector<std::uint8_t> movingPiled; ///< by block: found too many to keep
     struct RestingFind {
         std::uint32_t moving; ///< moving grid index
-        std::uint32_t slot;   ///< the resting body; UINT32_MAX: a pair left out
+        std::uint32_t slot;   ///< the resting body
         bool wake;            ///< asleep: its island wakes
     };
     PerBlock<RestingFind> restingFound;
+    std::vector<std::uint32_t> restingLeftOut; ///< by block
 
     /// Where the last step's time went (World::profile).
     StepProfile profile;
