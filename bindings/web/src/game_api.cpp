@@ -1,8 +1,10 @@
 // The module's surface for a game written in JavaScript (docs/web.md, wrapped by
 // jostle.js as jostle.World): worlds made from scene files, bodies from the scene
 // format's body objects, steps, and reads into the module's memory. A world is a number,
-// a body is a number within its world; an error returns a failure and leaves its message
-// for jostle_game_error, which jostle.js throws.
+// a body is a number within its world; an error returns -1 and leaves its message for
+// jostle_game_error, which jostle.js throws. jostle.js checks the kind of every argument
+// before it calls here (an integer, a finite number, an object); what is checked here is
+// what only the module knows: whether a body is alive, and the rules of jostle itself.
 #include "jostle/scene.hpp"
 #include "jostle/world.hpp"
 
@@ -10,6 +12,7 @@
 
 #include <memory>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace jostle::web {
@@ -45,6 +48,23 @@ BodyId bodyAt(const GameWorld& game, int number) {
         !game.world->isValid(game.bodies[static_cast<std::size_t>(number)]))
         throw Error("no such body: " + std::to_string(number));
     return game.bodies[static_cast<std::size_t>(number)];
+}
+
+/// The loader's message about the one body jostle_game_body_create wraps as `bodies[0]`
+/// of a scene, as about the definition the game passed: "bodies[0].hw: must be > 0"
+/// becomes "hw: must be > 0", "bodies[0]: unknown field "foo"" becomes "unknown field
+/// "foo"" (and addBodies' "addBodies: bodies[0].radius: ..." becomes "radius: ...").
+std::string aboutTheDefinition(std::string_view message) {
+    if (message.starts_with("addBodies: "))
+        message.remove_prefix(std::string_view("addBodies: ").size());
+    if (message.starts_with("bodies[0]")) {
+        message.remove_prefix(std::string_view("bodies[0]").size());
+        if (message.starts_with("."))
+            message.remove_prefix(1);
+        else if (message.starts_with(": "))
+            message.remove_prefix(2);
+    }
+    return std::string(message);
 }
 
 /// Runs `call`, turning an exception into `failed` and its message into the error.
@@ -88,47 +108,56 @@ EMSCRIPTEN_KEEPALIVE int jostle_game_world_create(const char* sceneJson) {
         -1);
 }
 
-EMSCRIPTEN_KEEPALIVE bool jostle_game_world_destroy(int world) {
+/// Frees a world. Returns 0, or -1.
+EMSCRIPTEN_KEEPALIVE int jostle_game_world_destroy(int world) {
     return guarded(
         [&] {
             worldAt(world);
             games().worlds[static_cast<std::size_t>(world)].reset();
-            return true;
-        },
-        false);
-}
-
-/// A body from a scene file's body object (`{"type": "dynamic", "x": 0, ...}`), checked
-/// as the loader checks it. Returns the body's number, or -1.
-EMSCRIPTEN_KEEPALIVE int jostle_game_body_create(int world, const char* bodyJson) {
-    return guarded(
-        [&] {
-            GameWorld& game = worldAt(world);
-            const Scene scene = parseScene(std::string(R"({"bodies": [)") + bodyJson + "]}");
-            for (const BodyId body : addBodies(*game.world, scene))
-                game.bodies.push_back(body);
-            return static_cast<int>(game.bodies.size() - 1);
+            return 0;
         },
         -1);
 }
 
-EMSCRIPTEN_KEEPALIVE bool jostle_game_body_destroy(int world, int body) {
+/// A body from a scene file's body object (`{"type": "dynamic", "x": 0, ...}`), checked
+/// as the loader checks it; a problem is named by the field alone ("hw: must be > 0").
+/// Returns the body's number, or -1.
+EMSCRIPTEN_KEEPALIVE int jostle_game_body_create(int world, const char* bodyJson) {
+    return guarded(
+        [&] {
+            GameWorld& game = worldAt(world);
+            try {
+                const Scene scene = parseScene(std::string(R"({"bodies": [)") + bodyJson + "]}");
+                if (scene.bodies.size() != 1)
+                    throw Error("expected one body definition, got " +
+                                std::to_string(scene.bodies.size()));
+                game.bodies.push_back(addBodies(*game.world, scene).front());
+                return static_cast<int>(game.bodies.size() - 1);
+            } catch (const std::exception& error) {
+                throw Error(aboutTheDefinition(error.what()));
+            }
+        },
+        -1);
+}
+
+/// Destroys a body. Returns 0, or -1.
+EMSCRIPTEN_KEEPALIVE int jostle_game_body_destroy(int world, int body) {
     return guarded(
         [&] {
             GameWorld& game = worldAt(world);
             game.world->destroyBody(bodyAt(game, body));
-            return true;
+            return 0;
         },
-        false);
+        -1);
 }
 
-EMSCRIPTEN_KEEPALIVE bool jostle_game_step(int world, float dt) {
+EMSCRIPTEN_KEEPALIVE int jostle_game_step(int world, float dt) {
     return guarded(
         [&] {
             worldAt(world).world->step(dt);
-            return true;
+            return 0;
         },
-        false);
+        -1);
 }
 
 /// The float buffer the last read wrote.
@@ -174,56 +203,56 @@ EMSCRIPTEN_KEEPALIVE int jostle_game_read_body(int world, int body) {
         -1);
 }
 
-EMSCRIPTEN_KEEPALIVE bool jostle_game_set_velocity(int world, int body, float vx, float vy) {
+EMSCRIPTEN_KEEPALIVE int jostle_game_set_velocity(int world, int body, float vx, float vy) {
     return guarded(
         [&] {
             GameWorld& game = worldAt(world);
             game.world->setVelocity(bodyAt(game, body), {vx, vy});
-            return true;
+            return 0;
         },
-        false);
+        -1);
 }
 
-EMSCRIPTEN_KEEPALIVE bool jostle_game_set_position(int world, int body, float x, float y) {
+EMSCRIPTEN_KEEPALIVE int jostle_game_set_position(int world, int body, float x, float y) {
     return guarded(
         [&] {
             GameWorld& game = worldAt(world);
             game.world->setPosition(bodyAt(game, body), {x, y});
-            return true;
+            return 0;
         },
-        false);
+        -1);
 }
 
-EMSCRIPTEN_KEEPALIVE bool jostle_game_apply_impulse(int world, int body, float ix, float iy) {
+EMSCRIPTEN_KEEPALIVE int jostle_game_apply_impulse(int world, int body, float ix, float iy) {
     return guarded(
         [&] {
             GameWorld& game = worldAt(world);
             game.world->applyImpulse(bodyAt(game, body), {ix, iy});
-            return true;
+            return 0;
         },
-        false);
+        -1);
 }
 
 /// A character's walk speed along what it stands on (docs/characters.md).
-EMSCRIPTEN_KEEPALIVE bool jostle_game_set_walk_speed(int world, int body, float speed) {
+EMSCRIPTEN_KEEPALIVE int jostle_game_set_walk_speed(int world, int body, float speed) {
     return guarded(
         [&] {
             GameWorld& game = worldAt(world);
             game.world->setWalkSpeed(bodyAt(game, body), speed);
-            return true;
+            return 0;
         },
-        false);
+        -1);
 }
 
 /// Lets the body fall through one-way platforms for `seconds`.
-EMSCRIPTEN_KEEPALIVE bool jostle_game_drop_through(int world, int body, float seconds) {
+EMSCRIPTEN_KEEPALIVE int jostle_game_drop_through(int world, int body, float seconds) {
     return guarded(
         [&] {
             GameWorld& game = worldAt(world);
             game.world->dropThrough(bodyAt(game, body), seconds);
-            return true;
+            return 0;
         },
-        false);
+        -1);
 }
 
 } // extern "C"
