@@ -173,7 +173,8 @@ class Jostle {
   }
 }
 
-/// A world of a game. Bodies are numbers; a destroyed body's number is not reused.
+/// A world of a game. Bodies are numbers: a number names its body until the body is
+/// destroyed; then it is refused until createBody gives it again, to a new body.
 class JostleWorld {
   constructor(jostle, number) {
     this.jostle = jostle;
@@ -181,6 +182,7 @@ class JostleWorld {
   }
 
   /// A body from a scene file's body object: {type, x, y, hw, hh, vx, vy, bounce, ...}.
+  /// Returns its number: the smallest that no live body of the world has.
   createBody(def) {
     const fn = "createBody";
     const text = JostleArgs.json(fn, JostleArgs.object(fn, "def", def));
@@ -189,6 +191,7 @@ class JostleWorld {
     return j.check(fn, j.withText(text, (p) => j.module._jostle_game_body_create(world, p)));
   }
 
+  /// Removes a body; its number may be given to a later body.
   destroyBody(body) {
     const fn = "destroyBody";
     this.call(fn, "_jostle_game_body_destroy", JostleArgs.body(fn, body));
@@ -199,16 +202,18 @@ class JostleWorld {
     this.call(fn, "_jostle_game_step", JostleArgs.number(fn, "dt", dt));
   }
 
-  /// Every body that exists: {body, x, y, hw, hh} (centre and half extents).
+  /// Every body that exists, in creation order: {body, x, y, hw, hh} (centre and half
+  /// extents). Costs as much as the live bodies, whatever the world made before.
   boxes() {
-    const j = this.jostle;
+    const m = this.jostle.module;
     const count = this.call("boxes", "_jostle_game_read_boxes");
-    const data = j.floats(j.module._jostle_game_data(), 5 * count);
-    const boxes = [];
-    for (let i = 0; i < count; i++) {
-      const [body, x, y, hw, hh] = data.subarray(5 * i, 5 * i + 5);
-      boxes.push({body, x, y, hw, hh});
-    }
+    // Five 32-bit words a body: its number (an int32, exact) and four floats. Read at
+    // once: the memory does not move before the module is called again.
+    const at = m._jostle_game_boxes() / 4;
+    const ints = m.HEAP32, floats = m.HEAPF32;
+    const boxes = new Array(count);
+    for (let i = 0, w = at; i < count; i++, w += 5)
+      boxes[i] = {body: ints[w], x: floats[w + 1], y: floats[w + 2], hw: floats[w + 3], hh: floats[w + 4]};
     return boxes;
   }
 
@@ -236,7 +241,7 @@ class JostleWorld {
     this.number = null;
   }
 
-  /// The world's number, or an Error if it was destroyed.
+  /// The world's number, or an Error if it was destroyed (its number may be another's now).
   live(fn) {
     if (this.number === null) throw new Error(`${fn}: the world was destroyed`);
     return this.number;

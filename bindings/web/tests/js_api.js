@@ -3,7 +3,10 @@
 // is refused when it is the wrong kind, with a message that names the function and the
 // argument, before it can reach the module as some other value (a body number of
 // undefined or NaN read as body 0, 1.9 as body 1); the module's own errors name the
-// function and what the caller passed, not the scene the module wrapped it in.
+// function and what the caller passed, not the scene the module wrapped it in; body
+// numbers are given again after destroy, so that a million bodies made and destroyed
+// leave boxes() listing the two live ones, the body numbers small and the module's heap
+// as it was.
 //   node js_api.js <page dir>
 "use strict";
 
@@ -18,8 +21,8 @@ function check(ok, what) {
 
 /// The page's two scripts, jostle-web.js (the module's loader, built for the web) and
 /// jostle.js, run one after the other as a page runs them (in one function's scope here,
-/// not a vm context: a value passed between two contexts costs ten times as much).
-/// Returns their Jostle class.
+/// not a vm context: a value passed between two contexts costs ten times as much, and
+/// the churn below makes a million bodies). Returns their Jostle class.
 function loadPageScripts(pageDir) {
   const read = (file) => fs.readFileSync(path.join(pageDir, file), "utf8");
   return new Function(`${read("jostle-web.js")}\n${read("jostle.js")}\nreturn Jostle;`)();
@@ -149,7 +152,7 @@ function argumentChecks(jostle) {
   refuses("createWorld with a body of hw 0", () => jostle.createWorld({bodies: [box, {...box, hw: 0}]}), "Error",
           "createWorld: bodies[1].hw: must be > 0");
 
-  // A destroyed world refuses every call.
+  // A destroyed world refuses every call, whatever world has its number now.
   world.destroy();
   const other = jostle.createWorld({bodies: [box]});
   refuses("step after destroy()", () => world.step(1 / 60), "Error", "step: the world was destroyed");
@@ -158,6 +161,71 @@ function argumentChecks(jostle) {
   refuses("destroy() twice", () => world.destroy(), "Error", "destroy: the world was destroyed");
   check(other.boxes().length === 1, "the world made after it is untouched");
   other.destroy();
+}
+
+/// A destroyed body's number is refused until it is given again; createBody gives the
+/// smallest number no live body has; boxes() lists the live bodies in creation order.
+function numbersAfterDestroy(jostle) {
+  const world = jostle.createWorld({bodies: [0, 1, 2, 3].map((i) => ({x: 10 * i, y: 0, hw: 1, hh: 1}))});
+  world.destroyBody(2);
+  refuses("body(2) once destroyed", () => world.body(2), "Error", "body: no such body: 2");
+  refuses("destroyBody(2) twice", () => world.destroyBody(2), "Error", "destroyBody: no such body: 2");
+  world.destroyBody(0);
+  const a = world.createBody({x: 100, y: 0, hw: 1, hh: 1});
+  const b = world.createBody({x: 200, y: 0, hw: 1, hh: 1});
+  const c = world.createBody({x: 300, y: 0, hw: 1, hh: 1});
+  check(a === 0 && b === 2 && c === 4, `the smallest free numbers are given again: ${a}, ${b}, ${c} (0, 2, 4)`);
+  check(world.body(0).x === 100, "number 0 names the new body now");
+  const listed = world.boxes().map((box) => `${box.body}@${box.x}`).join(" ");
+  check(listed === "1@10 3@30 0@100 2@200 4@300", `boxes() lists the live bodies in creation order: ${listed}`);
+  world.destroy();
+}
+
+/// A million bodies made and destroyed beside two that stay: boxes() lists the two, the
+/// numbers stay small, and the module's heap is what it was after the first thousand.
+function churn(jostle) {
+  const m = jostle.module;
+  const world = jostle.createWorld({gravity: [0, 800]});
+  world.createBody({type: "static", x: 0, y: 300, hw: 400, hh: 10});
+  world.createBody({x: 0, y: 280, hw: 10, hh: 10});
+  const cycle = () => {
+    const body = world.createBody({x: 50, y: 0, hw: 1, hh: 1});
+    world.destroyBody(body);
+    return body;
+  };
+  for (let i = 0; i < 1000; i++) cycle();
+  world.boxes();
+  const heapCounter = typeof m._jostle_game_heap_in_use === "function";
+  const inUse = () => (heapCounter ? m._jostle_game_heap_in_use() : NaN);
+  const memoryBefore = m.HEAP8.length;
+  const inUseBefore = inUse();
+
+  const kCycles = 1000000;
+  let largest = 0;
+  const start = Date.now();
+  for (let i = 0; i < kCycles; i++) largest = Math.max(largest, cycle());
+  const seconds = (Date.now() - start) / 1000;
+
+  const boxes = world.boxes();
+  check(boxes.length === 2 && boxes[0].body === 0 && boxes[1].body === 1 && boxes[0].y === 300,
+        `after ${kCycles} bodies made and destroyed (${seconds.toFixed(1)} s), boxes() lists the two live ones: ` +
+        JSON.stringify(boxes.map((box) => box.body)));
+  check(boxes.every((box) => Number.isInteger(box.body)), "boxes() gives body numbers as integers");
+  // Numbers are given again, so they never pass the most bodies alive at once (3 here):
+  // they stay far from 2^24, where a float would round them, and within the int32 that
+  // boxes() reads them as.
+  check(largest === 2, `every body made in the churn had number 2 (the largest given: ${largest})`);
+  // The heap: two bodies live before and after, so what the module holds must be what it
+  // held. Anything kept per body made, even one byte, would add 1,000,000 bytes; the
+  // bound, 64 KiB, is far below that and far above an allocator's slack. The memory
+  // itself grows by at least a fifth at a time (emscripten's growth step), so it must not
+  // have grown at all.
+  check(heapCounter, "the module reports its heap in use (jostle_game_heap_in_use)");
+  const grown = inUse() - inUseBefore;
+  check(grown < 65536, `the heap in use grew by ${grown} bytes (< 65536; ${inUseBefore} bytes in use before)`);
+  check(m.HEAP8.length === memoryBefore,
+        `the module's memory stayed ${(memoryBefore / 2 ** 20).toFixed(1)} MiB (now ${(m.HEAP8.length / 2 ** 20).toFixed(1)} MiB)`);
+  world.destroy();
 }
 
 async function main() {
@@ -174,7 +242,7 @@ async function main() {
   }
   check(loadError === "TypeError: Jostle.load: options must be an object, got null",
         `Jostle.load(null) is refused: ${loadError}`);
-  for (const part of [argumentChecks]) {
+  for (const part of [argumentChecks, numbersAfterDestroy, churn]) {
     try {
       part(jostle);
     } catch (error) {
