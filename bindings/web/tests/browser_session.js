@@ -120,7 +120,9 @@ async function canvasShowsBodies(page) {
 }
 
 /// The JS API of docs/web.md: the README's crate falls onto the floor and rests at y 280
-/// (floor top 290, crate 10 high); a bad body throws the loader's message.
+/// (floor top 290, crate 10 high); a bad body throws the loader's message, named by the
+/// function and the field; a body number of undefined is refused (js_api.js checks the
+/// rest in Node).
 async function gameApi(page) {
   const result = await page.evaluate(`(() => {
     const world = jostlePage.state.jostle.createWorld({gravity: [0, 800]});
@@ -128,15 +130,18 @@ async function gameApi(page) {
     const crate = world.createBody({x: 0, y: 0, hw: 10, hh: 10, bounce: 0.3});
     for (let i = 0; i < 120; i++) world.step(1 / 60);
     const body = world.body(crate);
-    let error = "";
+    let error = "", bodyError = "";
     try { world.createBody({x: 0, y: 0, hw: -1, hh: 10}); } catch (e) { error = e.message; }
+    try { world.body(undefined); } catch (e) { bodyError = e.constructor.name + ": " + e.message; }
     const boxes = world.boxes().length;
     world.destroy();
-    return {y: body.y, floor: body.touching.floor, error, boxes};
+    return {y: body.y, floor: body.touching.floor, error, bodyError, boxes};
   })()`);
   check(Math.abs(result.y - 280) < 0.01 && result.floor,
         `the JS API's crate rests on the floor at y ${result.y} (280)`);
-  check(/hw/.test(result.error), `a body with hw -1 throws: "${result.error}"`);
+  check(result.error === "createBody: hw: must be > 0", `a body with hw -1 throws: "${result.error}"`);
+  check(result.bodyError === "TypeError: body: body must be a body number (an integer >= 0), got undefined",
+        `world.body(undefined) throws: "${result.bodyError}"`);
   check(result.boxes === 2, "world.boxes() lists the floor and the crate");
 }
 
