@@ -1,12 +1,25 @@
 // The C API from a program compiled as C11: worlds, bodies, events, the pre-solve
 // callback, queries, tile maps and the fixed step, each checked against values worked
 // out by hand, and every kind of misuse checked against the error contract of jostle.h.
+// getrlimit and sysconf, for the test of threads that cannot start.
+#define _XOPEN_SOURCE 700
+
 #include <jostle/jostle.h>
 
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/resource.h>
+#include <unistd.h>
+
+#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+#define SANITIZED 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer) || __has_feature(thread_sanitizer)
+#define SANITIZED 1
+#endif
+#endif
 
 // --- Checks: print where and what, exit non-zero at the first failure --------------------
 
@@ -2076,6 +2089,64 @@ static void test_workers(void) {
     CHECK_NO_ERROR();
 }
 
+/// A job system that breaks the contract: it runs every range twice.
+static void* run_twice(jostle_task_fn task, uint32_t items, uint32_t min_range,
+                       void* task_context, void* user_context) {
+    (void)min_range;
+    (void)user_context;
+    task(0, items, 0, task_context);
+    task(0, items, 0, task_context);
+    return NULL;
+}
+
+static void test_a_job_system_that_breaks_the_contract(void) {
+    jostle_task_system good = jostle_default_world_def().tasks;
+    good.workers = 3;
+    int calls = 0;
+    good.enqueue_task = run_at_once;
+    good.finish_task = finish_nothing;
+    good.user_context = &calls;
+    jostle_task_system twice = good;
+    twice.enqueue_task = run_twice;
+    jostle_world* right = crowd(good);
+    jostle_world* wrong = crowd(twice);
+    for (int i = 0; i < 5; ++i) {
+        CHECK(jostle_world_step(right, 1.0f / 60.0f), "a good job system");
+        CHECK(!jostle_world_step(wrong, 1.0f / 60.0f), "a job system that runs ranges twice");
+        CHECK_ERROR("jostle_world_step", "task system broke its contract");
+    }
+    // Each item was run once all the same: the same bits as the good job system.
+    enum { kBodies = 4001 };
+    static jostle_vec2 a[kBodies], b[kBodies];
+    CHECK(jostle_world_read_positions(right, a, kBodies) == kBodies &&
+              jostle_world_read_positions(wrong, b, kBodies) == kBodies,
+          "read positions");
+    CHECK(memcmp(a, b, sizeof a) == 0, "the same positions whatever the job system did");
+    CHECK(jostle_world_destroy(right) && jostle_world_destroy(wrong), "destroy");
+}
+
+/// A world whose threads the system will not start is refused, not a terminated process.
+/// Kept from starting by a limit on the address space, which a sanitizer cannot live with.
+static void test_threads_that_cannot_start(void) {
+#ifndef SANITIZED
+    struct rlimit was;
+    CHECK(getrlimit(RLIMIT_AS, &was) == 0, "getrlimit");
+    FILE* statm = fopen("/proc/self/statm", "r");
+    unsigned long pages = 0;
+    CHECK(statm && fscanf(statm, "%lu", &pages) == 1, "/proc/self/statm");
+    fclose(statm);
+    struct rlimit tight = was;
+    tight.rlim_cur = pages * (unsigned long)sysconf(_SC_PAGESIZE) + (48ul << 20);
+    CHECK(setrlimit(RLIMIT_AS, &tight) == 0, "setrlimit");
+    jostle_world_def def = jostle_default_world_def();
+    def.tasks.workers = 64;
+    jostle_world* world = jostle_world_create(&def);
+    setrlimit(RLIMIT_AS, &was);
+    CHECK(!world, "64 workers in 48 MB refused");
+    CHECK_ERROR("jostle_world_create", "the system would start only");
+#endif
+}
+
 int main(void) {
     test_defaults();
     test_free_fall();
@@ -2107,6 +2178,8 @@ int main(void) {
     test_misuse();
     test_a_handle_of_another_world();
     test_workers();
+    test_a_job_system_that_breaks_the_contract();
+    test_threads_that_cannot_start();
     printf("test_c_api: all checks passed\n");
     return 0;
 }
