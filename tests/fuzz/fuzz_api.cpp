@@ -958,7 +958,9 @@ private:
 
     void step() {
         const float dt = pickDt();
-        const int count = 1 + in_.byte() % 8;
+        // Now and then long enough for bodies at rest to fall asleep (kTimeToSleep).
+        const std::uint8_t steps = in_.byte();
+        const int count = characters_ && steps >= 248 ? 45 : 1 + steps % 8;
         const bool valid = isSize(dt); // finite, > 0, and in math.hpp's range
         for (int i = 0; i < count; ++i) {
             if (verbosity() >= 2)
@@ -1676,7 +1678,8 @@ private:
     // --- Pre-solve callbacks ----------------------------------------------------------------
 
     void installCallback() {
-        callbackMode_ = in_.byte() % 12;
+        // Modes 12 and 13 came with issue 28, in the mix of characters and move().
+        callbackMode_ = in_.byte() % (characters_ ? 14 : 12);
         callbackParam_ = in_.byte();
         if (verbosity() >= 1)
             std::fprintf(stderr, "callback: mode %d, parameter %d\n", callbackMode_,
@@ -1843,8 +1846,102 @@ private:
             requireUnchanged(before, "a world setter from a callback");
             return true;
         }
+        case 12:
+            inTheWayOfTheFastest();
+            return true;
+        case 13:
+            moveFromCallback(c);
+            return true;
         }
         return true;
+    }
+
+    /// Issue 28: something made mid-step right in the path of the fastest dynamic body,
+    /// which the sweep then meets: a static box, a circle, or a solid tile of a map.
+    void inTheWayOfTheFastest() {
+        if (live_.size() >= kMaxBodies || callbackCalls_ > 8)
+            return;
+        BodyId fastest;
+        float speed = -1.0f;
+        for (BodyId id : live_)
+            if (world_.type(id) == BodyType::Dynamic && length(world_.velocity(id)) > speed) {
+                speed = length(world_.velocity(id));
+                fastest = id;
+            }
+        if (fastest.isNull() || !std::isfinite(speed))
+            return;
+        const Vec2 ahead = world_.position(fastest) + world_.velocity(fastest) * (1.0f / 120.0f);
+        if (!inRange(ahead) || !inRange(ahead + Vec2{4, 4}) || !inRange(ahead - Vec2{4, 4}))
+            return;
+        const int kind = callbackParam_ % 3;
+        if (kind == 2) {
+            for (Map& m : maps_) {
+                const std::optional<TileCoord> at = tileAt(world_, m.id, ahead);
+                if (!at || !world_.isValid(m.id))
+                    continue;
+                const std::vector<BodyId> before(tileMapBodies(world_, m.id).begin(),
+                                                 tileMapBodies(world_, m.id).end());
+                setTile(world_, m.id, at->column, at->row, true);
+                m.rows[std::size_t(at->row)][std::size_t(at->column)] = '#';
+                catchUp("setTile in the way of a fast body", before);
+                return;
+            }
+        }
+        const bool round = kind == 1 && world_.solver() == Solver::Physical;
+        live_.push_back(world_.createBody({.type = BodyType::Static,
+                                           .x = ahead.x,
+                                           .y = ahead.y,
+                                           .hw = 4,
+                                           .hh = 4,
+                                           .radius = round ? 4.0f : 0.0f}));
+        if (round)
+            shaped_.insert(std::uint64_t(live_.back().index) << 32 | live_.back().generation);
+    }
+
+    /// Issue 28: move() called from the pre-solve, with a filter that tries to change the
+    /// world: every such call throws, and the world is as it was but for the moved body.
+    void moveFromCallback(Collision& c) {
+        const Vec2 d{float(callbackParam_ % 7) - 3.0f, float(callbackParam_ % 5) - 2.0f};
+        const Vec2 p = world_.position(c.a);
+        const float reach = std::abs(d.x) + std::abs(d.y);
+        if (!inRange(p + Vec2{reach, reach}) || !inRange(p - Vec2{reach, reach}))
+            return;
+        tamper(c.a);
+        const std::size_t bodies = world_.bodyCount();
+        int attempts = 0;
+        auto refused = [&](const char* name, auto&& call) {
+            ++attempts;
+            try {
+                call();
+                finding(std::string(name) + " from move()'s filter did not throw");
+            } catch (const Error&) {
+            }
+        };
+        move(world_, c.a, d, [&](BodyId other) {
+            switch ((other.index + callbackParam_) % 5) {
+            case 0:
+                refused("createBody", [&] { world_.createBody({.hw = 1, .hh = 1}); });
+                break;
+            case 1:
+                refused("destroyBody", [&] { world_.destroyBody(other); });
+                break;
+            case 2:
+                refused("setPosition", [&] { world_.setPosition(other, {}); });
+                break;
+            case 3:
+                refused("move", [&] { move(world_, other, {1, 0}); });
+                break;
+            default:
+                for (Map& m : maps_)
+                    if (world_.isValid(m.id))
+                        refused("setTile", [&] { setTile(world_, m.id, 0, 0, true); });
+                break;
+            }
+            return Response::Slide;
+        });
+        if (world_.bodyCount() != bodies)
+            finding("a refused call from move()'s filter changed the bodies (" +
+                    std::to_string(attempts) + " attempts)");
     }
 };
 
