@@ -36,8 +36,9 @@ std::string length(float value) {
 
 using Cells = std::vector<std::string>;
 
-const Cells kHeader{"scene",       "bodies",     "engine",    "steps",       "ms/step", "speed-up",
-                    "jostle/peer", "bytes/body", "top drift", "max overlap", "escaped"};
+const Cells kHeader{"scene",      "bodies",  "engine",    "steps",       "ms/step",
+                    "speed-up",   "jostle/peer", "bytes/body", "peak MB", "top drift",
+                    "max overlap", "escaped"};
 
 Cells makeRow(std::span<const RunResult> all, const RunResult& r) {
     const std::optional<double> ratio = jostleRatio(all, r);
@@ -51,6 +52,7 @@ Cells makeRow(std::span<const RunResult> all, const RunResult& r) {
         faster ? format("%.2f", *faster) : "-",
         ratio ? format("%.2f", *ratio) : "-",
         format("%.0f", r.bytesPerBody),
+        format("%.1f", r.peakBytes / 1e6),
         r.quality.topDrift ? length(*r.quality.topDrift) : "-",
         length(r.quality.maxPenetration),
         std::to_string(r.quality.escaped),
@@ -153,7 +155,7 @@ bool writeCsv(const std::string& path, std::span<const RunResult> results) {
         return false;
     std::FILE* out = file.get();
     std::fputs("scene,family,size,engine,workers,bodies,warmup_steps,measured_steps,ms_per_step,"
-               "speed_up,jostle_over_engine,bytes_per_body,top_drift,max_overlap,escaped\n",
+               "speed_up,jostle_over_engine,bytes_per_body,top_drift,max_overlap,escaped,peak_mb\n",
                out);
     for (const RunResult& r : results) {
         const std::optional<double> ratio = jostleRatio(results, r);
@@ -169,8 +171,8 @@ bool writeCsv(const std::string& path, std::span<const RunResult> results) {
         std::fprintf(out, ",%.1f,", r.bytesPerBody);
         if (r.quality.topDrift)
             std::fprintf(out, "%.6g", static_cast<double>(*r.quality.topDrift));
-        std::fprintf(out, ",%.6g,%d\n", static_cast<double>(r.quality.maxPenetration),
-                     r.quality.escaped);
+        std::fprintf(out, ",%.6g,%d,%.3f\n", static_cast<double>(r.quality.maxPenetration),
+                     r.quality.escaped, r.peakBytes / 1e6);
     }
     const bool ok = std::fflush(out) == 0 && !std::ferror(out);
     return std::fclose(file.release()) == 0 && ok;

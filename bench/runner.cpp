@@ -35,9 +35,13 @@ RunResult run(const Case& c, const Scene& scene, EngineKind engine, int workers,
     std::vector<Vec2> positions(scene.bodies.size());
 
     const std::size_t heapBefore = heapInUse();
+    std::size_t peak = heapBefore;
+    const auto notePeak = [&] { peak = std::max(peak, heapInUse()); };
     std::unique_ptr<Engine> world = makeEngine(engine, scene, workers);
-    for (int i = 0; i < limits.warmup; ++i)
+    for (int i = 0; i < limits.warmup; ++i) {
         world->step(scene.dt);
+        notePeak();
+    }
     // After the warm-up, so the contact and pair storage of a busy world is counted.
     const std::size_t heapAfter = heapInUse();
     result.bytesPerBody = scene.bodies.empty()
@@ -51,6 +55,7 @@ RunResult run(const Case& c, const Scene& scene, EngineKind engine, int workers,
         const Clock::time_point start = Clock::now();
         world->step(scene.dt);
         const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
+        notePeak();
         times.push_back(seconds);
         measured += seconds;
         if (const StepProfile* profile = world->profile()) {
@@ -62,6 +67,7 @@ RunResult run(const Case& c, const Scene& scene, EngineKind engine, int workers,
             break;
     }
     result.measuredSteps = static_cast<int>(times.size());
+    result.peakBytes = static_cast<double>(peak - heapBefore);
     if (result.stages && !times.empty())
         for (const StageField& stage : kStages)
             result.stages.value().*stage.ms /= static_cast<float>(times.size());

@@ -31,6 +31,9 @@ struct RunResult {
     int measuredSteps = 0;
     double msPerStep = 0.0; ///< median of the measured steps
     double bytesPerBody = 0.0;
+    /// The most heap the engine held after any step, warm-up included, in bytes: what a
+    /// step's buffers take where the scene is at its busiest (a pile's first step).
+    double peakBytes = 0.0;
     shared::Quality quality;
     /// The mean time of each stage over the measured steps, for an engine that profiles
     /// its steps (jostle).
