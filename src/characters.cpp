@@ -40,20 +40,35 @@ bool slidesDown(const WorldState& world, BodyId id, Vec2 right) {
     return slides;
 }
 
+/// What walking adds along gravity on a floor of normal `floor` (pointing up from it):
+/// relative to the floor, the character goes along it, and its speed away from it (a
+/// jump, or gravity's pull into it) stays as it was. On a slope, walking across gravity
+/// is walking up or down along gravity too: a character that stops stops there, one that
+/// turns round walks down at once. 0 on a level floor, exactly.
+float alongGravityOnFloor(Vec2 relative, Vec2 floor, Vec2 right, Vec2 down, float walk) {
+    const float away = dot(relative, floor);
+    return (away - walk * dot(floor, right)) / dot(floor, down) - dot(relative, down);
+}
+
 } // namespace
 
 void walkCharacters(WorldState& world) {
-    const Vec2 right = rightOf(world.events.down);
+    const Vec2 down = world.events.down;
+    const Vec2 right = rightOf(down);
     for (BodyId id : world.order.live()) {
         Body& body = world.slots[id.index];
         if (!body.isCharacter() || body.asleep)
             continue;
-        const BodyId ground = groundOf(world, id).body;
-        if (ground.isNull() && slidesDown(world, id, right))
+        const GroundRecord ground = groundOf(world, id);
+        if (ground.body.isNull() && slidesDown(world, id, right))
             continue;
-        const float under = ground.isNull() ? 0.0f : dot(world.slots[ground.index].velocity, right);
-        body.velocity = withinRange(body.velocity +
-                                    right * (under + body.walkSpeed - dot(body.velocity, right)));
+        const Vec2 under = ground.body.isNull() ? Vec2{} : world.slots[ground.body.index].velocity;
+        Vec2 walked = body.velocity +
+                      right * (dot(under, right) + body.walkSpeed - dot(body.velocity, right));
+        if (!ground.body.isNull())
+            walked += down * alongGravityOnFloor(body.velocity - under, ground.normal, right, down,
+                                                 body.walkSpeed);
+        body.velocity = withinRange(walked);
     }
 }
 

@@ -10,6 +10,7 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <tuple>
 #include <vector>
 
 namespace jostle {
@@ -333,6 +334,78 @@ INSTANTIATE_TEST_SUITE_P(Models, Characters, ::testing::Values(Solver::Classic, 
                          [](const ::testing::TestParamInfo<Solver>& model) {
                              return model.param == Solver::Classic ? "Classic" : "Physical";
                          });
+
+// --- On a slope: stopping and turning round (issue 29) -------------------------------------
+//
+// A ramp rising to the right, its foot at x = 0 on a long floor whose top is y = 0. A
+// character walks up it, then the key is released or turned: it must stop where it is, or
+// walk down at once, never hop off the slope.
+
+struct RampScene {
+    World world;
+    BodyId hero;
+    /// The ramp's rise over its run: 1 (45°) or 0.5 (2:1).
+    RampScene(float rise, float snapDown)
+        : world(WorldDef{.gravity = {0, 800}, .sleeping = false}) {
+        world.createBody({.type = BodyType::Static, .x = 0, .y = 50, .hw = 1000, .hh = 50});
+        world.createBody({.type = BodyType::Static,
+                          .x = 200,
+                          .y = -200 * rise,
+                          .hw = 200,
+                          .hh = 200 * rise,
+                          .slope = {-1, -1}});
+        hero = world.createBody(
+            {.x = -30, .y = -8, .hw = 6, .hh = 8, .character = true, .snapDown = snapDown});
+        for (int i = 0; i < 10; ++i)
+            world.step(kDt);
+    }
+};
+
+class OnASlope : public ::testing::TestWithParam<std::tuple<float, float>> {};
+
+TEST_P(OnASlope, ReleasingTheKeyStopsItWhereItIsInTheSameStep) {
+    const auto [rise, snapDown] = GetParam();
+    RampScene scene(rise, snapDown);
+    World& world = scene.world;
+    world.setWalkSpeed(scene.hero, 120);
+    for (int i = 0; i < 90; ++i) // 1.5 s: 180 across, well up the ramp
+        world.step(kDt);
+    ASSERT_GT(world.position(scene.hero).x, 60.0f);
+    ASSERT_TRUE(world.ground(scene.hero)) << "walking up the ramp, on it";
+    world.setWalkSpeed(scene.hero, 0);
+    world.step(kDt);
+    const Vec2 stopped = world.position(scene.hero);
+    for (int i = 0; i < 60; ++i) {
+        world.step(kDt);
+        ASSERT_TRUE(world.ground(scene.hero)) << "step " << i << " after releasing the key";
+        EXPECT_NEAR(world.position(scene.hero).x, stopped.x, 0.05f) << "step " << i;
+        EXPECT_NEAR(world.position(scene.hero).y, stopped.y, 0.05f) << "step " << i;
+    }
+}
+
+TEST_P(OnASlope, TurningRoundWalksDownTheSlopeAtOnce) {
+    const auto [rise, snapDown] = GetParam();
+    RampScene scene(rise, snapDown);
+    World& world = scene.world;
+    world.setWalkSpeed(scene.hero, 120);
+    for (int i = 0; i < 90; ++i)
+        world.step(kDt);
+    world.setWalkSpeed(scene.hero, -120);
+    Vec2 last = world.position(scene.hero);
+    for (int i = 0; i < 30; ++i) {
+        world.step(kDt);
+        const Vec2 now = world.position(scene.hero);
+        ASSERT_TRUE(world.ground(scene.hero)) << "step " << i << " after turning round";
+        // Down the slope: 120 × dt back across, rise × that down.
+        EXPECT_NEAR(now.x - last.x, -120.0f * kDt, 0.05f) << "step " << i;
+        EXPECT_NEAR(now.y - last.y, 120.0f * kDt * rise, 0.05f) << "step " << i;
+        last = now;
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(Ramps, OnASlope,
+                         ::testing::Combine(::testing::Values(1.0f, 0.5f),
+                                            ::testing::Values(0.0f, 4.0f, 20.0f)));
 
 } // namespace
 } // namespace jostle
