@@ -78,7 +78,7 @@ BodyId World::createBody(const BodyDef& def) {
     body.floorCos = floorCosOf(def.floorAngle);
     if (!body.isBox())
         ++w.shapedBodies;
-    if (body.snapDown > 0.0f)
+    if (body.maySnap())
         ++w.snappingBodies;
     body.updateMass();
 
@@ -100,7 +100,7 @@ void World::destroyBody(BodyId id) {
     body.alive = false;
     if (!body.isBox())
         --w.shapedBodies;
-    if (body.snapDown > 0.0f)
+    if (body.maySnap())
         --w.snappingBodies;
     if (moveGenerationOn(body))
         (w.stepping ? w.pendingFree : w.freeSlots).push_back(id.index);

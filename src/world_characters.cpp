@@ -14,7 +14,10 @@ bool World::isCharacter(BodyId id) const {
 }
 
 void World::setCharacter(BodyId id, bool character) {
-    lookUpToChange(*state_, id, "setCharacter").character = character;
+    Body& b = lookUpToChange(*state_, id, "setCharacter");
+    const bool was = b.maySnap();
+    b.character = character;
+    state_->snappingBodies += std::uint32_t(b.maySnap()) - std::uint32_t(was);
     disturb(*state_, id.index);
 }
 
@@ -45,10 +48,10 @@ float World::snapDown(BodyId id) const {
 }
 
 void World::setSnapDown(BodyId id, float distance) {
-    const bool was = lookUpToChange(*state_, id, "setSnapDown").snapDown > 0.0f;
+    const bool was = lookUpToChange(*state_, id, "setSnapDown").maySnap();
     setKept(*state_, id, "setSnapDown", "distance", properties::kSnapDown, &Body::snapDown,
             distance);
-    state_->snappingBodies += std::uint32_t(distance > 0.0f) - std::uint32_t(was);
+    state_->snappingBodies += std::uint32_t(state_->slots[id.index].maySnap()) - std::uint32_t(was);
 }
 
 float World::walkSpeed(BodyId id) const {

@@ -60,6 +60,9 @@ struct alignas(64) Body {
     float floorCos = 0.5f;
     /// BodyDef::snapDown: how far it is moved down onto the ground (physical/snap.hpp).
     float snapDown = 0.0f;
+    /// Whether the snap stage looks at it: a snapDown, or a character (which follows the
+    /// floors it walks onto whatever its snapDown).
+    bool maySnap() const { return snapDown > 0.0f || character; }
     /// Sum of the separation vectors applied to this body during the last step.
     Vec2 separation;
     /// Kinematic bodies: the velocity they moved with in the last step, to hand what
@@ -175,7 +178,8 @@ struct WorldState {
     std::uint32_t shapedBodies = 0;
     /// Each slot's settings as the user gave them, which no step reads.
     std::vector<KeptAsGiven> asGiven;
-    /// How many live bodies have a snapDown: the step looks for ground under them.
+    /// How many live bodies may snap to the ground (Body::maySnap): the step looks for
+    /// ground under them.
     std::uint32_t snappingBodies = 0;
 
     /// The broadphase of bodies at rest: static and sleeping bodies, rebuilt only when

@@ -407,5 +407,35 @@ INSTANTIATE_TEST_SUITE_P(Ramps, OnASlope,
                          ::testing::Combine(::testing::Values(1.0f, 0.5f),
                                             ::testing::Values(0.0f, 4.0f, 20.0f)));
 
+// --- Over crests (issue 29) -----------------------------------------------------------------
+//
+// A character made with the defaults, as the README's first example makes one, walks over
+// 45° crests on the ground: up a ramp onto a flat top and off its far edge down a ramp. It
+// used to fly off each crest (61 of 190 steps of a level in the air); now a character
+// follows a floor it walks onto within its floorAngle.
+TEST(OverCrests, ACharacterWithTheDefaultsStaysOnTheGroundAtItsWalkSpeed) {
+    for (float speed : {60.0f, 120.0f, 240.0f}) {
+        World world(WorldDef{.gravity = {0, 800}});
+        createTileMap(world, {.tile = 16,
+                              .rows = {"..................", "......../##\\......",
+                                       "......./####\\.....", "##################"}});
+        const BodyId hero =
+            world.createBody({.x = 24, .y = 40, .hw = 6, .hh = 8, .character = true});
+        for (int i = 0; i < 30; ++i)
+            world.step(kDt);
+        ASSERT_TRUE(world.ground(hero));
+        world.setWalkSpeed(hero, speed);
+        int inTheAir = 0;
+        for (int i = 0; world.position(hero).x < 250.0f && i < 1000; ++i) {
+            world.step(kDt);
+            if (!world.ground(hero))
+                ++inTheAir;
+            EXPECT_NEAR(world.velocity(hero).x, speed, 0.01f) << "step " << i;
+        }
+        EXPECT_GE(world.position(hero).x, 250.0f);
+        EXPECT_EQ(inTheAir, 0) << "at " << speed;
+    }
+}
+
 } // namespace
 } // namespace jostle

@@ -63,14 +63,30 @@ TEST(SnapDown, ACharacterWalkingOverHillsAt8UnitsPerSecondStaysOnTheGroundEveryS
     EXPECT_LE(walk.worstSpeed, 0.01f * kWalk); // and never slowed at a junction
 }
 
-TEST(SnapDown, WithoutItTheSameWalkLeavesTheGround) {
-    // Off the crest of the 45° ramp up it rises at 8 units/s (to 8²/2g = 3.2 above it); off
-    // the flat top onto the ramp down it falls g t²/2 while the ramp falls 8 t.
+TEST(SnapDown, ACharacterFollowsTheFloorsItWalksOntoWithoutIt) {
+    // A character snaps by at least what a step at its walk speed drops on the steepest
+    // floor it stands on: 8/60 tan 60° = 0.23, more than the 0.13 of the 45° ramp down.
     World world = hills();
     const BodyId player = walker(world, 0.0f);
     const Walk walk = walkAcross(world, player);
-    EXPECT_GT(walk.airborne, 10);
+    EXPECT_EQ(walk.airborne, 0);
     EXPECT_LE(walk.worstSpeed, 0.01f * kWalk);
+}
+
+TEST(SnapDown, WithoutItACrateSlidingOverTheSameHillsLeavesTheGround) {
+    // Sent at 12 units/s, it tops the ramp up (2 high) at sqrt(12² - 2 g 2) = 10.2 and
+    // leaves its crest rising at 10.2 sin 45° = 7.2 (to 7.2²/2g = 2.6 above it); off the
+    // flat top onto the ramp down it falls g t²/2 while the ramp falls 10 t.
+    World world = hills();
+    const BodyId crate = world.createBody(
+        {.x = 1.5f, .y = 4.5f, .hw = 0.375f, .hh = 0.5f, .vx = 12.0f, .friction = 0.0f});
+    int airborne = 0;
+    for (int i = 0; i < 600 && world.position(crate).x < 20.0f; ++i) {
+        world.step(kDt);
+        airborne += world.touching(crate).floor ? 0 : 1;
+    }
+    EXPECT_GE(world.position(crate).x, 20.0f) << "stuck";
+    EXPECT_GT(airborne, 10);
 }
 
 TEST(SnapDown, AJumpIsNotPulledBack) {

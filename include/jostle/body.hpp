@@ -119,7 +119,11 @@ struct BodyDef {
     /// most this distance, instead of flying off; its velocity then runs along that floor
     /// (a character keeps its speed across gravity, any other body its speed). Jumping
     /// (moving away from the floor) and falling further than this are left alone.
-    /// >= 0; 0 (the default): off. The physical model only: the classic one ignores it.
+    /// >= 0; 0 (the default): off, except that a character always snaps by at least the
+    /// drop a step at its walk speed meets on the steepest floor it stands on,
+    /// |walkSpeed| dt tan(floorAngle), at most its half extent along gravity: it walks over
+    /// crests and down ramps it can stand on without leaving the ground. The physical
+    /// model only: the classic one ignores it.
     float snapDown = 0.0f;
     /// Rounds the box's corners with this radius, in [0, min(hw, hh)]: hw = hh = radius is
     /// a circle, hw = radius < hh an upright capsule. 0 (the default): a sharp box. Mass

@@ -8,6 +8,7 @@
 #include "step_context.hpp"
 #include "support.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 
@@ -63,6 +64,19 @@ std::optional<Met> floorBelow(const StepContext& step, std::uint32_t slot, Vec2 
     return first;
 }
 
+/// How far `body` may be moved down onto a floor in a step of `dt`: its snapDown, and for
+/// a character at least the drop a step at its walk speed meets on the steepest floor it
+/// stands on, |walk| dt tan(floorAngle) (at most its half extent along gravity), so that
+/// it follows every floor it can walk on over a crest.
+float snapDistance(const Body& body, float dt, Vec2 down) {
+    if (!body.isCharacter())
+        return body.snapDown;
+    const float c = body.floorCos;
+    const float drop = std::abs(body.walkSpeed) * dt * std::sqrt(1.0f - c * c) / c;
+    const float half = std::abs(down.x) * body.half.x + std::abs(down.y) * body.half.y;
+    return std::max(body.snapDown, std::min(drop, half));
+}
+
 /// Turns the velocity of `body` along the floor of normal `n` moving at `floorVelocity`:
 /// a character keeps its speed across gravity (its walk), any other body its speed.
 void followFloor(Body& body, Vec2 n, Vec2 floorVelocity, Vec2 down) {
@@ -89,9 +103,10 @@ void snapToGround(StepContext& step) {
     ContinuousScratch& found = step.scratch.continuous;
     for (std::uint32_t slot : w.movingSlots) {
         Body& body = w.slots[slot];
-        if (!body.isDynamic() || body.snapDown <= 0.0f || !w.isLive(slot) || leavesGround(w, slot))
+        const float distance = snapDistance(body, step.dt, w.events.down);
+        if (!body.isDynamic() || !(distance > 0.0f) || !w.isLive(slot) || leavesGround(w, slot))
             continue;
-        const Vec2 motion = w.events.down * body.snapDown;
+        const Vec2 motion = w.events.down * distance;
         const std::optional<Met> floor = floorBelow(step, slot, motion);
         if (!floor)
             continue;
