@@ -118,7 +118,8 @@ public:
         ++map_.work;
     }
 
-    /// The columns of the ramp piece holding (column, row) now, if it has one.
+    /// The columns of the ramp piece whose bodies hold (column, row), if one does: what
+    /// the tiles made, which a change may have unmade (rampRun: what they make now).
     std::optional<Run> rampPieceAt(int column, int row) const {
         const std::int32_t slot = map_.rampAt[map_.at(column, row)];
         if (slot == TileMapData::kNoBox)

@@ -14,7 +14,9 @@
 #include <algorithm>
 #include <cstdint>
 #include <random>
+#include <span>
 #include <string>
+#include <thread>
 #include <tuple>
 #include <vector>
 
@@ -192,6 +194,28 @@ TEST(TileMapCost, DestroyingAChangedMapDestroysItsBodiesAndNoOthers) {
     EXPECT_EQ(world.bodyCount(), 2u);
     EXPECT_TRUE(world.isValid(before));
     EXPECT_TRUE(world.isValid(after));
+}
+
+// tileMapBodies is a const function, which several threads may call at once; the first
+// to read the list after a change closes its gaps (under a lock; ThreadSanitizer runs the
+// Threads suite).
+TEST(Threads, TileMapBodiesReadOnSeveralThreadsAfterAChangeAgree) {
+    World world;
+    const TileMapId map = createTileMap(world, tiled(40, 40, {"/"}));
+    for (int column = 0; column < 40; column += 2)
+        setTile(world, map, column, 20, '.');
+    std::vector<std::vector<BodyId>> seen(4);
+    std::vector<std::thread> threads;
+    for (std::vector<BodyId>& mine : seen)
+        threads.emplace_back([&world, map, &mine] {
+            const std::span<const BodyId> bodies = tileMapBodies(world, map);
+            mine.assign(bodies.begin(), bodies.end());
+        });
+    for (std::thread& thread : threads)
+        thread.join();
+    EXPECT_EQ(seen[0].size(), 40u * 40u - 20u);
+    for (const std::vector<BodyId>& mine : seen)
+        EXPECT_EQ(mine, seen[0]);
 }
 
 // --- Ramps changed one by one -------------------------------------------------------------
