@@ -8,12 +8,15 @@
 //     jostle-bench --workers 1,2,4      jostle on 1, 2 and 4 threads (default 1,2)
 //     jostle-bench --stages             and where jostle's steps spent their time
 //     jostle-bench --lifecycle 1000000  creating and destroying a million bodies, timed
+//     jostle-bench --ramp-maps 300,1000 maps of 300 x 300 and 1000 x 1000 ramp tiles
+//                                       created, changed in the middle, destroyed, timed
 //
 // Progress goes to standard error, the table to standard output. Exit status: 0 when
 // all ran; 2 for bad options; 1 when something failed (the CSV file cannot be written).
 #include "catalog.hpp"
 #include "engine.hpp"
 #include "lifecycle.hpp"
+#include "ramp_maps.hpp"
 #include "report.hpp"
 #include "runner.hpp"
 
@@ -46,6 +49,7 @@ struct Options {
     bool stages = false;
     bool list = false;
     int lifecycle = 0;
+    std::vector<int> rampMaps;
     std::vector<int> workers{1, 2};
 };
 
@@ -207,6 +211,12 @@ int main(int argc, char** argv) {
                    "Instead of the scenes: create this many bodies in jostle and destroy them "
                    "all, in creation order then in reverse order, and print the times")
         ->check(CLI::Range(1, 100'000'000));
+    app.add_option("--ramp-maps", options.rampMaps,
+                   "Instead of the scenes: for each size N (a comma list), create a map of "
+                   "N x N ramp tiles in jostle, set its middle tile, destroy it, and print the "
+                   "median times of three runs")
+        ->delimiter(',')
+        ->check(CLI::Range(1, 10'000));
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& error) {
@@ -217,6 +227,10 @@ int main(int argc, char** argv) {
     try {
         if (options.lifecycle > 0) {
             runLifecycle(stdout, options.lifecycle);
+            return 0;
+        }
+        if (!options.rampMaps.empty()) {
+            runRampMaps(stdout, options.rampMaps, 3);
             return 0;
         }
         return runAll(options);

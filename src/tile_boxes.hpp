@@ -7,7 +7,11 @@
 #include "tilemap.hpp"
 #include "world_access.hpp"
 
+#include <algorithm>
 #include <cstdint>
+#include <optional>
+#include <span>
+#include <vector>
 
 namespace jostle {
 
@@ -24,8 +28,15 @@ Run runThrough(const TileMapData& map, int column, int row);
 /// True if `row` exists and `run` is one of its runs, exactly.
 bool hasRun(const TileMapData& map, int row, Run run);
 
-/// Makes and unmakes the boxes of one map, keeping its bookkeeping (boxAt, bodies, the
-/// world's owners table) in step with the world's bodies.
+/// The ramp piece the tiles of `row` make through (column, row) now, as its columns, if
+/// that tile is a ramp: each ramp tile its own, but a 2:1 ramp's two halves side by side
+/// in their order ("rR", "Ll", "cC", "Dd") one piece. A half that pairs (r L c D) is never
+/// the half it pairs with (R l C d), so a tile's piece depends on its neighbours alone.
+std::optional<Run> rampRun(const TileMapData& map, int column, int row);
+
+/// Makes and unmakes the boxes and ramps of one map, keeping its bookkeeping (boxAt,
+/// rampAt, bodies, the world's owners table) in step with the world's bodies. Each call
+/// costs the same whatever the map's size, but for labelling a box's tiles (its area).
 class Boxes {
 public:
     Boxes(World& world, TileMapId id)
@@ -34,27 +45,21 @@ public:
 
     void add(TileBox box) {
         box.body = world_.createBody(bodyDefOf(box));
-        std::int32_t slot;
-        if (!map_.freeBoxes.empty()) {
-            slot = map_.freeBoxes.back();
-            map_.freeBoxes.pop_back();
-        } else {
-            slot = static_cast<std::int32_t>(map_.boxes.size());
-            map_.boxes.emplace_back();
-        }
+        box.ticket = own(box.body);
+        const std::int32_t slot = pieceSlot(map_.boxes, map_.freeBoxes);
         map_.boxes[static_cast<std::size_t>(slot)] = box;
-        label(box, slot);
-        map_.bodies.push_back(box.body);
-        state_.tileMaps.owners[box.body.index] = {box.body, id_};
+        label(map_.boxAt, box.column, box.row, box.columns, box.rows, slot);
+        ++map_.work;
     }
 
     /// Removes the box holding the solid tile (column, row); returns what it was.
     TileBox remove(int column, int row) {
         const std::int32_t slot = map_.boxAt[map_.at(column, row)];
         const TileBox box = map_.boxes[static_cast<std::size_t>(slot)];
-        label(box, TileMapData::kNoBox);
+        label(map_.boxAt, box.column, box.row, box.columns, box.rows, TileMapData::kNoBox);
         map_.freeBoxes.push_back(slot);
-        forget(box.body);
+        forget(box.body, box.ticket);
+        ++map_.work;
         return box;
     }
 
@@ -72,10 +77,12 @@ public:
         return box;
     }
 
-    /// Makes the bodies of a ramp piece: its triangle, and the box under a lone high half
-    /// of a 2:1 ramp (a floor's high half sits on the lower half of its tile; a
-    /// ceiling's hangs from the upper half).
-    void addRamp(RampPiece piece, const RampTile& kind) {
+    /// Makes the bodies of the ramp piece over `run` of `row` (rampRun): its triangle,
+    /// and the box under a lone high half of a 2:1 ramp (a floor's high half sits on the
+    /// lower half of its tile; a ceiling's hangs from the upper half).
+    void addRamp(Run run, int row) {
+        const RampTile& kind = *rampTile(map_.tiles[map_.at(run.begin, row)]);
+        RampPiece piece{run.begin, row, run.width(), {}, {}};
         const bool floor = kind.slope.y < 0.0f; // its slope faces up: solid below
         double top = piece.row, bottom = piece.row + 1.0;
         if (piece.columns == 1 && kind.height != 0) {
@@ -84,31 +91,49 @@ public:
         }
         BodyDef def = defOf(piece.column, piece.column + piece.columns, top, bottom);
         def.slope = kind.slope;
-        piece.ramp = own(world_.createBody(def));
+        piece.ramp = world_.createBody(def);
+        piece.rampTicket = own(piece.ramp);
         if (piece.columns == 1 && kind.height == 2) {
             const double halfTop = floor ? piece.row + 0.5 : piece.row;
-            piece.under = own(
-                world_.createBody(defOf(piece.column, piece.column + 1, halfTop, halfTop + 0.5)));
+            piece.under =
+                world_.createBody(defOf(piece.column, piece.column + 1, halfTop, halfTop + 0.5));
+            piece.underTicket = own(piece.under);
         }
-        map_.ramps.push_back(piece);
+        const std::int32_t slot = pieceSlot(map_.ramps, map_.freeRamps);
+        map_.ramps[static_cast<std::size_t>(slot)] = piece;
+        label(map_.rampAt, piece.column, piece.row, piece.columns, 1, slot);
+        ++map_.work;
     }
 
-    /// Destroys the bodies of the ramp pieces of `row`.
-    void removeRamps(int row) {
-        for (const RampPiece& piece : map_.ramps) {
-            if (piece.row != row)
-                continue;
-            forget(piece.ramp);
-            if (!piece.under.isNull())
-                forget(piece.under);
-        }
-        std::erase_if(map_.ramps, [&](const RampPiece& piece) { return piece.row == row; });
+    /// Destroys the bodies of the ramp piece holding the ramp tile (column, row), the
+    /// triangle first.
+    void removeRamp(int column, int row) {
+        const std::int32_t slot = map_.rampAt[map_.at(column, row)];
+        const RampPiece piece = map_.ramps[static_cast<std::size_t>(slot)];
+        label(map_.rampAt, piece.column, piece.row, piece.columns, 1, TileMapData::kNoBox);
+        map_.freeRamps.push_back(slot);
+        forget(piece.ramp, piece.rampTicket);
+        if (!piece.under.isNull())
+            forget(piece.under, piece.underTicket);
+        ++map_.work;
     }
 
-    /// Destroys every box's body, in creation order.
+    /// The columns of the ramp piece whose bodies hold (column, row), if one does: what
+    /// the tiles made, which a change may have unmade (rampRun: what they make now).
+    std::optional<Run> rampPieceAt(int column, int row) const {
+        const std::int32_t slot = map_.rampAt[map_.at(column, row)];
+        if (slot == TileMapData::kNoBox)
+            return std::nullopt;
+        const RampPiece& piece = map_.ramps[static_cast<std::size_t>(slot)];
+        return Run{piece.column, piece.column + piece.columns};
+    }
+
+    /// Destroys every body of the map, in creation order.
     void removeAll() {
-        for (BodyId body : std::vector<BodyId>(map_.bodies))
-            forget(body);
+        const std::span<const BodyId> listed = map_.bodies.live();
+        for (BodyId body : std::vector<BodyId>(listed.begin(), listed.end()))
+            destroy(body);
+        map_.bodies = ListedBodies{};
     }
 
 private:
@@ -141,23 +166,43 @@ private:
                        .userData = s.userData};
     }
 
-    BodyId own(BodyId body) {
-        map_.bodies.push_back(body);
+    /// Lists `body` as the map's, created last; returns its ticket in the list.
+    std::uint32_t own(BodyId body) {
         state_.tileMaps.owners[body.index] = {body, id_};
-        return body;
+        return map_.bodies.append(body);
     }
 
-    void label(const TileBox& box, std::int32_t slot) {
-        for (int row = box.row; row < box.row + box.rows; ++row)
-            std::fill_n(map_.boxAt.begin() + static_cast<std::ptrdiff_t>(map_.at(box.column, row)),
-                        box.columns, slot);
+    /// A free slot of `pieces` (freed lists the free ones), or a new one.
+    template <class Piece>
+    static std::int32_t pieceSlot(std::vector<Piece>& pieces, std::vector<std::int32_t>& freed) {
+        if (freed.empty()) {
+            pieces.emplace_back();
+            return static_cast<std::int32_t>(pieces.size() - 1);
+        }
+        const std::int32_t slot = freed.back();
+        freed.pop_back();
+        return slot;
+    }
+
+    /// Sets `at` to `slot` over the tiles of a piece.
+    void label(std::vector<std::int32_t>& at, int column, int row, int columns, int rows,
+               std::int32_t slot) {
+        for (int r = row; r < row + rows; ++r)
+            std::fill_n(at.begin() + static_cast<std::ptrdiff_t>(map_.at(column, r)), columns,
+                        slot);
+        map_.work += static_cast<std::uint64_t>(columns) * static_cast<std::uint64_t>(rows);
     }
 
     /// Destroys the body (unless the game already did) and drops it from the records.
-    void forget(BodyId body) {
+    void forget(BodyId body, std::uint32_t ticket) {
+        destroy(body);
+        map_.bodies.remove(ticket);
+    }
+
+    /// Destroys the body (unless the game already did) and drops it from the owners.
+    void destroy(BodyId body) {
         if (world_.isValid(body))
             world_.destroyBody(body);
-        map_.bodies.erase(std::find(map_.bodies.begin(), map_.bodies.end(), body));
         const auto owner = state_.tileMaps.owners.find(body.index);
         if (owner != state_.tileMaps.owners.end() && owner->second.body == body)
             state_.tileMaps.owners.erase(owner);
@@ -169,11 +214,13 @@ private:
     TileMapId id_;
 };
 
-/// The ramp pieces of `row`, made afresh: each ramp tile its own, but a 2:1 ramp's two
-/// halves side by side in their order ("rR", "Ll", "cC", "Dd") one triangle.
-void buildRamps(World& world, TileMapId id, int row);
+/// Makes the ramp pieces of `row` right after (column, row) was changed: the pieces
+/// through its neighbours that the change unmade or made. Pieces that stay keep their
+/// bodies.
+void rebuildRampsAround(World& world, TileMapId id, int column, int row);
 
-/// The canonical decomposition of the whole map, top row first, left to right.
+/// The canonical decomposition of the whole map, top row first, left to right: the boxes,
+/// then the ramps.
 void buildAll(World& world, TileMapId id);
 
 } // namespace jostle

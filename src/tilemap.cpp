@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <mutex>
 #include <string>
 
 namespace jostle {
@@ -82,6 +83,7 @@ TileMapId createTileMap(World& world, const TileMapDef& def) {
             map.tiles.push_back(tile);
         }
     map.boxAt.assign(map.solid.size(), TileMapData::kNoBox);
+    map.rampAt.assign(map.solid.size(), TileMapData::kNoBox);
 
     const TileMapId id{index, generation, WorldAccess::state(world).serial};
     buildAll(world, id);
@@ -190,7 +192,7 @@ void setTile(World& world, TileMapId id, int column, int row, char tile) {
     if (map.isSolid(column, row) != solid)
         setSolid(world, id, column, row, solid);
     if (rampsChange)
-        buildRamps(world, id, row);
+        rebuildRampsAround(world, id, column, row);
 }
 
 char tileOf(const World& world, TileMapId id, int column, int row) {
@@ -241,7 +243,10 @@ TileMapDef tileMapDef(const World& world, TileMapId id) {
 }
 
 std::span<const BodyId> tileMapBodies(const World& world, TileMapId id) {
-    return lookUp(WorldAccess::state(world), id, "tileMapBodies").bodies;
+    const WorldState& state = WorldAccess::state(world);
+    const TileMapData& map = lookUp(state, id, "tileMapBodies");
+    std::lock_guard<std::mutex> lock(state.tileMaps.listLock);
+    return map.bodies.live();
 }
 
 TileMapId tileMapOf(const World& world, BodyId body) {

@@ -4,11 +4,88 @@
 
 #include "jostle/tilemap.hpp"
 
+#include <cstddef>
 #include <cstdint>
+#include <mutex>
+#include <span>
 #include <unordered_map>
 #include <vector>
 
 namespace jostle {
+
+/// A map's bodies in creation order (tileMapBodies), with appending and removing in O(1)
+/// whatever their number, as CreationOrder does for the world's: removing one leaves a
+/// gap (the null handle), found through the ticket its piece keeps, not by a search. The
+/// gaps are closed, keeping the order, when they are half the list, and when the list is
+/// read (live()).
+class ListedBodies {
+public:
+    /// Appends `body`, created last; returns its ticket, good until remove(ticket).
+    std::uint32_t append(BodyId body) {
+        std::uint32_t ticket;
+        if (!freeTickets_.empty()) {
+            ticket = freeTickets_.back();
+            freeTickets_.pop_back();
+        } else {
+            ticket = static_cast<std::uint32_t>(positions_.size());
+            positions_.emplace_back();
+        }
+        positions_[ticket] = static_cast<std::uint32_t>(entries_.size());
+        entries_.push_back(body);
+        tickets_.push_back(ticket);
+        return ticket;
+    }
+
+    /// Removes the body of `ticket`.
+    void remove(std::uint32_t ticket) {
+        entries_[positions_[ticket]] = BodyId{};
+        freeTickets_.push_back(ticket);
+        ++gaps_;
+        while (!entries_.empty() && entries_.back().isNull()) {
+            entries_.pop_back();
+            tickets_.pop_back();
+            --gaps_;
+        }
+        if (2 * gaps_ > entries_.size())
+            close();
+    }
+
+    /// The bodies, in creation order, with no gap: closes the gaps first. The caller keeps
+    /// two threads from calling it at once (TileMaps::listLock).
+    std::span<const BodyId> live() const {
+        if (gaps_ != 0)
+            close();
+        return entries_;
+    }
+
+    /// The entries moved so far by closing gaps (TileMapData::work).
+    std::uint64_t moved() const { return moved_; }
+
+private:
+    /// Moves every body down over the gaps, in order, and notes where each went.
+    void close() const {
+        std::size_t kept = 0;
+        for (std::size_t i = 0; i < entries_.size(); ++i)
+            if (!entries_[i].isNull()) {
+                positions_[tickets_[i]] = static_cast<std::uint32_t>(kept);
+                entries_[kept] = entries_[i];
+                tickets_[kept++] = tickets_[i];
+            }
+        moved_ += entries_.size();
+        entries_.resize(kept);
+        tickets_.resize(kept);
+        gaps_ = 0;
+    }
+
+    // Mutable: live() closes the gaps.
+    mutable std::vector<BodyId> entries_;
+    /// The ticket of each entry, and the entry of each ticket.
+    mutable std::vector<std::uint32_t> tickets_;
+    mutable std::vector<std::uint32_t> positions_;
+    std::vector<std::uint32_t> freeTickets_;
+    mutable std::size_t gaps_ = 0;
+    mutable std::uint64_t moved_ = 0;
+};
 
 /// A rectangle of solid tiles made into one static body.
 struct TileBox {
@@ -17,6 +94,7 @@ struct TileBox {
     int columns = 0; ///< its size, in tiles
     int rows = 0;
     BodyId body;
+    std::uint32_t ticket = 0; ///< its body's ticket in TileMapData::bodies
 };
 
 /// The bodies of one ramp tile, or of a pair of 2:1 ramp tiles merged into one triangle:
@@ -26,7 +104,9 @@ struct RampPiece {
     int row = 0;
     int columns = 1; ///< 1, or 2 for a merged pair
     BodyId ramp;
-    BodyId under; ///< null unless a lone high half
+    BodyId under;                 ///< null unless a lone high half
+    std::uint32_t rampTicket = 0; ///< their bodies' tickets in TileMapData::bodies
+    std::uint32_t underTicket = 0;
 };
 
 /// One tile map.
@@ -46,16 +126,24 @@ struct TileMapData {
     std::vector<std::uint8_t> solid;
     /// Row by row, each tile's character (tilemap.hpp: '#', '.' or a ramp).
     std::vector<char> tiles;
-    /// The ramp pieces, row by row, left to right within a row.
-    std::vector<RampPiece> ramps;
     /// Row by row, the index in `boxes` of the box holding each solid tile; kNoBox for
     /// empty tiles.
     std::vector<std::int32_t> boxAt;
     /// Box slots; freeBoxes lists the unused ones.
     std::vector<TileBox> boxes;
     std::vector<std::int32_t> freeBoxes;
-    /// The bodies of the boxes, in creation order (tileMapBodies).
-    std::vector<BodyId> bodies;
+    /// Row by row, the index in `ramps` of the ramp piece holding each ramp tile; kNoBox
+    /// for the other tiles.
+    std::vector<std::int32_t> rampAt;
+    /// Ramp piece slots; freeRamps lists the unused ones.
+    std::vector<RampPiece> ramps;
+    std::vector<std::int32_t> freeRamps;
+    /// The bodies of the boxes and ramps, in creation order (tileMapBodies).
+    ListedBodies bodies;
+    /// What the map's code has done, for the tests that check what a call costs: one for
+    /// each tile it scans or labels and each piece it makes or unmakes (bodies.moved()
+    /// adds the list's entries moved). Never read by the library.
+    mutable std::uint64_t work = 0;
 
     bool alive = false;
     /// Counts the slot's reuses, as Body::generation does.
@@ -84,6 +172,9 @@ struct TileMaps {
     /// The map of each tile map body, by body slot (tileMapOf). Only looked up, never
     /// iterated, so its hash order cannot leak into the results.
     std::unordered_map<std::uint32_t, TileMapOwner> owners;
+    /// Held by tileMapBodies, a const function several threads may call at once, while it
+    /// closes the gaps of a map's list.
+    mutable std::mutex listLock;
 };
 
 } // namespace jostle

@@ -91,10 +91,11 @@ struct TileMapDef {
 std::optional<FieldError> checkTileMapDef(const TileMapDef& def);
 
 /// Creates a tile map and the static bodies of its solid tiles, in order, top row first
-/// (the smallest y), left to right, then those of its ramps in the same order. Throws
-/// jostle::Error if checkTileMapDef(def) finds a problem ("createTileMap:
-/// TileMapDef.rows[2][5]: expected '#', '.' or a ramp, got 'x'"), and for a ramp in a world
-/// of the classic model, whose bodies are sharp boxes only; then nothing is created.
+/// (the smallest y), left to right, then those of its ramps in the same order, in time
+/// proportional to its tiles. Throws jostle::Error if checkTileMapDef(def) finds a problem
+/// ("createTileMap: TileMapDef.rows[2][5]: expected '#', '.' or a ramp, got 'x'"), and for
+/// a ramp in a world of the classic model, whose bodies are sharp boxes only; then nothing
+/// is created.
 TileMapId createTileMap(World& world, const TileMapDef& def);
 
 /// Destroys the map and all its bodies (as World::destroyBody does: what rests on them
@@ -108,8 +109,9 @@ void destroyTileMap(World& world, TileMapId map);
 /// solid where a dynamic body is pushes the body out, as any overlap does.
 void setTile(World& world, TileMapId map, int column, int row, bool solid);
 /// Sets the tile at (column, row) to any character `rows` may hold ('#', '.', a ramp);
-/// jostle::Error for another, and for a ramp in the classic model. A ramp's row has its
-/// ramps rebuilt.
+/// jostle::Error for another, and for a ramp in the classic model. Of the ramps, only the
+/// bodies of the tile and of a 2:1 half beside it that pairs or unpairs with it are
+/// destroyed and created again: a few bodies, whatever the map's size.
 void setTile(World& world, TileMapId map, int column, int row, char tile);
 
 /// The character of the tile at (column, row), as in TileMapDef::rows; '.' outside.
