@@ -38,6 +38,11 @@
 //               walks down at once when turned (it hopped off the ramp: issue 29). The
 //               busy world's hashes unchanged (its characters walk on level floors,
 //               where the new rule is the old one bit for bit).
+//   2026-11-26  physical model, both worlds: a pair moved for a bounce from a gap is moved
+//               back by the part of the bounce the solved contacts did not let it make, and
+//               that move follows who holds whom as position correction does (a plank was
+//               wedged into the bumps under it by a heavy box landing on it: fuzz_api,
+//               issue 28's campaign). Classic unchanged.
 
 #include "jostle/query.hpp"
 #include "jostle/tilemap.hpp"
@@ -290,8 +295,8 @@ std::uint64_t runSlopesWorld(int steps, TaskSystem tasks = {}, std::uint32_t blo
 }
 
 // The recorded hashes (see the history at the top of the file).
-constexpr std::uint64_t kSlopesHash = 15292324364331046718ULL;
-constexpr std::uint64_t kPhysicalHash = 17959099324787409019ULL;
+constexpr std::uint64_t kSlopesHash = 1054189714852049469ULL;
+constexpr std::uint64_t kPhysicalHash = 5073434225265816725ULL;
 constexpr std::uint64_t kClassicHash = 11721795189068454326ULL;
 constexpr int kSteps = 3000; // 50 seconds of a busy world
 

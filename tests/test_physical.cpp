@@ -399,6 +399,54 @@ TEST(Stacks, ALightBoxRammedDownOntoTheEdgesOfAHoleStaysOnThem) {
     EXPECT_LE(overlapY(world, light, left), 0.01f * 2.5f + 1e-4f);
 }
 
+// Found by fuzz_api's settled mode (issue 28's campaign; tests/fuzz/corpus/api/
+// bounce-pressed-into-a-bump-1): a light plank falls onto two thin bumps on the floor
+// (y-up), then a column of boxes, one 230 times heavier, lands on it. The plank met the
+// bumps from a gap and was moved for bouncing off them for the rest of the step; the heavy
+// box then held it down, so it never made that bounce, and ended 0.15 inside the bumps,
+// past their middle, wedged there for good. The part of a bounce not made is taken back.
+TEST(Stacks, APlankBouncingOffBumpsWhileAHeavyBoxLandsOnItRestsOnTheBumps) {
+    World world = physicalWorld({0, -18.75f});
+    world.createBody({.type = BodyType::Static,
+                      .x = 0.015625f,
+                      .y = -0.09375f,
+                      .hw = 3.140625f,
+                      .hh = 0.09375f});
+    const BodyId bump = world.createBody({.type = BodyType::Static,
+                                          .x = -0.359375f,
+                                          .y = 0.046875f,
+                                          .hw = 0.140625f,
+                                          .hh = 0.046875f});
+    world.createBody({.type = BodyType::Static,
+                      .x = -0.078125f,
+                      .y = 0.046875f,
+                      .hw = 0.046875f,
+                      .hh = 0.046875f});
+    const BodyId plank = world.createBody({.x = -0.22265625f,
+                                           .y = 4.390625f,
+                                           .hw = 0.1796875f,
+                                           .hh = 0.078125f,
+                                           .bounce = 0.75f,
+                                           .friction = 0.75f});
+    const float ys[] = {4.6640625f, 5.0390625f, 5.4140625f, 5.7890625f};
+    const float densities[] = {0.1f, 100.0f, 0.1f, 0.1f};
+    for (int k = 0; k < 4; ++k)
+        world.createBody({.x = -0.22265625f,
+                          .y = ys[k],
+                          .hw = 0.1796875f,
+                          .hh = 0.1796875f,
+                          .bounce = k == 1 ? 0.0f : 0.75f,
+                          .friction = 0.75f,
+                          .density = densities[k]});
+    // On the bumps: its bottom at their top, 0.09375, within twice the slop of the bump's
+    // half height.
+    for (int i = 0; i < 120; ++i) {
+        world.step(1.0f / 30.0f);
+        ASSERT_LE(overlapY(world, bump, plank), 2.0f * 0.01f * 0.046875f) << "step " << i;
+    }
+    EXPECT_NEAR(world.position(plank).y, 0.09375f + 0.078125f, 0.01f * 0.078125f);
+}
+
 // Found by fuzz_api (tests/fuzz/corpus/api/squeezed-into-static-1, -3, -4): a small box
 // created inside the bottom of a big one that stands on the floor. The big one pushed it
 // into the floor (2.2 of its 4 units, for good, when it was 100 times lighter). Both now

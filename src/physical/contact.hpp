@@ -78,6 +78,20 @@ struct Contact {
     }
     /// The normal impulse of the step, what the held body's partner felt.
     float totalImpulse() const { return normalImpulse + shockImpulse + collisionImpulse; }
+
+    /// Who gives way when the pair is moved apart (position correction, an impact that met
+    /// from a gap): the body that holds the other stays put, and the other takes the whole
+    /// move; where neither holds, the two share it by inverse mass. a's share, then b's.
+    float shareOfA() const {
+        return supporter == 1   ? 0.0f
+               : supporter == 2 ? (invMassA > 0.0f ? 1.0f : 0.0f)
+                                : invMassA * effectiveMass;
+    }
+    float shareOfB() const {
+        return supporter == 2   ? 0.0f
+               : supporter == 1 ? (invMassB > 0.0f ? 1.0f : 0.0f)
+                                : invMassB * effectiveMass;
+    }
 };
 
 } // namespace jostle

@@ -22,11 +22,12 @@ constexpr int kMaxSweeps = 8;
 /// float noise in the velocities of a resting pile.
 constexpr float kStillPerSlop = 5.0f;
 
-/// Moves both bodies of `c` so that their offset along the normal changes by `shift`,
-/// shared by inverse mass.
+/// Moves the bodies of `c` so that their offset along the normal changes by `shift`, as
+/// position correction moves them (Contact::shareOfA): the body that holds the other
+/// stays put, so that a blow from above never drives a held body into what holds it.
 void shiftApart(StepContext& step, const Contact& c, Vec2 normal, float shift) {
-    const float shiftA = shift * c.invMassA * c.effectiveMass;
-    const float shiftB = shift * c.invMassB * c.effectiveMass;
+    const float shiftA = shift * c.shareOfA();
+    const float shiftB = shift * c.shareOfB();
     for (auto [solverBody, by] : {std::pair{c.ia, shiftA}, std::pair{c.ib, -shiftB}}) {
         SolverBody& s = step.bodies[solverBody];
         s.position[0] += normal.x * by;
@@ -51,9 +52,10 @@ inline bool mayMeet(const StepContext& step, const Contact& c) {
     return fromGravity - vn > kStillPerSlop * c.slop;
 }
 
-/// Collides the pair of `c` if it meets this step; true if it did. `shifted` is set if it
-/// moved the bodies.
-bool collide(StepContext& step, Contact& c, float threshold, bool& shifted) {
+/// Collides the pair of contact `k` if it meets this step; true if it did. `shifted` is set
+/// if it moved the bodies.
+bool collide(StepContext& step, std::uint32_t k, float threshold, bool& shifted) {
+    Contact& c = step.contacts[k];
     const Vec2 n = c.normal();
     const float vn = dot(step.velocityOf(c.ia) - step.velocityOf(c.ib), n);
     // What this step's gravity adds to their approach is the contacts' to hold, not a blow.
@@ -92,6 +94,7 @@ bool collide(StepContext& step, Contact& c, float threshold, bool& shifted) {
         // Met after meetAfter, then parted at the speed it left with: where that ends the
         // step, not a gap's width further off.
         shiftApart(step, c, n, -gap - leaving * meetAfter);
+        step.scratch.impacts.bounced.push_back({k, meetAfter, leaving});
         shifted = true;
     }
     return true;
@@ -123,9 +126,10 @@ void resolveImpacts(StepContext& step) {
     };
     // The first sweep looks at every contact.
     s.next.clear();
-    for (Contact& c : step.contacts)
-        if (mayMeet(step, c) && collide(step, c, threshold, shifted))
-            noteChanged(c, 1);
+    s.bounced.clear();
+    for (std::uint32_t k = 0; k < step.contacts.size(); ++k)
+        if (mayMeet(step, step.contacts[k]) && collide(step, k, threshold, shifted))
+            noteChanged(step.contacts[k], 1);
     // Each later one at the contacts of the bodies the one before changed, in order: the
     // support order's contact graph lists each body's.
     const SupportScratch& graph = step.scratch.support;
@@ -142,9 +146,8 @@ void resolveImpacts(StepContext& step) {
         for (std::size_t word = 0; word < s.queued.size(); ++word)
             for (std::uint64_t bits = std::exchange(s.queued[word], 0); bits != 0;
                  bits &= bits - 1) {
-                const std::size_t k = word * 64 + std::size_t(std::countr_zero(bits));
-                if (mayMeet(step, step.contacts[k]) &&
-                    collide(step, step.contacts[k], threshold, shifted))
+                const auto k = std::uint32_t(word * 64 + std::size_t(std::countr_zero(bits)));
+                if (mayMeet(step, step.contacts[k]) && collide(step, k, threshold, shifted))
                     noteChanged(step.contacts[k], sweep);
             }
     }
@@ -153,6 +156,17 @@ void resolveImpacts(StepContext& step) {
         for (Contact& c : step.contacts)
             if (c.targetSpeed <= 0.0f)
                 c.targetSpeed = std::min(0.0f, step.overlapOf(c) / step.dt);
+}
+
+void settleBounces(StepContext& step) {
+    for (const ImpactsScratch::Bounced& b : step.scratch.impacts.bounced) {
+        const Contact& c = step.contacts[b.contact];
+        const Vec2 n = c.normal();
+        const float leaving = dot(step.velocityOf(c.ia) - step.velocityOf(c.ib), n);
+        const float unmade = (b.leaving - leaving) * b.meetAfter;
+        if (unmade > 0.0f)
+            shiftApart(step, c, n, unmade);
+    }
 }
 
 } // namespace jostle

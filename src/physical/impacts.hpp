@@ -21,11 +21,24 @@ struct ImpactsScratch {
     std::vector<std::uint32_t> changed, next; ///< solver bodies changed in a sweep
     std::vector<Vec2> gravityInStep;          ///< by solver body: what gravity adds to its velocity
     std::vector<std::uint64_t> queued;        ///< a bit per contact: to look at in this sweep
+    /// A pair that met from a gap after `meetAfter` of the step and was moved for parting
+    /// at `leaving` for the rest of it (by contact index).
+    struct Bounced {
+        std::uint32_t contact;
+        float meetAfter, leaving;
+    };
+    std::vector<Bounced> bounced;
 };
 
 /// Resolves the step's impacts on the solver bodies' velocities; a pair that closes a gap
 /// to bounce is moved so that it ends the step where bouncing at the moment of contact
 /// takes it.
 void resolveImpacts(StepContext& step);
+
+/// After the contacts are solved: a pair moved for a bounce that it no longer makes at
+/// that speed (a heavy body landed on top and held it down) is moved back by the part of
+/// the bounce that is not made, so that it ends the step where its final velocity takes it
+/// from the moment of contact, never inside what it met.
+void settleBounces(StepContext& step);
 
 } // namespace jostle

@@ -32,16 +32,9 @@ bool correctionPass(StepContext& step) {
                                      ? excess
                                      : std::min(step.options.correction * excess,
                                                 0.25f * ((sloped ? c.size : c.extent) - c.slop));
-        // The body that holds the other stays put (support.hpp); where neither holds, the
-        // two share the correction by inverse mass.
-        const float shareA = c.supporter == 1   ? 0.0f
-                             : c.supporter == 2 ? (c.invMassA > 0.0f ? 1.0f : 0.0f)
-                                                : c.invMassA * c.effectiveMass;
-        const float shareB = c.supporter == 2   ? 0.0f
-                             : c.supporter == 1 ? (c.invMassB > 0.0f ? 1.0f : 0.0f)
-                                                : c.invMassB * c.effectiveMass;
-        const float moveA = correction * shareA;
-        const float moveB = correction * shareB;
+        // The body that holds the other stays put (support.hpp).
+        const float moveA = correction * c.shareOfA();
+        const float moveB = correction * c.shareOfB();
         // An infinitely heavy body never moves (and may be in several contacts at once on
         // several threads: solver_layers.hpp).
         if (sloped) {

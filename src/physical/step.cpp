@@ -48,6 +48,7 @@ void stepPhysical(WorldState& world, float dt) {
     time.support += clock.lap();
     solveVelocities(step);
     propagateShock(step);
+    settleBounces(step);
     time.velocities += clock.lap();
     const std::size_t layered = step.contacts.size();
     sweepFastBodies(step);
