@@ -4,6 +4,7 @@
 #include "integrate.hpp"
 #include "world_state.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -40,6 +41,20 @@ bool slidesDown(const WorldState& world, BodyId id, Vec2 right) {
     return slides;
 }
 
+/// Whether character `id` pressed, at the end of the last step, against a dynamic body on
+/// the side it walks to (a wall to it, not its floor). Walking does not speed it up into
+/// that body: its feet push it, through its floor's friction, as hard as they grip.
+bool walksIntoABody(const WorldState& world, BodyId id, Vec2 right, float walk) {
+    const Body& body = world.slots[id.index];
+    const Vec2 down = world.events.down;
+    bool into = false;
+    world.forEachContactOf(id, [&](BodyId other, Vec2 push, const TouchRecord&) {
+        into = into || (world.slots[other.index].isDynamic() && walk * dot(push, right) < 0.0f &&
+                        (surfaceOf(push, down, body.floorCos) & (kWallLeft | kWallRight)) != 0);
+    });
+    return into;
+}
+
 /// What walking adds along gravity on a floor of normal `floor` (pointing up from it):
 /// relative to the floor, the character goes along it, and its speed away from it (a
 /// jump, or gravity's pull into it) stays as it was. On a slope, walking across gravity
@@ -63,11 +78,17 @@ void walkCharacters(WorldState& world) {
         if (ground.body.isNull() && slidesDown(world, id, right))
             continue;
         const Vec2 under = ground.body.isNull() ? Vec2{} : world.slots[ground.body.index].velocity;
-        Vec2 walked = body.velocity +
-                      right * (dot(under, right) + body.walkSpeed - dot(body.velocity, right));
+        const float now = dot(body.velocity, right);
+        float across = dot(under, right) + body.walkSpeed;
+        float walk = body.walkSpeed;
+        if (walk != 0.0f && walksIntoABody(world, id, right, walk)) {
+            across = walk > 0.0f ? std::min(across, now) : std::max(across, now);
+            walk = across - dot(under, right);
+        }
+        Vec2 walked = body.velocity + right * (across - now);
         if (!ground.body.isNull())
-            walked += down * alongGravityOnFloor(body.velocity - under, ground.normal, right, down,
-                                                 body.walkSpeed);
+            walked +=
+                down * alongGravityOnFloor(body.velocity - under, ground.normal, right, down, walk);
         body.velocity = withinRange(walked);
     }
 }

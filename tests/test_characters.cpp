@@ -437,5 +437,77 @@ TEST(OverCrests, ACharacterWithTheDefaultsStaysOnTheGroundAtItsWalkSpeed) {
     }
 }
 
+// --- Pushing (issue 29) ---------------------------------------------------------------------
+//
+// A character pushes as hard as its feet grip the floor: friction μ (the pair's, with the
+// floor) times its weight m g. A crate of mass M on the same floor with friction μc moves
+// only when μ m g exceeds μc M g, and then the two accelerate together at
+// (μ m − μc M) g / (m + M). In the air it pushes with its momentum only. (It used to push
+// whatever it met at its walk speed, whatever its friction: a crate 20 times its mass at 16.)
+
+struct PushScene {
+    World world{WorldDef{.gravity = {0, 800}, .sleeping = false}};
+    BodyId hero, crate;
+    /// The character (12 × 16, mass 192) stands against the crate's left face.
+    PushScene(float heroFriction, float crateMass, float crateFriction) {
+        world.createBody(
+            {.type = BodyType::Static, .x = 0, .y = 50, .hw = 5000, .hh = 50, .friction = 1});
+        hero = world.createBody(
+            {.x = -6, .y = -8, .hw = 6, .hh = 8, .friction = heroFriction, .character = true});
+        crate = world.createBody(
+            {.x = 8, .y = -8, .hw = 8, .hh = 8, .friction = crateFriction, .mass = crateMass});
+        for (int i = 0; i < 10; ++i)
+            world.step(kDt);
+    }
+};
+
+TEST(Pushing, ACrateHeavierThanTheGripStaysPut) {
+    // Grip 0.5 × 192 g = 96 g against the crate's 0.5 × 960 g = 480 g.
+    PushScene scene(0.5f, 960, 0.5f);
+    const float start = scene.world.position(scene.crate).x;
+    scene.world.setWalkSpeed(scene.hero, 150);
+    for (int i = 0; i < 120; ++i)
+        scene.world.step(kDt);
+    EXPECT_NEAR(scene.world.position(scene.crate).x, start, 0.05f);
+    EXPECT_NEAR(scene.world.velocity(scene.crate).x, 0.0f, 0.5f);
+}
+
+TEST(Pushing, AFrictionlessCharacterCannotPush) {
+    PushScene scene(0.0f, 192, 0.1f);
+    const float start = scene.world.position(scene.crate).x;
+    scene.world.setWalkSpeed(scene.hero, 150);
+    for (int i = 0; i < 120; ++i)
+        scene.world.step(kDt);
+    EXPECT_NEAR(scene.world.position(scene.crate).x, start, 0.05f);
+}
+
+TEST(Pushing, AGripAboveTheCratesFrictionAcceleratesBothAtWhatTheNetForceGives) {
+    // Grip 1 × 192 g against 0.1 × 384 g: (192 − 38.4) g / (192 + 384) = 0.2667 g = 213.3.
+    PushScene scene(1.0f, 384, 0.1f);
+    scene.world.setWalkSpeed(scene.hero, 150);
+    const float a = (192.0f - 38.4f) * 800.0f / (192.0f + 384.0f);
+    for (int i = 1; i <= 30; ++i) {
+        scene.world.step(kDt);
+        // Below the walk speed all the while: 213.3 × 0.5 s = 107.
+        EXPECT_NEAR(scene.world.velocity(scene.crate).x, a * kDt * float(i),
+                    0.05f * a * kDt * float(i) + 1.0f)
+            << "step " << i;
+    }
+}
+
+TEST(Pushing, InTheAirACharacterPushesWithItsMomentumOnly) {
+    // Gravity off for both: the character flies at 150 into a crate of its own mass. They
+    // go on together at 75 (momentum m 150 shared by 2 m), and no faster.
+    World world(WorldDef{.sleeping = false});
+    const BodyId hero = world.createBody({.x = -40, .y = 0, .hw = 6, .hh = 8, .character = true});
+    const BodyId crate = world.createBody({.x = 0, .y = 0, .hw = 8, .hh = 8, .mass = 192});
+    world.setWalkSpeed(hero, 150);
+    for (int i = 0; i < 120; ++i) {
+        world.step(kDt);
+        EXPECT_LE(world.velocity(crate).x, 75.0f + 0.5f) << "step " << i;
+    }
+    EXPECT_NEAR(world.velocity(crate).x, 75.0f, 0.5f);
+}
+
 } // namespace
 } // namespace jostle
