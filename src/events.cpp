@@ -150,7 +150,8 @@ void StepEvents::beginStep(const WorldState& world) {
     ends.clear();
     sensorBegins.clear();
     sensorEnds.clear();
-    crushes.clear();
+    crushBegins.clear();
+    crushEnds.clear();
     contactsNow.clear();
     sensorsNow.clear();
     touching.resize(world.slots.size(), 0);
@@ -230,7 +231,9 @@ void StepEvents::clear() {
     ends.clear();
     sensorBegins.clear();
     sensorEnds.clear();
-    crushes.clear();
+    crushBegins.clear();
+    crushEnds.clear();
+    crushing.clear();
     touching.clear();
     contactsNow.clear();
     sensorsNow.clear();

@@ -50,7 +50,10 @@ inline TouchingBit surfaceOf(Vec2 push, Vec2 down, float floorCos) {
 struct StepEvents {
     std::vector<ContactEvent> begins, ends;
     std::vector<SensorEvent> sensorBegins, sensorEnds;
-    std::vector<CrushEvent> crushes;
+    std::vector<CrushEvent> crushBegins, crushEnds;
+    /// Crushes under way (physical model): the body and what crushes it pass through each
+    /// other, without a contact, until they no longer overlap (physical/report.cpp).
+    std::vector<CrushEvent> crushing;
     /// TouchingBit flags by slot, from the last step that evaluated the body.
     std::vector<std::uint8_t> touching;
     /// Unit "down" for the touching flags this step, set by beginStep().

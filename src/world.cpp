@@ -111,8 +111,12 @@ std::span<const SensorEvent> World::sensorEnds() const {
     return state_->events.sensorEnds;
 }
 
-std::span<const CrushEvent> World::crushes() const {
-    return state_->events.crushes;
+std::span<const CrushEvent> World::crushBegins() const {
+    return state_->events.crushBegins;
+}
+
+std::span<const CrushEvent> World::crushEnds() const {
+    return state_->events.crushEnds;
 }
 
 std::uint64_t World::pairsLeftOut() const {

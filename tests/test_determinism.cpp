@@ -120,8 +120,10 @@ void hashStep(const World& world, Hash& hash) {
     }
     for (const SensorEvent& e : world.sensorBegins())
         hash.add(e.visitor);
-    for (const CrushEvent& e : world.crushes())
+    for (const CrushEvent& e : world.crushBegins())
         hash.add(e.body);
+    for (const CrushEvent& e : world.crushEnds())
+        hash.add(e.by);
 }
 
 // A container with a pyramid, a tile floor with a one-way ledge, a lift, a sensor and

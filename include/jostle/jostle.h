@@ -595,8 +595,11 @@ const jostle_contact_event* jostle_world_contact_ends(const jostle_world* world,
 const jostle_sensor_event* jostle_world_sensor_begins(const jostle_world* world, int* count);
 /// Bodies that stopped overlapping a sensor in the last step.
 const jostle_sensor_event* jostle_world_sensor_ends(const jostle_world* world, int* count);
-/// Bodies crushed in the last step (physical model): the game decides what happens.
-const jostle_crush_event* jostle_world_crushes(const jostle_world* world, int* count);
+/// Crushes that began in the last step (physical model; World::crushBegins): each squeeze
+/// begins once, and the two bodies pass through each other until they no longer overlap.
+const jostle_crush_event* jostle_world_crush_begins(const jostle_world* world, int* count);
+/// Crushes that ended in the last step: the two no longer overlap, or one was destroyed.
+const jostle_crush_event* jostle_world_crush_ends(const jostle_world* world, int* count);
 /// Pairs the last step left out because a dynamic body had more than
 /// max_contacts_per_body of them (physical model): 0 in a sane scene.
 uint64_t jostle_world_pairs_left_out(const jostle_world* world);

@@ -403,9 +403,15 @@ public:
     /// A body started or stopped overlapping a sensor in the last step.
     std::span<const SensorEvent> sensorBegins() const;
     std::span<const SensorEvent> sensorEnds() const;
-    /// Bodies squeezed in the last step between a moving kinematic body and something
-    /// that would not give way (physical model): the game decides (crush, or rescue).
-    std::span<const CrushEvent> crushes() const;
+    /// Crushes that began in the last step: a body squeezed between a moving kinematic
+    /// body and something that would not give way (physical model). Each squeeze begins
+    /// once. From then on the body and the kinematic body pass through each other (no
+    /// contact, no push) and the body stays where what holds it keeps it, until the two no
+    /// longer overlap: that ends the crush. The game decides (kill, or rescue).
+    std::span<const CrushEvent> crushBegins() const;
+    /// Crushes that ended in the last step: the two bodies no longer overlap, or one of
+    /// them was destroyed.
+    std::span<const CrushEvent> crushEnds() const;
     /// Pairs of bodies the last step left out because a dynamic body had more than
     /// PhysicalOptions::maxContactsPerBody of them (physical model): 0 in a sane scene.
     std::uint64_t pairsLeftOut() const;

@@ -36,7 +36,8 @@ struct jostle_world {
     std::vector<jostle_contact_event> contactEnds;
     std::vector<jostle_sensor_event> sensorBegins;
     std::vector<jostle_sensor_event> sensorEnds;
-    std::vector<jostle_crush_event> crushes;
+    std::vector<jostle_crush_event> crushBegins;
+    std::vector<jostle_crush_event> crushEnds;
     /// True while jostle_body_move runs: its filter may read the world, not change it.
     bool moving = false;
     /// The collisions of the last jostle_body_move, which its result points into.

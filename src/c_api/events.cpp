@@ -31,14 +31,16 @@ void publishEvents(jostle_world& w) {
         convert(w.world.contactEnds(), w.contactEnds);
         convert(w.world.sensorBegins(), w.sensorBegins);
         convert(w.world.sensorEnds(), w.sensorEnds);
-        convert(w.world.crushes(), w.crushes);
+        convert(w.world.crushBegins(), w.crushBegins);
+        convert(w.world.crushEnds(), w.crushEnds);
     } catch (...) {
         // Out of memory: better no events than a mix of two steps'.
         w.contactBegins.clear();
         w.contactEnds.clear();
         w.sensorBegins.clear();
         w.sensorEnds.clear();
-        w.crushes.clear();
+        w.crushBegins.clear();
+        w.crushEnds.clear();
         throw;
     }
 }
@@ -63,8 +65,12 @@ const jostle_sensor_event* jostle_world_sensor_ends(const jostle_world* world, i
     return handOut(__func__, world, count, &jostle_world::sensorEnds);
 }
 
-const jostle_crush_event* jostle_world_crushes(const jostle_world* world, int* count) {
-    return handOut(__func__, world, count, &jostle_world::crushes);
+const jostle_crush_event* jostle_world_crush_begins(const jostle_world* world, int* count) {
+    return handOut(__func__, world, count, &jostle_world::crushBegins);
+}
+
+const jostle_crush_event* jostle_world_crush_ends(const jostle_world* world, int* count) {
+    return handOut(__func__, world, count, &jostle_world::crushEnds);
 }
 
 uint64_t jostle_world_pairs_left_out(const jostle_world* world) {

@@ -288,12 +288,33 @@ void buildWithCallback(StepContext& step) {
 
 } // namespace
 
+namespace {
+
+/// A body being crushed and what crushes it pass through each other until they part
+/// (docs/events.md): their pair makes no contact, and no sweep of either meets the other.
+void leaveOutCrushes(StepContext& step) {
+    WorldState& w = step.world;
+    std::vector<std::uint64_t>& vetoed = step.scratch.contactsBuild.vetoed;
+    for (const CrushEvent& e : w.events.crushing)
+        if (w.isCurrent(e.body) && w.isCurrent(e.by))
+            vetoed.push_back(pairKey(e.body.index, e.by.index));
+    if (vetoed.empty())
+        return;
+    std::sort(vetoed.begin(), vetoed.end());
+    std::erase_if(w.pairs, [&](const BodyPair& pair) {
+        return std::binary_search(vetoed.begin(), vetoed.end(), pairKey(pair.a, pair.b));
+    });
+}
+
+} // namespace
+
 void buildContacts(StepContext& step) {
     WorldState& w = step.world;
     w.physical.solverIndex.assign(w.slots.size(), StepContext::kNoSolverBody);
     step.bodies.clear();
     step.scratch.contactsBuild.vetoed.clear();
     step.scratch.sensorPairs.clear();
+    leaveOutCrushes(step);
     if (w.preSolve) {
         step.contacts.clear();
         buildWithCallback(step);

@@ -38,10 +38,28 @@ void findCrush(const WorldState& w, const Contact& c, std::uint32_t slotA, std::
         candidates.push_back({body, by, into});
 }
 
+/// Whether the crush under way `e` goes on: both bodies are still there and overlap.
+bool goesOn(const WorldState& w, const CrushEvent& e) {
+    return w.isCurrent(e.body) && w.isCurrent(e.by) &&
+           overlaps(w.slots[e.body.index].box(), w.slots[e.by.index].box());
+}
+
 /// Each candidate with a contact on its far side, against something heavy (static,
-/// kinematic, or a body that holds it), is crushed.
+/// kinematic, or a body that holds it), is crushed. A crush begins once; those under way
+/// end when the two no longer overlap.
 void reportCrushes(StepContext& step) {
     WorldState& w = step.world;
+    StepEvents& events = w.events;
+    std::erase_if(events.crushing, [&](const CrushEvent& e) {
+        if (goesOn(w, e))
+            return false;
+        events.crushEnds.push_back(e);
+        return true;
+    });
+    const auto underWay = [&](BodyId body, BodyId by) {
+        return std::any_of(events.crushing.begin(), events.crushing.end(),
+                           [&](const CrushEvent& e) { return e.body == body && e.by == by; });
+    };
     step.scratch.report.crushCandidates.forEachInOrder([&](const CrushCandidate& candidate) {
         for (const Contact& c : step.contacts) {
             const std::uint32_t slotA = step.bodies[c.ia].slot, slotB = step.bodies[c.ib].slot;
@@ -55,8 +73,11 @@ void reportCrushes(StepContext& step) {
             const bool otherHolds = c.supporter == (other == slotA ? 1 : 2);
             const bool heavy = !w.slots[other].isDynamic() || otherHolds;
             if (heavy && c.totalImpulse() > 0.0f) {
-                w.events.crushes.push_back(
-                    {w.idOf(candidate.body), w.idOf(candidate.by), w.idOf(other)});
+                const CrushEvent crush{w.idOf(candidate.body), w.idOf(candidate.by), w.idOf(other)};
+                if (!underWay(crush.body, crush.by)) {
+                    events.crushBegins.push_back(crush);
+                    events.crushing.push_back(crush);
+                }
                 break;
             }
         }

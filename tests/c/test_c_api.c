@@ -269,19 +269,27 @@ static void test_crush_event(void) {
     block_def.vy = 60;
     jostle_body_id block = jostle_body_create(world, &block_def);
 
-    bool crushed = false;
-    for (int i = 0; i < 120 && !crushed; ++i) {
+    // It begins once, and ends once the block's top has passed the floor's (50 steps).
+    int begins = 0, ends = 0;
+    for (int i = 0; i < 120; ++i) {
         CHECK(jostle_world_step(world, kDt), "step");
         int count = 0;
-        const jostle_crush_event* crushes = jostle_world_crushes(world, &count);
+        const jostle_crush_event* crushes = jostle_world_crush_begins(world, &count);
         for (int k = 0; k < count; ++k) {
             CHECK(same(crushes[k].body, box), "the box is crushed");
             CHECK(same(crushes[k].by, block), "by the block");
             CHECK(same(crushes[k].against, floor), "against the floor");
-            crushed = true;
+            ++begins;
         }
+        const jostle_crush_event* ended = jostle_world_crush_ends(world, &count);
+        for (int k = 0; k < count; ++k) {
+            CHECK(same(ended[k].body, box) && same(ended[k].by, block), "the crush ends");
+            ++ends;
+        }
+        // Never deeper in the floor than the crush depth (a tenth of 5) and the slop.
+        CHECK(jostle_body_get_position(world, box).y <= -5 + 0.55, "never pushed into the floor");
     }
-    CHECK(crushed, "a crush is reported");
+    CHECK(begins == 1 && ends == 1, "a crush begins once and ends once");
     CHECK(jostle_world_destroy(world), "destroy");
     CHECK_NO_ERROR();
 }

@@ -1075,9 +1075,9 @@ private:
         for (const ContactEvent& e : world_.contactEnds())
             if (!goodNormal(e.normal, e.a, e.b))
                 finding("contactEnds: bad normal");
-        for (const CrushEvent& e : world_.crushes())
+        for (const CrushEvent& e : world_.crushBegins())
             if (!world_.isValid(e.body) || !world_.isValid(e.by) || !world_.isValid(e.against))
-                finding("crushes names a body that is gone");
+                finding("crushBegins names a body that is gone");
     }
 
     // --- Queries -----------------------------------------------------------------------

@@ -155,12 +155,12 @@ int worldGetSensorEnds(lua_State* L) {
                             [](const World& w) { return w.sensorEnds(); });
 }
 
-/// {body = , by = , against = }
-int worldGetCrushes(lua_State* L) {
+/// {body = , by = , against = }, of World::crushBegins or crushEnds.
+template <class Get> int pushCrushEvents(lua_State* L, const char* where, Get get) {
     return pushEvents(
-        L, "World:getCrushes", [](const World& w) { return w.crushes().size(); },
+        L, where, [&](const World& w) { return get(w).size(); },
         [&](int env, WorldHandle* handle, std::size_t i) {
-            const CrushEvent e = handle->data->world.crushes()[i];
+            const CrushEvent e = get(handle->data->world)[i];
             pushBody(L, env, handle, e.body);
             lua_setfield(L, -2, "body");
             pushBody(L, env, handle, e.by);
@@ -168,6 +168,15 @@ int worldGetCrushes(lua_State* L) {
             pushBody(L, env, handle, e.against);
             lua_setfield(L, -2, "against");
         });
+}
+
+int worldGetCrushBegins(lua_State* L) {
+    return pushCrushEvents(L, "World:getCrushBegins",
+                           [](const World& w) { return w.crushBegins(); });
+}
+
+int worldGetCrushEnds(lua_State* L) {
+    return pushCrushEvents(L, "World:getCrushEnds", [](const World& w) { return w.crushEnds(); });
 }
 
 /// Pairs the last step left out for want of maxContactsPerBody (0 in a sane scene).
@@ -221,7 +230,8 @@ constexpr luaL_Reg kEventMethods[] = {
     {"getContactEnds", worldGetContactEnds},
     {"getSensorBegins", worldGetSensorBegins},
     {"getSensorEnds", worldGetSensorEnds},
-    {"getCrushes", worldGetCrushes},
+    {"getCrushBegins", worldGetCrushBegins},
+    {"getCrushEnds", worldGetCrushEnds},
     {"getPairsLeftOut", worldGetPairsLeftOut},
     {"getProfile", worldGetProfile},
     {"setPreSolve", worldSetPreSolve},
