@@ -61,6 +61,9 @@ float World::walkSpeed(BodyId id) const {
 void World::setWalkSpeed(BodyId id, float speed) {
     Body& b = lookUpToChange(*state_, id, "setWalkSpeed");
     requireFinite("setWalkSpeed", "speed", speed);
+    if (!b.isCharacter())
+        fail("setWalkSpeed", "the body is not a character (a dynamic body with "
+                             "BodyDef::character = true)");
     // A standing character, told to stand every frame, may sleep.
     const bool changed = b.walkSpeed != speed;
     b.walkSpeed = speed;

@@ -122,7 +122,8 @@ struct WallScene {
         if (wall)
             world.createBody({.type = BodyType::Static, .x = 150, .y = -200, .hw = 50, .hh = 200});
         hero = world.createBody({.x = 94, .y = -8, .hw = 6, .hh = 8, .character = character});
-        world.setWalkSpeed(hero, 150);
+        if (character)
+            world.setWalkSpeed(hero, 150);
         world.setSleeping(false);
     }
 

@@ -491,9 +491,8 @@ bool jostle_body_set_snap_down(jostle_world* world, jostle_body_id body, float d
 /// y-down world); in the air, relative to the world. It holds until changed: set it from
 /// the input every frame (0 stands still). The character's velocity across gravity is
 /// this at every step; along gravity it is the physics' (set the velocity to jump).
-/// Bodies that are not characters keep it and ignore it.
 float jostle_body_get_walk_speed(const jostle_world* world, jostle_body_id body);
-/// Finite.
+/// Finite; misuse for a body that is not a character (a dynamic body with `character`).
 bool jostle_body_set_walk_speed(jostle_world* world, jostle_body_id body, float speed);
 
 /// What a body stands on (jostle::Ground).

@@ -354,8 +354,9 @@ public:
     /// it, so that it keeps pace with a lift; positive to the right of gravity's "down"
     /// (+x in a y-down world); in the air, relative to the world. It holds until changed:
     /// set it from the input every frame (0 stands still). Its velocity across gravity
-    /// is this at every step; along gravity it is the physics' (set it to jump). Bodies
-    /// that are not characters keep it and ignore it.
+    /// is this at every step; along gravity it is the physics' (set it to jump). Throws
+    /// jostle::Error for a body that is not a character (a dynamic body with
+    /// BodyDef::character): forgetting the flag would otherwise walk nothing, silently.
     float walkSpeed(BodyId id) const;
     void setWalkSpeed(BodyId id, float speed);
     /// What the body stood on at the end of the last step: of the bodies that pushed it

@@ -437,9 +437,14 @@ static void test_character_def(void) {
     back = jostle_body_get_def(world, hero);
     CHECK(!back.character && back.wall_friction == 0.75f, "the def follows");
     CHECK(jostle_body_get_walk_speed(world, hero) == 0, "standing by default");
-    CHECK(jostle_body_set_walk_speed(world, hero, -40) &&
+    CHECK(!jostle_body_set_walk_speed(world, hero, -40) &&
+              jostle_body_get_walk_speed(world, hero) == 0,
+          "a body that is not a character does not walk");
+    CHECK_ERROR("jostle_body_set_walk_speed", "the body is not a character");
+    CHECK(jostle_body_set_character(world, hero, true) &&
+              jostle_body_set_walk_speed(world, hero, -40) &&
               jostle_body_get_walk_speed(world, hero) == -40,
-          "walk speed, kept by a body that is not a character");
+          "a character walks");
 
     CHECK(!jostle_body_set_wall_friction(world, hero, 2), "wall friction 2");
     CHECK_ERROR("jostle_body_set_wall_friction", "[0, 1]");

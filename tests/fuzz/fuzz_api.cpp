@@ -851,7 +851,10 @@ private:
         }
         case 1: {
             const float s = in_.number(-400, 400);
-            if (expect(live && inRange(s), "setWalkSpeed", [&] { world_.setWalkSpeed(id, s); }) &&
+            // Only a character walks (world.hpp).
+            const bool walker =
+                live && world_.isCharacter(id) && world_.type(id) == BodyType::Dynamic;
+            if (expect(walker && inRange(s), "setWalkSpeed", [&] { world_.setWalkSpeed(id, s); }) &&
                 !same(world_.walkSpeed(id), s))
                 finding("setWalkSpeed did not take");
             break;

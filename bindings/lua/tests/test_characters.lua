@@ -36,6 +36,8 @@ test("character and wallFriction: in the definition, getDef, and their setters",
   t.equal(hero:isCharacter(), false, "setCharacter(false)")
   hero:setWallFriction(0.5)
   t.equal(hero:getWallFriction(), 0.5, "setWallFriction")
+  t.raises({"Body:setWalkSpeed", "the body is not a character"}, hero.setWalkSpeed, hero, -120)
+  hero:setCharacter(true)
   hero:setWalkSpeed(-120)
   t.equal(hero:getWalkSpeed(), -120, "setWalkSpeed")
   t.raises({"Body:setWallFriction", "friction"}, hero.setWallFriction, hero, 1.5)

@@ -61,9 +61,10 @@ local function newLevel()
   level.oneWay = world:newBody({type = "static", x = 448, y = 196, hw = 48, hh = 4,
     oneWay = {0, -1}})
   level.coin = world:newBody({type = "static", x = 448, y = 150, hw = 6, hh = 6, sensor = true})
-  -- Two crates by the start, 16 x 16 each.
-  level.crates = {world:newBody({x = 56, y = 248, hw = 8, hh = 8}),
-    world:newBody({x = 72, y = 248, hw = 8, hh = 8})}
+  -- Two crates by the start, 16 x 16 each, light enough to push: the player's feet grip
+  -- 0.5 x its 192 x g, the two crates rub 0.5 x 2 x 64 x g on the floor.
+  level.crates = {world:newBody({x = 56, y = 248, hw = 8, hh = 8, density = 0.25}),
+    world:newBody({x = 72, y = 248, hw = 8, hh = 8, density = 0.25})}
   -- The sideways lift, 64 x 12, its top flush with the floor, waiting at the pit's left
   -- end; the vertical lift, 60 x 12, in the shaft, its top from the floor's (256) up to
   -- the shelf's (160).
