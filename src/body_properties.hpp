@@ -177,6 +177,7 @@ inline constexpr Property kSnapDown{"snapDown", Rule::NonNegative, 0.0f};
 inline constexpr Property kRadius{"radius", Rule::NonNegative, 0.0f};
 inline constexpr Property kSlope{"slope", Rule::Corner, Vec2{}};
 inline constexpr Property kSegment{"segment", Rule::Any, false};
+inline constexpr Property kSurfaceVelocity{"surfaceVelocity", Rule::Any, Vec2{}};
 /// A tile map's own: the side of its square tiles (checkTileMapDef has its further rules).
 inline constexpr Property kTile{"tile", Rule::Finite, 0.0f, true};
 
@@ -256,6 +257,7 @@ inline constexpr BodyField kBodyFields[] = {
     {kRadius, &BodyDef::radius, &jostle_body_def::radius},
     {kSlope, &BodyDef::slope, &jostle_body_def::slope},
     {kSegment, &BodyDef::segment, &jostle_body_def::segment},
+    {kSurfaceVelocity, &BodyDef::surfaceVelocity, &jostle_body_def::surface_velocity},
 };
 
 /// TileMapDef's members but its rows, which are a map's alone, in tilemap.hpp's order.

@@ -77,7 +77,9 @@ void walkCharacters(WorldState& world) {
         const GroundRecord ground = groundOf(world, id);
         if (ground.body.isNull() && slidesDown(world, id, right))
             continue;
-        const Vec2 under = ground.body.isNull() ? Vec2{} : world.slots[ground.body.index].velocity;
+        const Vec2 under = ground.body.isNull()
+                               ? Vec2{}
+                               : world.slots[ground.body.index].surfaceMotion(ground.normal);
         const float now = dot(body.velocity, right);
         float across = dot(under, right) + body.walkSpeed;
         float walk = body.walkSpeed;
@@ -101,11 +103,23 @@ float frictionAgainst(const Body& body, Vec2 push, Vec2 down) {
 
 Vec2 walkOver(const Body& a, const Body& b, Vec2 normal, Vec2 down) {
     const Vec2 right = rightOf(down);
+    Vec2 walk;
     if (isCharacterFloor(a, normal, down))
-        return right * a.walkSpeed;
-    if (isCharacterFloor(b, -normal, down))
-        return right * -b.walkSpeed;
-    return {};
+        walk = right * a.walkSpeed;
+    else if (isCharacterFloor(b, -normal, down))
+        walk = right * -b.walkSpeed;
+    // A conveyor's surface moves under what rubs on it, along the surface: a keeps pace
+    // with b's surface.
+    if (a.surfaceVelocity != Vec2{} || b.surfaceVelocity != Vec2{}) {
+        const Vec2 belt = b.surfaceVelocity - a.surfaceVelocity;
+        walk += belt - normal * dot(belt, normal);
+    }
+    return walk;
+}
+
+bool keepsATangentSpeed(const Body& a, const Body& b, bool conveyors) {
+    return a.character || b.character ||
+           (conveyors && (a.surfaceVelocity != Vec2{} || b.surfaceVelocity != Vec2{}));
 }
 
 float walkAlongSlope(const Body& a, const Body& b, Vec2 normal, Vec2 down) {
@@ -114,11 +128,17 @@ float walkAlongSlope(const Body& a, const Body& b, Vec2 normal, Vec2 down) {
     const float across = dot(tangent, right);
     if (across == 0.0f || std::abs(dot(normal, down)) >= 1.0f)
         return std::numeric_limits<float>::quiet_NaN();
+    float walk;
     if (isCharacterFloor(a, normal, down))
-        return a.walkSpeed / across;
-    if (isCharacterFloor(b, -normal, down))
-        return -b.walkSpeed / across;
-    return std::numeric_limits<float>::quiet_NaN();
+        walk = a.walkSpeed / across;
+    else if (isCharacterFloor(b, -normal, down))
+        walk = -b.walkSpeed / across;
+    else
+        return std::numeric_limits<float>::quiet_NaN();
+    // A conveyor's surface, along the slope, under the walk.
+    if (a.surfaceVelocity != Vec2{} || b.surfaceVelocity != Vec2{})
+        walk += dot(b.surfaceVelocity - a.surfaceVelocity, tangent);
+    return walk;
 }
 
 } // namespace jostle

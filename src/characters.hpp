@@ -21,8 +21,14 @@ void walkCharacters(WorldState& world);
 float frictionAgainst(const Body& body, Vec2 push, Vec2 down);
 
 /// The velocity of `a` relative to `b` that a contact's friction keeps, instead of none:
-/// a character on its floor walks at its walk speed over it.
+/// a character on its floor walks at its walk speed over it, and a conveyor's surface
+/// carries what rubs on it (BodyDef::surfaceVelocity; the part along the contact counts).
 Vec2 walkOver(const Body& a, const Body& b, Vec2 normal, Vec2 down);
+
+/// Whether friction between `a` and `b` keeps a relative velocity (walkOver) other than
+/// none: a character is in the pair, or a conveyor (looked for only if `conveyors`, the
+/// world has one).
+bool keepsATangentSpeed(const Body& a, const Body& b, bool conveyors);
 
 /// On a sloped floor (normal from b towards a, neither along gravity nor across it): the
 /// speed of `a` relative to `b` along the contact's tangent (-ny, nx) at which a character

@@ -26,7 +26,6 @@ template <class F> void forEachKeptSetting(F&& f) {
     f(&BodyDef::bounce, &Body::bounce);
     f(&BodyDef::friction, &Body::friction);
     f(&BodyDef::mass, &Body::mass);
-    f(&BodyDef::density, &Body::density);
     f(&BodyDef::gravityScale, &Body::gravityScale);
     f(&BodyDef::damping, &Body::damping);
     f(&BodyDef::bullet, &Body::bullet);
@@ -37,6 +36,7 @@ template <class F> void forEachKeptSetting(F&& f) {
     f(&BodyDef::character, &Body::character);
     f(&BodyDef::wallFriction, &Body::wallFriction);
     f(&BodyDef::snapDown, &Body::snapDown);
+    f(&BodyDef::surfaceVelocity, &Body::surfaceVelocity);
 }
 
 } // namespace
@@ -60,7 +60,7 @@ BodyId World::createBody(const BodyDef& def) {
     w.shapes.resize(w.slots.size());
     w.shapes[slot] = shape;
     w.asGiven.resize(w.slots.size());
-    w.asGiven[slot] = {def.userData, def.floorAngle};
+    w.asGiven[slot] = {def.userData, def.floorAngle, def.density};
     // A body created by a callback may be touched later in the same step.
     w.events.touching.resize(w.slots.size(), 0);
     w.events.touching[slot] = 0;
@@ -80,7 +80,9 @@ BodyId World::createBody(const BodyDef& def) {
         ++w.shapedBodies;
     if (body.maySnap())
         ++w.snappingBodies;
-    body.updateMass();
+    body.updateMass(def.density);
+    if (body.surfaceVelocity != Vec2{})
+        ++w.conveyors;
 
     if (slot < w.events.touching.size())
         w.events.touching[slot] = 0; // the slot's last body's flags
@@ -102,6 +104,8 @@ void World::destroyBody(BodyId id) {
         --w.shapedBodies;
     if (body.maySnap())
         --w.snappingBodies;
+    if (body.surfaceVelocity != Vec2{})
+        --w.conveyors;
     if (moveGenerationOn(body))
         (w.stepping ? w.pendingFree : w.freeSlots).push_back(id.index);
     w.order.remove(id.index);
@@ -132,6 +136,7 @@ BodyDef World::bodyDef(BodyId id) const {
     def.segment = shape.segment;
     def.userData = state_->asGiven[id.index].userData;
     def.floorAngle = state_->asGiven[id.index].floorAngle;
+    def.density = state_->asGiven[id.index].density;
     return def;
 }
 
@@ -145,13 +150,16 @@ void World::setType(BodyId id, BodyType type) {
         fail("setType", std::string("type ") + problem);
     if (type == BodyType::Dynamic && (b.shape == ShapeKind::Ramp || b.shape == ShapeKind::Segment))
         fail("setType", "a ramp or segment must be static or kinematic");
+    if (type == BodyType::Dynamic && b.surfaceVelocity != Vec2{})
+        fail("setType", "a conveyor must be static or kinematic (set its surfaceVelocity to "
+                        "{0, 0} first)");
     disturb(*state_, id.index); // what rested on it, where it was
     state_->restingDirty = true;
     b.type = type;
     if (type == BodyType::Static)
         b.velocity = {};
     b.lastStepVelocity = b.velocity;
-    b.updateMass();
+    b.updateMass(state_->asGiven[id.index].density);
     disturb(*state_, id.index);
 }
 
@@ -192,7 +200,7 @@ void World::setHalfExtents(BodyId id, Vec2 halfExtents) {
         fail("setHalfExtents", "halfExtents must be >= the body's radius");
     disturb(*state_, id.index); // what rested on it, as it was
     b.half = halfExtents;
-    b.updateMass();
+    b.updateMass(state_->asGiven[id.index].density);
     disturb(*state_, id.index);
 }
 
@@ -215,7 +223,8 @@ void World::setFriction(BodyId id, float friction) {
 
 float World::mass(BodyId id) const {
     const Body& b = lookUp(*state_, id, "mass");
-    return b.isDynamic() ? b.dynamicMass() : std::numeric_limits<float>::infinity();
+    return b.isDynamic() ? b.dynamicMass(state_->asGiven[id.index].density)
+                         : std::numeric_limits<float>::infinity();
 }
 
 void World::setMass(BodyId id, float mass) {
@@ -223,7 +232,7 @@ void World::setMass(BodyId id, float mass) {
     // An explicit mass: a size (BodyDef::mass's 0, "from density", is setDensity's to ask).
     require("setMass", "mass", properties::Rule::Size, mass);
     b.mass = mass;
-    b.updateMass();
+    b.updateMass(state_->asGiven[id.index].density);
     disturb(*state_, id.index);
 }
 
@@ -231,8 +240,8 @@ void World::setDensity(BodyId id, float density) {
     Body& b = lookUpToChange(*state_, id, "setDensity");
     require("setDensity", "density", properties::kDensity.rule, density);
     b.mass = 0.0f;
-    b.density = density;
-    b.updateMass();
+    state_->asGiven[id.index].density = density;
+    b.updateMass(density);
     disturb(*state_, id.index);
 }
 
@@ -268,6 +277,21 @@ bool World::isAwake(BodyId id) const {
 void World::wake(BodyId id) {
     lookUpToChange(*state_, id, "wake");
     disturb(*state_, id.index); // its island, and the time it has been still, start over
+}
+
+Vec2 World::surfaceVelocity(BodyId id) const {
+    return lookUp(*state_, id, "surfaceVelocity").surfaceVelocity;
+}
+
+void World::setSurfaceVelocity(BodyId id, Vec2 velocity) {
+    Body& body = lookUpToChange(*state_, id, "setSurfaceVelocity");
+    requireFinite("setSurfaceVelocity", "velocity", velocity);
+    if (velocity != Vec2{} && body.isDynamic())
+        fail("setSurfaceVelocity", "a conveyor must be static or kinematic");
+    state_->conveyors +=
+        std::uint32_t(velocity != Vec2{}) - std::uint32_t(body.surfaceVelocity != Vec2{});
+    body.surfaceVelocity = velocity;
+    disturb(*state_, id.index);
 }
 
 Vec2 World::oneWay(BodyId id) const {

@@ -76,7 +76,7 @@ std::optional<Ground> World::ground(BodyId id) const {
     const GroundRecord g = groundOf(*state_, id);
     if (g.body.isNull())
         return std::nullopt;
-    return Ground{g.body, g.normal, state_->slots[g.body.index].velocity};
+    return Ground{g.body, g.normal, state_->slots[g.body.index].surfaceMotion(g.normal)};
 }
 
 } // namespace jostle

@@ -53,8 +53,12 @@ struct alignas(64) Body {
     bool character = false;
     /// A box, or a shape whose numbers are in WorldState::shapes (shapes.hpp).
     ShapeKind shape = ShapeKind::Box;
+    bool bullet = false;
 
     // --- Read once a step, or less ---
+    /// BodyDef::surfaceVelocity: a conveyor's, for friction (looked at only while the world
+    /// has a conveyor: WorldState::conveyors).
+    Vec2 surfaceVelocity;
     /// BodyDef::floorAngle's cosine: a surface pushing it at least this much against
     /// gravity is its floor (events.hpp's surfaceOf).
     float floorCos = 0.5f;
@@ -68,8 +72,7 @@ struct alignas(64) Body {
     /// Kinematic bodies: the velocity they moved with in the last step, to hand what
     /// changed since to their riders.
     Vec2 lastStepVelocity;
-    float mass = 0.0f; ///< explicit mass, or 0 for density × area
-    float density = 1.0f;
+    float mass = 0.0f; ///< explicit mass, or 0 for density × area (KeptAsGiven::density)
     float gravityScale = 1.0f;
     float damping = 0.0f;
     /// Seconds this body has been slow enough to sleep.
@@ -82,18 +85,26 @@ struct alignas(64) Body {
     float walkSpeed = 0.0f;
     /// Seconds left during which this body falls through one-way platforms.
     float dropThroughTime = 0.0f;
-    bool bullet = false;
 
     bool isDynamic() const { return type == BodyType::Dynamic; }
     /// A character that walks and rubs only on floors: the flag counts on dynamic bodies.
     bool isCharacter() const { return character && isDynamic(); }
-    /// The mass it has as a dynamic body: explicit, or density × area.
-    float dynamicMass() const { return mass > 0.0f ? mass : density * 4.0f * half.x * half.y; }
-    /// Sets invMass from the type, mass, density and size.
-    void updateMass() { invMass = isDynamic() ? 1.0f / dynamicMass() : 0.0f; }
+    /// The mass it has as a dynamic body: explicit, or `density` × area.
+    float dynamicMass(float density) const {
+        return mass > 0.0f ? mass : density * 4.0f * half.x * half.y;
+    }
+    /// Sets invMass from the type, mass, `density` (its KeptAsGiven's) and size.
+    void updateMass(float density) { invMass = isDynamic() ? 1.0f / dynamicMass(density) : 0.0f; }
     /// A sharp box: the pair rules of geometry.hpp, not those of shapes.hpp.
     bool isBox() const { return shape == ShapeKind::Box; }
     bool isOneWay() const { return oneWay.x != 0.0f || oneWay.y != 0.0f; }
+    /// The velocity of its surface where it pushes along `normal`: what a body resting there
+    /// moves with, a conveyor's surface velocity along the surface included.
+    Vec2 surfaceMotion(Vec2 normal) const {
+        if (surfaceVelocity.x == 0.0f && surfaceVelocity.y == 0.0f)
+            return velocity;
+        return velocity + surfaceVelocity - normal * dot(surfaceVelocity, normal);
+    }
     /// The faces that stop what meets it (shapes.hpp's FaceBit): a one-way platform's
     /// blocking face, or all four.
     std::uint8_t blockingFaces() const {
@@ -119,6 +130,7 @@ static_assert(sizeof(Body) == 128, "a Body is two cache lines");
 struct KeptAsGiven {
     void* userData = nullptr;
     float floorAngle = 60.0f; ///< degrees; Body::floorCos is what the steps read
+    float density = 1.0f;     ///< Body::invMass is what the steps read
 };
 
 /// The cosine of an angle in degrees: the floorCos of a floorAngle (60 gives 0.5 exactly).
@@ -181,6 +193,9 @@ struct WorldState {
     /// How many live bodies may snap to the ground (Body::maySnap): the step looks for
     /// ground under them.
     std::uint32_t snappingBodies = 0;
+    /// How many live bodies are conveyors (a surfaceVelocity): with none, contacts do not
+    /// look at surface velocities.
+    std::uint32_t conveyors = 0;
 
     /// The broadphase of bodies at rest: static and sleeping bodies, rebuilt only when
     /// one of them changes (restingDirty), so a still level costs nothing per step.

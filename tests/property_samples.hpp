@@ -50,13 +50,14 @@ inline properties::Value sampleOf(const properties::Property& property) {
 using Setting = std::pair<const properties::Property*, properties::Value>;
 
 /// What a body must also hold, besides the defaults and a size of 1 × 1 half extents, for
-/// checkBodyDef to accept the sample of `property`: a ramp (slope) is static or kinematic,
-/// and a segment is a ramp's face, so it needs a slope too. Each value is a sample itself
+/// checkBodyDef to accept the sample of `property`: a ramp (slope) and a conveyor
+/// (surfaceVelocity) are static or kinematic, and a segment is a ramp's face, so it needs a
+/// slope too. Each value is a sample itself
 /// (kinematic is the type's), so that a test writes them as it writes samples. The radius
 /// sample (0.75) fits in half extents of 1 with nothing else.
 inline std::vector<Setting> sampleNeeds(const properties::Property& property) {
     using namespace properties;
-    if (&property == &kSlope)
+    if (&property == &kSlope || &property == &kSurfaceVelocity)
         return {{&kType, sampleOf(kType)}};
     if (&property == &kSegment)
         return {{&kType, sampleOf(kType)}, {&kSlope, sampleOf(kSlope)}};

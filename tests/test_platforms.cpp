@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace jostle {
@@ -91,6 +92,91 @@ TEST(Platforms, APlatformPushesWhatIsInItsWay) {
     // The platform's right face is at 50 + 100 = 150: the box is ahead of it.
     EXPECT_GE(ride.world.position(box).x - 5, 150.0f - 0.05f);
 }
+
+// --- Conveyor belts (issue 29) --------------------------------------------------------------
+//
+// A static belt whose surface moves at 100 to the right (BodyDef::surfaceVelocity). A crate
+// dropped on it at rest is carried by friction: with μ = 0.5 (the pair's) and g = 800 it
+// speeds up at μ g = 400 until it moves with the belt, after 100 / 400 = 0.25 s.
+
+class OnABelt : public ::testing::TestWithParam<Solver> {};
+
+TEST(Conveyors, ACrateComesUpToTheBeltsSpeedAtMuG) {
+    World world(WorldDef{.gravity = {0, 800}, .sleeping = false});
+    world.createBody({.type = BodyType::Static,
+                      .x = 0,
+                      .y = 50,
+                      .hw = 5000,
+                      .hh = 50,
+                      .friction = 0.5f,
+                      .surfaceVelocity = {100, 0}});
+    const BodyId crate = world.createBody({.x = 0, .y = -8, .hw = 8, .hh = 8, .friction = 0.5f});
+    for (int i = 1; i <= 30; ++i) {
+        world.step(kDt);
+        const float expected = std::min(100.0f, 400.0f * kDt * float(i));
+        ASSERT_NEAR(world.velocity(crate).x, expected, 0.5f) << "step " << i;
+        ASSERT_NEAR(world.velocity(crate).y, 0.0f, 1e-3f);
+    }
+    // Resting on the belt, moving with its surface; the belt itself has not moved.
+    EXPECT_TRUE(world.ground(crate));
+    EXPECT_EQ(world.ground(crate)->velocity, (Vec2{100, 0}));
+}
+
+TEST(Conveyors, ACharacterWalksRelativeToTheBelt) {
+    World world(WorldDef{.gravity = {0, 800}, .sleeping = false});
+    const BodyId belt = world.createBody({.type = BodyType::Static,
+                                          .x = 0,
+                                          .y = 50,
+                                          .hw = 5000,
+                                          .hh = 50,
+                                          .surfaceVelocity = {100, 0}});
+    const BodyId hero = world.createBody({.x = 0, .y = -8, .hw = 6, .hh = 8, .character = true});
+    for (int i = 0; i < 10; ++i)
+        world.step(kDt);
+    for (float walk : {0.0f, 50.0f, -100.0f, -250.0f}) {
+        world.setWalkSpeed(hero, walk);
+        for (int i = 0; i < 5; ++i) {
+            world.step(kDt);
+            EXPECT_NEAR(world.velocity(hero).x, 100.0f + walk, 1e-3f) << "walking at " << walk;
+        }
+    }
+    // Turned off, the belt carries nothing: standing, the character stands.
+    world.setSurfaceVelocity(belt, {});
+    world.setWalkSpeed(hero, 0);
+    world.step(kDt);
+    EXPECT_EQ(world.velocity(hero).x, 0.0f);
+}
+
+TEST(Conveyors, OnlyStaticAndKinematicBodiesAreConveyors) {
+    EXPECT_EQ(checkBodyDef({.hw = 1, .hh = 1, .surfaceVelocity = {1, 0}})->field,
+              "surfaceVelocity");
+    EXPECT_FALSE(
+        checkBodyDef({.type = BodyType::Kinematic, .hw = 1, .hh = 1, .surfaceVelocity = {1, 0}}));
+    World world;
+    const BodyId crate = world.createBody({.hw = 1, .hh = 1});
+    EXPECT_THROW(world.setSurfaceVelocity(crate, {1, 0}), Error);
+    EXPECT_THROW(world.setSurfaceVelocity(crate, {NAN, 0}), Error);
+    const BodyId belt =
+        world.createBody({.type = BodyType::Static, .hw = 1, .hh = 1, .surfaceVelocity = {1, 0}});
+    EXPECT_THROW(world.setType(belt, BodyType::Dynamic), Error);
+    EXPECT_EQ(world.bodyDef(belt).surfaceVelocity, (Vec2{1, 0}));
+}
+
+TEST_P(OnABelt, ACrateEndsMovingWithTheBeltInEitherModel) {
+    World world(WorldDef{.gravity = {0, 800}, .solver = GetParam(), .sleeping = false});
+    world.createBody({.type = BodyType::Static,
+                      .x = 0,
+                      .y = 50,
+                      .hw = 5000,
+                      .hh = 50,
+                      .surfaceVelocity = {-60, 0}});
+    const BodyId crate = world.createBody({.x = 0, .y = -8, .hw = 8, .hh = 8});
+    for (int i = 0; i < 120; ++i)
+        world.step(kDt);
+    EXPECT_NEAR(world.velocity(crate).x, -60.0f, 0.01f);
+}
+
+INSTANTIATE_TEST_SUITE_P(Models, OnABelt, ::testing::Values(Solver::Classic, Solver::Physical));
 
 } // namespace
 } // namespace jostle

@@ -139,6 +139,13 @@ struct BodyDef {
     /// blocks what comes from the side it looks towards and lets through what comes from
     /// behind, as a one-way platform does (dropThrough works on it too).
     bool segment = false;
+    /// A conveyor belt: the velocity its surface moves at, as far as friction is concerned,
+    /// while the body itself stays where it is (or moves by its own velocity). What rests
+    /// on it is carried by friction, along each face by the part of this along the face: a
+    /// crate comes up to the belt's speed at the rate friction gives (μ g), a character
+    /// walks relative to the belt. {0, 0} (the default): none. Static and kinematic
+    /// bodies only. docs/moving-platforms.md.
+    Vec2 surfaceVelocity{};
     /// Yours: jostle stores it and gives it back, nothing more.
     void* userData = nullptr;
 };
@@ -152,6 +159,7 @@ struct FieldError {
 
 /// The first problem with `def`, or nothing if World::createBody will accept it.
 /// The rules: every number finite; hw, hh, density > 0; mass, damping, radius >= 0;
+/// surfaceVelocity {0, 0} unless the body is static or kinematic;
 /// bounce, friction and wallFriction in [0, 1]; floorAngle in [0, 90); snapDown >= 0; oneWay {0, 0}
 /// or a unit vector along x or y; radius at most hw and hh; slope {0, 0} or each component -1 or
 /// +1, and then the body static or kinematic, with no radius and no oneWay; segment only with a

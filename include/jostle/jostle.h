@@ -350,6 +350,9 @@ typedef struct jostle_body_def {
     /// component -1 or 1; {0, 0} (the default): not cut. Static or kinematic only.
     jostle_vec2 slope;
     bool segment; ///< with a slope: the sloped face alone, a one-sided line
+    /// A conveyor's surface velocity, for friction (jostle::BodyDef::surfaceVelocity);
+    /// {0, 0} (the default): none. Static or kinematic only.
+    jostle_vec2 surface_velocity;
     /// Set by jostle_default_body_def() (and jostle_body_get_def); leave it alone.
     uint32_t internal_cookie;
 } jostle_body_def;
@@ -481,6 +484,10 @@ float jostle_body_get_floor_angle(const jostle_world* world, jostle_body_id body
 /// Degrees in [0, 90).
 bool jostle_body_set_floor_angle(jostle_world* world, jostle_body_id body, float degrees);
 
+/// See jostle_body_def.surface_velocity. Misuse for a dynamic body, but {0, 0}.
+jostle_vec2 jostle_body_get_surface_velocity(const jostle_world* world, jostle_body_id body);
+bool jostle_body_set_surface_velocity(jostle_world* world, jostle_body_id body,
+                                      jostle_vec2 velocity);
 /// See jostle_body_def.snap_down.
 float jostle_body_get_snap_down(const jostle_world* world, jostle_body_id body);
 /// >= 0; 0 is off.

@@ -167,7 +167,9 @@ struct ContactInfo {
 struct Ground {
     BodyId body;   ///< the body under it
     Vec2 normal;   ///< the push of the ground: against gravity
-    Vec2 velocity; ///< the ground's velocity now: what a rider moves with
+    /// The ground's velocity now: what a rider moves with (a conveyor's surface velocity
+    /// along its surface included).
+    Vec2 velocity;
 };
 
 /// A body that started or stopped overlapping a sensor.
@@ -318,6 +320,10 @@ public:
     void* userData(BodyId id) const;
     void setUserData(BodyId id, void* data);
 
+    /// See BodyDef::surfaceVelocity (finite; {0, 0} for a dynamic body, else
+    /// jostle::Error). Wakes what rests on the body.
+    Vec2 surfaceVelocity(BodyId id) const;
+    void setSurfaceVelocity(BodyId id, Vec2 velocity);
     /// See BodyDef::oneWay. Throws jostle::Error for a normal that is not {0, 0} or a
     /// unit vector along x or y, and for a rounded body, ramp or segment.
     Vec2 oneWay(BodyId id) const;

@@ -235,6 +235,17 @@ bool jostle_body_set_floor_angle(jostle_world* world, jostle_body_id body, float
     return set(__func__, world, [&](World& w) { w.setFloorAngle(toCpp(body), degrees); });
 }
 
+jostle_vec2 jostle_body_get_surface_velocity(const jostle_world* world, jostle_body_id body) {
+    return get<jostle_vec2>(__func__, world,
+                            [&](const World& w) { return toC(w.surfaceVelocity(toCpp(body))); });
+}
+
+bool jostle_body_set_surface_velocity(jostle_world* world, jostle_body_id body,
+                                      jostle_vec2 velocity) {
+    return set(__func__, world,
+               [&](World& w) { w.setSurfaceVelocity(toCpp(body), toCpp(velocity)); });
+}
+
 float jostle_body_get_snap_down(const jostle_world* world, jostle_body_id body) {
     return get<float>(__func__, world, [&](const World& w) { return w.snapDown(toCpp(body)); });
 }

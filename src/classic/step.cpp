@@ -380,7 +380,8 @@ private:
         // over its floor is taken out
         const float tx = vx - px;
         const float ty = vy - py;
-        const Vec2 walk = walkOver(ba, bb, normal, down);
+        const Vec2 walk =
+            keepsATangentSpeed(ba, bb, w_.conveyors > 0) ? walkOver(ba, bb, normal, down) : Vec2{};
         const float wx = tx - walk.x;
         const float wy = ty - walk.y;
         // restitution

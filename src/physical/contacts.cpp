@@ -60,7 +60,7 @@ Contact shapedContactOf(const StepContext& step, const Body& a, const Body& b,
     c.slop = step.options.slop * facing.size;
     const Vec2 down = step.world.events.down;
     c.friction = frictionOfPair(step, a, b, n);
-    if (a.character || b.character) {
+    if (keepsATangentSpeed(a, b, step.world.conveyors > 0)) {
         const float walk = walkAlongSlope(a, b, n, down);
         if (std::isnan(walk)) {
             c.tangentTarget = dot(walkOver(a, b, n, down), c.tangent());
@@ -108,8 +108,9 @@ Contact contactOf(const StepContext& step, const Body& a, const Body& b, Vec2 no
     c.extent = alongX ? a.half.x + b.half.x : a.half.y + b.half.y;
     c.slop =
         step.options.slop * (alongX ? std::min(a.half.x, b.half.x) : std::min(a.half.y, b.half.y));
-    if (a.character || b.character) {
-        // Characters rub only on floors, and walk over them (characters.hpp).
+    if (keepsATangentSpeed(a, b, step.world.conveyors > 0)) {
+        // Characters rub only on floors, and walk over them; conveyors carry what rubs on
+        // them (characters.hpp).
         const Vec2 down = step.world.events.down;
         c.friction = frictionOfPair(step, a, b, normal);
         Vec2 tangent;

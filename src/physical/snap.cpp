@@ -122,7 +122,7 @@ void snapToGround(StepContext& step) {
         }
         body.separation += body.position - before;
         const Body& obstacle = w.slots[floor->slot];
-        followFloor(body, n, obstacle.velocity, w.events.down);
+        followFloor(body, n, obstacle.surfaceMotion(n), w.events.down);
         const float size = std::min(reachOf(body.half, w.shapes[slot], n),
                                     reachOf(obstacle.half, w.shapes[floor->slot], n));
         found.sweepStart = found.found.size();

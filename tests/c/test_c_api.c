@@ -671,6 +671,34 @@ static void test_walking(void) {
     CHECK_NO_ERROR();
 }
 
+/// A conveyor (surface_velocity {80, 0}) carries a character that stands on it at 80, one
+/// that walks at 40 at 120; a dynamic body is no conveyor.
+static void test_conveyor(void) {
+    jostle_world* world = make_world(kG);
+    jostle_body_def def = jostle_default_body_def();
+    CHECK(def.surface_velocity.x == 0 && def.surface_velocity.y == 0, "no belt by default");
+    def.type = JOSTLE_BODY_STATIC;
+    def.y = 50;
+    def.hw = 5000;
+    def.hh = 50;
+    def.surface_velocity = (jostle_vec2){80, 0};
+    jostle_body_id belt = jostle_body_create(world, &def);
+    jostle_body_id hero = add_character(world, 0, -8, 0);
+    run(world, 10);
+    CHECK_NEAR(jostle_body_get_velocity(world, hero).x, 80, 1e-3);
+    CHECK(jostle_body_set_walk_speed(world, hero, 40), "walk");
+    run(world, 3);
+    CHECK_NEAR(jostle_body_get_velocity(world, hero).x, 120, 1e-3);
+    CHECK(jostle_body_get_surface_velocity(world, belt).x == 80, "read back");
+    CHECK(!jostle_body_set_surface_velocity(world, hero, (jostle_vec2){1, 0}), "not a conveyor");
+    CHECK_ERROR("jostle_body_set_surface_velocity", "static or kinematic");
+    def.type = JOSTLE_BODY_DYNAMIC;
+    CHECK(jostle_body_id_is_null(jostle_body_create(world, &def)), "a dynamic conveyor");
+    CHECK_ERROR("jostle_body_create", "BodyDef.surfaceVelocity");
+    CHECK(jostle_world_destroy(world), "destroy");
+    CHECK_NO_ERROR();
+}
+
 /// A character standing on a lift 80 x 12 (top at y = 0) stands on it, and has the
 /// lift's velocity for its ground's; after a jump it stands on nothing.
 static void test_ground_of_a_lift(void) {
@@ -2103,8 +2131,8 @@ static void test_workers(void) {
 }
 
 /// A job system that breaks the contract: it runs every range twice.
-static void* run_twice(jostle_task_fn task, uint32_t items, uint32_t min_range,
-                       void* task_context, void* user_context) {
+static void* run_twice(jostle_task_fn task, uint32_t items, uint32_t min_range, void* task_context,
+                       void* user_context) {
     (void)min_range;
     (void)user_context;
     task(0, items, 0, task_context);
@@ -2172,6 +2200,7 @@ int main(void) {
     test_shapes();
     test_walking();
     test_ground_of_a_lift();
+    test_conveyor();
     test_wall_friction();
     test_footing();
     test_rounded_casts();

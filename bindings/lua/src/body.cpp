@@ -510,6 +510,8 @@ constexpr Setting<Vec2> kVectorSettings[] = {
     {"getPosition", "setPosition", {"x", "y"}, &World::position, &World::setPosition},
     {"getVelocity", "setVelocity", {"vx", "vy"}, &World::velocity, &World::setVelocity},
     {"getOneWay", "setOneWay", {"nx", "ny"}, &World::oneWay, &World::setOneWay},
+    {"getSurfaceVelocity", "setSurfaceVelocity", {"vx", "vy"}, &World::surfaceVelocity,
+     &World::setSurfaceVelocity},
 };
 constexpr Setting<float> kNumberSettings[] = {
     {"getBounce", "setBounce", {"bounce"}, &World::bounce, &World::setBounce},

@@ -251,4 +251,21 @@ test("a character jumping while pressed into a wall rises as in open air", funct
   t.near(walled, open, 0.01 * open, "against the wall")
 end)
 
+test("a conveyor carries what stands on it; a character walks relative to it", function()
+  local world = jostle.newWorld({gravity = {0, 800}})
+  local belt = world:newBody({type = "static", x = 0, y = 50, hw = 5000, hh = 50,
+                              surfaceVelocity = {-70, 0}})
+  local hero = world:newBody({x = 0, y = -8, hw = 6, hh = 8, character = true})
+  for _ = 1, 10 do world:step(1 / 60) end
+  t.near(select(1, hero:getVelocity()), -70, 1e-3, "carried at the belt's speed")
+  hero:setWalkSpeed(70)
+  for _ = 1, 3 do world:step(1 / 60) end
+  t.near(select(1, hero:getVelocity()), 0, 1e-3, "walking against it, in place")
+  t.equal(select(1, belt:getSurfaceVelocity()), -70, "getSurfaceVelocity")
+  belt:setSurfaceVelocity(0, 0)
+  t.raises({"Body:setSurfaceVelocity", "static or kinematic"}, hero.setSurfaceVelocity, hero, 1, 0)
+  t.raises({"World:newBody", "surfaceVelocity"}, world.newBody, world,
+    {x = 0, y = 0, hw = 1, hh = 1, surfaceVelocity = {1, 0}})
+end)
+
 return t.run(tests)

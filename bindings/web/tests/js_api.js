@@ -228,6 +228,18 @@ function churn(jostle) {
   world.destroy();
 }
 
+/// A conveyor made from JavaScript (issue 29): a static belt whose surface moves at -90
+/// carries a character standing on it at -90 after a few steps, as in C++.
+function conveyor(jostle) {
+  const world = jostle.createWorld({gravity: [0, 800]});
+  world.createBody({type: "static", x: 0, y: 300, hw: 400, hh: 10, surfaceVelocity: [-90, 0]});
+  const hero = world.createBody({x: 0, y: 282, hw: 6, hh: 8, character: true});
+  for (let i = 0; i < 20; i++) world.step(1 / 60);
+  const {vx} = world.body(hero);
+  check(Math.abs(vx + 90) < 1e-3, `a character on a belt moves with its surface: vx ${vx}`);
+  world.destroy();
+}
+
 async function main() {
   const [pageDir] = process.argv.slice(2);
   const Jostle = loadPageScripts(path.resolve(pageDir));
@@ -242,7 +254,7 @@ async function main() {
   }
   check(loadError === "TypeError: Jostle.load: options must be an object, got null",
         `Jostle.load(null) is refused: ${loadError}`);
-  for (const part of [argumentChecks, numbersAfterDestroy, churn]) {
+  for (const part of [argumentChecks, numbersAfterDestroy, churn, conveyor]) {
     try {
       part(jostle);
     } catch (error) {
