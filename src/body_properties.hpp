@@ -174,6 +174,8 @@ inline constexpr Property kCharacter{"character", Rule::Any, false};
 inline constexpr Property kWallFriction{"wallFriction", Rule::Unit, 0.0f};
 inline constexpr Property kFloorAngle{"floorAngle", Rule::FloorAngle, 60.0f};
 inline constexpr Property kSnapDown{"snapDown", Rule::NonNegative, 0.0f};
+inline constexpr Property kCornerCorrection{"cornerCorrection", Rule::NonNegative, 0.0f};
+inline constexpr Property kStepUp{"stepUp", Rule::NonNegative, 0.0f};
 inline constexpr Property kRadius{"radius", Rule::NonNegative, 0.0f};
 inline constexpr Property kSlope{"slope", Rule::Corner, Vec2{}};
 inline constexpr Property kSegment{"segment", Rule::Any, false};
@@ -254,6 +256,8 @@ inline constexpr BodyField kBodyFields[] = {
     {kWallFriction, &BodyDef::wallFriction, &jostle_body_def::wall_friction},
     {kFloorAngle, &BodyDef::floorAngle, &jostle_body_def::floor_angle},
     {kSnapDown, &BodyDef::snapDown, &jostle_body_def::snap_down},
+    {kCornerCorrection, &BodyDef::cornerCorrection, &jostle_body_def::corner_correction},
+    {kStepUp, &BodyDef::stepUp, &jostle_body_def::step_up},
     {kRadius, &BodyDef::radius, &jostle_body_def::radius},
     {kSlope, &BodyDef::slope, &jostle_body_def::slope},
     {kSegment, &BodyDef::segment, &jostle_body_def::segment},

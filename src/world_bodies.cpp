@@ -60,7 +60,9 @@ BodyId World::createBody(const BodyDef& def) {
     w.shapes.resize(w.slots.size());
     w.shapes[slot] = shape;
     w.asGiven.resize(w.slots.size());
-    w.asGiven[slot] = {def.userData, def.floorAngle, def.density};
+    w.asGiven[slot] = {def.userData, def.floorAngle, def.density, def.cornerCorrection, def.stepUp};
+    if (w.asGiven[slot].slipsRoundCorners())
+        ++w.cornerBodies;
     // A body created by a callback may be touched later in the same step.
     w.events.touching.resize(w.slots.size(), 0);
     w.events.touching[slot] = 0;
@@ -106,6 +108,8 @@ void World::destroyBody(BodyId id) {
         --w.snappingBodies;
     if (body.surfaceVelocity != Vec2{})
         --w.conveyors;
+    if (w.asGiven[id.index].slipsRoundCorners())
+        --w.cornerBodies;
     if (moveGenerationOn(body))
         (w.stepping ? w.pendingFree : w.freeSlots).push_back(id.index);
     w.order.remove(id.index);
@@ -137,6 +141,8 @@ BodyDef World::bodyDef(BodyId id) const {
     def.userData = state_->asGiven[id.index].userData;
     def.floorAngle = state_->asGiven[id.index].floorAngle;
     def.density = state_->asGiven[id.index].density;
+    def.cornerCorrection = state_->asGiven[id.index].cornerCorrection;
+    def.stepUp = state_->asGiven[id.index].stepUp;
     return def;
 }
 

@@ -54,6 +54,44 @@ void World::setSnapDown(BodyId id, float distance) {
     state_->snappingBodies += std::uint32_t(state_->slots[id.index].maySnap()) - std::uint32_t(was);
 }
 
+namespace {
+
+/// Sets a setting the corner stage reads (KeptAsGiven), keeping count of the bodies that
+/// slip round corners.
+void setCornerSetting(WorldState& w, BodyId id, const char* function, const char* what,
+                      const properties::Property& property, float KeptAsGiven::*member,
+                      float value) {
+    lookUpToChange(w, id, function);
+    require(function, what, property.rule, value);
+    KeptAsGiven& kept = w.asGiven[id.index];
+    const bool was = kept.slipsRoundCorners();
+    kept.*member = value;
+    w.cornerBodies += std::uint32_t(kept.slipsRoundCorners()) - std::uint32_t(was);
+    disturb(w, id.index);
+}
+
+} // namespace
+
+float World::cornerCorrection(BodyId id) const {
+    lookUp(*state_, id, "cornerCorrection");
+    return state_->asGiven[id.index].cornerCorrection;
+}
+
+void World::setCornerCorrection(BodyId id, float distance) {
+    setCornerSetting(*state_, id, "setCornerCorrection", "distance", properties::kCornerCorrection,
+                     &KeptAsGiven::cornerCorrection, distance);
+}
+
+float World::stepUp(BodyId id) const {
+    lookUp(*state_, id, "stepUp");
+    return state_->asGiven[id.index].stepUp;
+}
+
+void World::setStepUp(BodyId id, float height) {
+    setCornerSetting(*state_, id, "setStepUp", "height", properties::kStepUp, &KeptAsGiven::stepUp,
+                     height);
+}
+
 float World::walkSpeed(BodyId id) const {
     return lookUp(*state_, id, "walkSpeed").walkSpeed;
 }

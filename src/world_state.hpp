@@ -131,6 +131,10 @@ struct KeptAsGiven {
     void* userData = nullptr;
     float floorAngle = 60.0f; ///< degrees; Body::floorCos is what the steps read
     float density = 1.0f;     ///< Body::invMass is what the steps read
+    /// Read by the corner stage alone (physical/corners.hpp), for the bodies that have one.
+    float cornerCorrection = 0.0f;
+    float stepUp = 0.0f;
+    bool slipsRoundCorners() const { return cornerCorrection > 0.0f || stepUp > 0.0f; }
 };
 
 /// The cosine of an angle in degrees: the floorCos of a floorAngle (60 gives 0.5 exactly).
@@ -196,6 +200,8 @@ struct WorldState {
     /// How many live bodies are conveyors (a surfaceVelocity): with none, contacts do not
     /// look at surface velocities.
     std::uint32_t conveyors = 0;
+    /// How many live bodies slip round corners (KeptAsGiven::slipsRoundCorners).
+    std::uint32_t cornerBodies = 0;
 
     /// The broadphase of bodies at rest: static and sleeping bodies, rebuilt only when
     /// one of them changes (restingDirty), so a still level costs nothing per step.

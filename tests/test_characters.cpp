@@ -11,6 +11,7 @@
 #include <span>
 #include <string>
 #include <tuple>
+#include <utility>
 #include <vector>
 
 namespace jostle {
@@ -508,6 +509,142 @@ TEST(Pushing, InTheAirACharacterPushesWithItsMomentumOnly) {
         EXPECT_LE(world.velocity(crate).x, 75.0f + 0.5f) << "step " << i;
     }
     EXPECT_NEAR(world.velocity(crate).x, 75.0f, 0.5f);
+}
+
+// --- Corner correction (issue 29) -------------------------------------------------------------
+//
+// A platform whose underside is y = 0 and whose left face is x = 0 (y grows downward). A
+// body 12 × 16 below it jumps straight up at 400 (to 100 above where it starts), its right
+// edge overlapping the platform's left corner by `clip`.
+
+struct CornerScene {
+    World world{WorldDef{.gravity = {0, 800}, .sleeping = false}};
+    BodyId body;
+    CornerScene(float clip, float cornerCorrection) {
+        world.createBody({.type = BodyType::Static, .x = 50, .y = -10, .hw = 50, .hh = 10});
+        body = world.createBody({.x = clip - 6,
+                                 .y = 28,
+                                 .hw = 6,
+                                 .hh = 8,
+                                 .vy = -400,
+                                 .gravityScale = 1,
+                                 .cornerCorrection = cornerCorrection});
+    }
+    /// The highest its top gets, and its vertical speed when the step it got there ends.
+    float highestTop() {
+        float top = 1e9f;
+        for (int i = 0; i < 60; ++i) {
+            world.step(kDt);
+            top = std::min(top, world.position(body).y - 8);
+        }
+        return top;
+    }
+};
+
+TEST(CornerCorrection, AJumpClippingAPlatformsCornerByNoMoreThanItGoesRoundIt) {
+    for (float clip : {0.1f, 0.5f}) {
+        CornerScene scene(clip, 0.5f);
+        // Its top starts at 20 and rises 100 (less a step's worth of the discrete climb):
+        // far above the platform's top (-20), had it gone round.
+        EXPECT_LT(scene.highestTop(), -75.0f) << "clip " << clip;
+        // Moved aside by the clip and the contact skin (twice the slop of its half width 6,
+        // 0.12): clear of the platform, and no further.
+        EXPECT_NEAR(scene.world.position(scene.body).x + 6.0f, -0.12f, 1e-4f) << "clip " << clip;
+    }
+}
+
+TEST(CornerCorrection, JustOverTheDistanceOrWithoutItTheJumpIsLost) {
+    // (A clip within the contact skin, 0.12, is mere touching: that passes without it.)
+    for (auto [clip, correction] : {std::pair{0.51f, 0.5f}, std::pair{0.5f, 0.0f}}) {
+        CornerScene scene(clip, correction);
+        // Stopped by the underside: its top never above y = 0 (within the skin).
+        EXPECT_GT(scene.highestTop(), -0.01f) << "clip " << clip << ", correction " << correction;
+    }
+}
+
+TEST(CornerCorrection, ADashClippingALedgesTopGoesOverIt) {
+    // A ledge with its top at y = 0 and its left face at x = 100; a body dashing right at
+    // 400 with gravity off for it, its bottom 0.4 below the ledge's top.
+    World world(WorldDef{.gravity = {0, 800}, .sleeping = false});
+    world.createBody({.type = BodyType::Static, .x = 150, .y = 50, .hw = 50, .hh = 50});
+    const BodyId dasher = world.createBody({.x = 50,
+                                            .y = -7.6f,
+                                            .hw = 6,
+                                            .hh = 8,
+                                            .vx = 400,
+                                            .gravityScale = 0,
+                                            .cornerCorrection = 0.5f});
+    for (int i = 0; i < 20; ++i)
+        world.step(kDt);
+    EXPECT_GT(world.position(dasher).x, 150.0f);
+    EXPECT_EQ(world.velocity(dasher).x, 400.0f);
+}
+
+TEST(CornerCorrection, FallingOntoALedgesCornerStillLandsOnIt) {
+    World world(WorldDef{.gravity = {0, 800}, .sleeping = false});
+    world.createBody({.type = BodyType::Static, .x = 50, .y = 10, .hw = 50, .hh = 10});
+    // Its right edge 0.3 over the ledge's left corner (x = 0), falling onto it.
+    const BodyId body =
+        world.createBody({.x = -5.7f, .y = -40, .hw = 6, .hh = 8, .cornerCorrection = 0.5f});
+    for (int i = 0; i < 60; ++i)
+        world.step(kDt);
+    EXPECT_NEAR(world.position(body).y, -8.0f, 0.1f);
+    EXPECT_NEAR(world.position(body).x, -5.7f, 1e-3f);
+}
+
+// --- Stepping up (issue 29) ------------------------------------------------------------------
+//
+// A floor with its top at y = 0; stairs of boxes rising to the right from x = 100, each
+// step 20 wide and `rise` high. A character 12 × 16 with stepUp 8 walks at 120.
+
+World stairs(float rise, int steps) {
+    World world(WorldDef{.gravity = {0, 800}, .sleeping = false});
+    world.createBody({.type = BodyType::Static, .x = 0, .y = 50, .hw = 1000, .hh = 50});
+    for (int k = 1; k <= steps; ++k)
+        world.createBody({.type = BodyType::Static,
+                          .x = 100 + 20.0f * float(k - 1) + 10,
+                          .y = -rise * float(k) * 0.5f,
+                          .hw = 10,
+                          .hh = rise * float(k) * 0.5f});
+    return world;
+}
+
+TEST(StepUp, ACharacterWalksUpAndDownStepsNoTallerThanItsStepUpAtItsWalkSpeed) {
+    World world = stairs(6, 4);
+    const BodyId hero =
+        world.createBody({.x = 50, .y = -8, .hw = 6, .hh = 8, .character = true, .stepUp = 8});
+    for (int i = 0; i < 10; ++i)
+        world.step(kDt);
+    world.setWalkSpeed(hero, 120);
+    // Up the four steps to the top (24 above the floor), then on along it.
+    for (int i = 0; world.position(hero).x < 175.0f; ++i) {
+        ASSERT_LT(i, 120) << "stuck at x " << world.position(hero).x;
+        world.step(kDt);
+        ASSERT_NEAR(world.velocity(hero).x, 120.0f, 1e-3f) << "step " << i;
+    }
+    EXPECT_NEAR(world.position(hero).y, -24.0f - 8.0f, 0.1f);
+    // And back down them, at the same speed.
+    world.setWalkSpeed(hero, -120);
+    for (int i = 0; world.position(hero).x > 60.0f; ++i) {
+        ASSERT_LT(i, 120) << "stuck at x " << world.position(hero).x;
+        world.step(kDt);
+        ASSERT_NEAR(world.velocity(hero).x, -120.0f, 1e-3f) << "step " << i;
+        ASSERT_TRUE(world.ground(hero)) << "step " << i;
+    }
+    EXPECT_NEAR(world.position(hero).y, -8.0f, 0.1f);
+}
+
+TEST(StepUp, ATallerStepStopsItAsAWallDoes) {
+    World world = stairs(10, 1);
+    const BodyId hero =
+        world.createBody({.x = 50, .y = -8, .hw = 6, .hh = 8, .character = true, .stepUp = 8});
+    for (int i = 0; i < 10; ++i)
+        world.step(kDt);
+    world.setWalkSpeed(hero, 120);
+    for (int i = 0; i < 60; ++i)
+        world.step(kDt);
+    EXPECT_NEAR(world.position(hero).x, 100.0f - 6.0f, 0.1f);
+    EXPECT_NEAR(world.position(hero).y, -8.0f, 0.1f);
 }
 
 } // namespace

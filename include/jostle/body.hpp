@@ -125,6 +125,20 @@ struct BodyDef {
     /// crests and down ramps it can stand on without leaving the ground. The physical
     /// model only: the classic one ignores it.
     float snapDown = 0.0f;
+    /// Slips round corners it clips by at most this much (>= 0; 0, the default: off): a
+    /// body rising into the underside of a platform, or moving sideways into a ledge, whose
+    /// edge overlaps the obstacle's corner by no more than this is moved aside (across its
+    /// motion) to clear the corner, keeping its velocity, instead of being stopped: a jump
+    /// that clips a platform's corner by half a pixel is not lost. Not when falling onto
+    /// something (landing on a ledge's corner stays a landing), and not into anything else.
+    /// Sharp boxes against static and kinematic boxes; the physical model only.
+    /// docs/characters.md.
+    float cornerCorrection = 0.0f;
+    /// A character walks up a step no taller than this (>= 0; 0, the default: off) at its
+    /// walk speed, without jumping and without catching on the step's edge, and down one
+    /// as high; a taller step stops it as a wall does. Sharp boxes against static and
+    /// kinematic boxes; the physical model only. docs/characters.md.
+    float stepUp = 0.0f;
     /// Rounds the box's corners with this radius, in [0, min(hw, hh)]: hw = hh = radius is
     /// a circle, hw = radius < hh an upright capsule. 0 (the default): a sharp box. Mass
     /// still comes from the box's area, 4 × hw × hh. The physical model only.

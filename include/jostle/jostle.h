@@ -343,6 +343,12 @@ typedef struct jostle_body_def {
     /// Sticks to the ground walking down slopes and over crests, by at most this distance;
     /// >= 0, default 0: off (jostle::BodyDef::snapDown).
     float snap_down;
+    /// Slips round corners clipped by at most this much (jostle::BodyDef::cornerCorrection);
+    /// >= 0, default 0: off.
+    float corner_correction;
+    /// A character walks up (and down) steps no taller than this
+    /// (jostle::BodyDef::stepUp); >= 0, default 0: off.
+    float step_up;
     /// Rounds the corners (jostle::BodyDef::radius): in [0, min(hw, hh)]; hw = hh = radius
     /// is a circle. Default 0. docs/slopes-and-shapes.md.
     float radius;
@@ -488,6 +494,11 @@ bool jostle_body_set_floor_angle(jostle_world* world, jostle_body_id body, float
 jostle_vec2 jostle_body_get_surface_velocity(const jostle_world* world, jostle_body_id body);
 bool jostle_body_set_surface_velocity(jostle_world* world, jostle_body_id body,
                                       jostle_vec2 velocity);
+/// See jostle_body_def.corner_correction and step_up; >= 0.
+float jostle_body_get_corner_correction(const jostle_world* world, jostle_body_id body);
+bool jostle_body_set_corner_correction(jostle_world* world, jostle_body_id body, float distance);
+float jostle_body_get_step_up(const jostle_world* world, jostle_body_id body);
+bool jostle_body_set_step_up(jostle_world* world, jostle_body_id body, float height);
 /// See jostle_body_def.snap_down.
 float jostle_body_get_snap_down(const jostle_world* world, jostle_body_id body);
 /// >= 0; 0 is off.

@@ -356,6 +356,11 @@ public:
     /// See BodyDef::snapDown: >= 0, 0 is off.
     float snapDown(BodyId id) const;
     void setSnapDown(BodyId id, float distance);
+    /// See BodyDef::cornerCorrection and stepUp: >= 0, else jostle::Error.
+    float cornerCorrection(BodyId id) const;
+    void setCornerCorrection(BodyId id, float distance);
+    float stepUp(BodyId id) const;
+    void setStepUp(BodyId id, float height);
     /// The speed a character walks at (finite): along what it stands on and relative to
     /// it, so that it keeps pace with a lift; positive to the right of gravity's "down"
     /// (+x in a y-down world); in the air, relative to the world. It holds until changed:

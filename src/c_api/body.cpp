@@ -235,6 +235,23 @@ bool jostle_body_set_floor_angle(jostle_world* world, jostle_body_id body, float
     return set(__func__, world, [&](World& w) { w.setFloorAngle(toCpp(body), degrees); });
 }
 
+float jostle_body_get_corner_correction(const jostle_world* world, jostle_body_id body) {
+    return get<float>(__func__, world,
+                      [&](const World& w) { return w.cornerCorrection(toCpp(body)); });
+}
+
+bool jostle_body_set_corner_correction(jostle_world* world, jostle_body_id body, float distance) {
+    return set(__func__, world, [&](World& w) { w.setCornerCorrection(toCpp(body), distance); });
+}
+
+float jostle_body_get_step_up(const jostle_world* world, jostle_body_id body) {
+    return get<float>(__func__, world, [&](const World& w) { return w.stepUp(toCpp(body)); });
+}
+
+bool jostle_body_set_step_up(jostle_world* world, jostle_body_id body, float height) {
+    return set(__func__, world, [&](World& w) { w.setStepUp(toCpp(body), height); });
+}
+
 jostle_vec2 jostle_body_get_surface_velocity(const jostle_world* world, jostle_body_id body) {
     return get<jostle_vec2>(__func__, world,
                             [&](const World& w) { return toC(w.surfaceVelocity(toCpp(body))); });

@@ -67,14 +67,16 @@ std::optional<Met> floorBelow(const StepContext& step, std::uint32_t slot, Vec2 
 /// How far `body` may be moved down onto a floor in a step of `dt`: its snapDown, and for
 /// a character at least the drop a step at its walk speed meets on the steepest floor it
 /// stands on, |walk| dt tan(floorAngle) (at most its half extent along gravity), so that
-/// it follows every floor it can walk on over a crest.
-float snapDistance(const Body& body, float dt, Vec2 down) {
+/// it follows every floor it can walk on over a crest, and a step down no taller than its
+/// `stepUp` (BodyDef::stepUp) while it walks.
+float snapDistance(const Body& body, float stepUp, float dt, Vec2 down) {
     if (!body.isCharacter())
         return body.snapDown;
     const float c = body.floorCos;
     const float drop = std::abs(body.walkSpeed) * dt * std::sqrt(1.0f - c * c) / c;
     const float half = std::abs(down.x) * body.half.x + std::abs(down.y) * body.half.y;
-    return std::max(body.snapDown, std::min(drop, half));
+    const float steps = body.walkSpeed != 0.0f ? stepUp : 0.0f;
+    return std::max({body.snapDown, std::min(drop, half), steps});
 }
 
 /// Turns the velocity of `body` along the floor of normal `n` moving at `floorVelocity`:
@@ -103,7 +105,7 @@ void snapToGround(StepContext& step) {
     ContinuousScratch& found = step.scratch.continuous;
     for (std::uint32_t slot : w.movingSlots) {
         Body& body = w.slots[slot];
-        const float distance = snapDistance(body, step.dt, w.events.down);
+        const float distance = snapDistance(body, w.asGiven[slot].stepUp, step.dt, w.events.down);
         if (!body.isDynamic() || !(distance > 0.0f) || !w.isLive(slot) || leavesGround(w, slot))
             continue;
         const Vec2 motion = w.events.down * distance;

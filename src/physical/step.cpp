@@ -10,6 +10,7 @@
 #include "contact_solver.hpp"
 #include "contacts.hpp"
 #include "continuous.hpp"
+#include "corners.hpp"
 #include "impacts.hpp"
 #include "platforms.hpp"
 #include "positions.hpp"
@@ -38,6 +39,7 @@ void stepPhysical(WorldState& world, float dt) {
     time.velocities += clock.lap();
     findPairs(world, dt, world.pairs);
     time.pairs += clock.lap();
+    slipRoundCorners(step);
     buildContacts(step);
     time.contacts += clock.lap();
     orderBySupport(step);

@@ -526,6 +526,9 @@ constexpr Setting<float> kNumberSettings[] = {
     {"getFloorAngle", "setFloorAngle", {"degrees"}, &World::floorAngle,
         &World::setFloorAngle},
     {"getSnapDown", "setSnapDown", {"distance"}, &World::snapDown, &World::setSnapDown},
+    {"getCornerCorrection", "setCornerCorrection", {"distance"}, &World::cornerCorrection,
+     &World::setCornerCorrection},
+    {"getStepUp", "setStepUp", {"height"}, &World::stepUp, &World::setStepUp},
 };
 constexpr Setting<bool> kFlagSettings[] = {
     {"isBullet", "setBullet", {"bullet"}, &World::isBullet, &World::setBullet},
