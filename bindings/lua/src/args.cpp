@@ -2,6 +2,7 @@
 #include "args.hpp"
 
 #include "binding.hpp"
+#include "suggest.hpp"
 
 #include <cmath>
 #include <cstdarg>
@@ -181,8 +182,15 @@ void Fields::allowOnly(const char* const* names) const {
             bool known = false;
             for (int i = 0; names[i] && !known; ++i)
                 known = std::strcmp(key, names[i]) == 0;
-            if (!known)
-                raise(L_, where_, "%sunknown field \"%s\"", table, key);
+            if (!known) {
+                // ' (did you mean "snapDown"?)' for the known name it was probably meant to be.
+                NearestName nearest(key);
+                for (int i = 0; names[i]; ++i)
+                    nearest.consider(names[i]);
+                char note[96];
+                didYouMean(nearest.name(), note, sizeof note);
+                raise(L_, where_, "%sunknown field \"%s\"%s", table, key, note);
+            }
         } else {
             // {0, 0, 10, 10}: positions are not names. Say what the key was without
             // converting it in place (that would confuse lua_next).

@@ -100,7 +100,8 @@ public:
     Fields(lua_State* L, int table, const char* where, const char* prefix = "");
 
     /// Raises on a key that is not one of `names` (a list ended by nullptr): a typo
-    /// must not pass silently.
+    /// must not pass silently. The message names the known field it was probably meant to
+    /// be, as scene files do (src/suggest.hpp).
     void allowOnly(const char* const* names) const;
 
     bool has(const char* name) const;
