@@ -596,7 +596,7 @@ static void test_shapes(void) {
     CHECK_REFUSED_SHAPE(world, add_shape(world, JOSTLE_BODY_DYNAMIC, 5, 5, NAN, 0, 0, false),
                         "BodyDef.radius: must be a finite number");
     CHECK_REFUSED_SHAPE(world, add_shape(world, JOSTLE_BODY_STATIC, 5, 5, 0, 1, 0, false),
-                        "BodyDef.slope: must be [0, 0] or each component -1 or 1");
+                        "BodyDef.slope: must be {0, 0} or each component -1 or 1");
     CHECK_REFUSED_SHAPE(world, add_shape(world, JOSTLE_BODY_STATIC, 5, 5, 0, INFINITY, 1, false),
                         "BodyDef.slope: must be a finite number");
     CHECK_REFUSED_SHAPE(world, add_shape(world, JOSTLE_BODY_DYNAMIC, 5, 5, 0, -1, -1, false),
@@ -609,7 +609,7 @@ static void test_shapes(void) {
     round.hw = round.hh = round.radius = 2;
     round.one_way.y = -1;
     CHECK_REFUSED_SHAPE(world, jostle_body_create(world, &round),
-                        "BodyDef.oneWay: must be [0, 0] for a rounded body, ramp or segment");
+                        "BodyDef.oneWay: must be {0, 0} for a rounded body, ramp or segment");
 
     // A shape is fixed at creation: the setters that would break its rules are refused,
     // and the body stays as it was.

@@ -2,6 +2,7 @@
 #include "args.hpp"
 
 #include "binding.hpp"
+#include "notation.hpp"
 #include "suggest.hpp"
 
 #include <cmath>
@@ -9,6 +10,7 @@
 #include <cstdio>
 #include <cstring>
 #include <limits>
+#include <string>
 
 namespace jostle::lua {
 
@@ -31,12 +33,20 @@ void copyMessage(char (&out)[kMessageSize], const char* text) {
 
 void describe(char (&out)[kMessageSize], const std::exception& error, bool fromJostle) {
     const char* text = error.what();
-    if (fromJostle) {
-        // "setMass: mass must be > 0": the C++ name goes, the Lua one takes its place.
-        if (const char* colon = std::strstr(text, ": "))
-            text = colon + 2;
+    if (!fromJostle) {
+        copyMessage(out, text);
+        return;
     }
-    copyMessage(out, text);
+    // "setMass: mass must be > 0": the C++ name goes, the Lua one takes its place; the
+    // rule is written in Lua's notation (notation.hpp).
+    if (const char* colon = std::strstr(text, ": "))
+        text = colon + 2;
+    copyInNotation(text, Notation::Lua, out, kMessageSize);
+}
+
+void describe(char (&out)[kMessageSize], const FieldError& problem) {
+    const std::string text = problem.field + ": " + problem.problem;
+    copyInNotation(text, Notation::Lua, out, kMessageSize);
 }
 
 const char* typeName(lua_State* L, int index) {

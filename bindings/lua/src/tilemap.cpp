@@ -144,8 +144,7 @@ int worldNewTileMap(lua_State* L) {
         }
         if (auto problem = checkTileMapDef(def)) {
             bad = true;
-            std::snprintf(message, kMessageSize, "%s: %s", problem->field.c_str(),
-                          problem->problem.c_str());
+            describe(message, *problem);
             return;
         }
         id = createTileMap(handle.data->world, def);
