@@ -415,7 +415,8 @@ TEST(SceneErrors, TopLevel) {
     EXPECT_EQ(errorOf("42"), "expected an object at the top level, got number");
     EXPECT_EQ(errorOf("{}"), R"(missing field "bodies")");
     EXPECT_EQ(errorOf(R"({"gravity": [0, 1]})"), R"(missing field "bodies")");
-    EXPECT_EQ(errorOf(withTop(R"("gravty": [0, 1])")), R"(unknown field "gravty" (did you mean "gravity"?))");
+    EXPECT_EQ(errorOf(withTop(R"("gravty": [0, 1])")),
+              R"(unknown field "gravty" (did you mean "gravity"?))");
     EXPECT_EQ(errorOf(R"({"bodies": {}})"), "bodies: expected an array, got object");
     EXPECT_EQ(errorOf(R"({"bodies": null})"), "bodies: expected an array, got null");
 }
