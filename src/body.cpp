@@ -23,7 +23,7 @@ std::optional<FieldError> shapeProblem(const BodyDef& def) {
     if (sloped && def.radius > 0.0f)
         return FieldError{"radius", "must be 0 for a ramp or segment"};
     if ((sloped || def.radius > 0.0f) && def.oneWay != Vec2{})
-        return FieldError{"oneWay", "must be [0, 0] for a rounded body, ramp or segment"};
+        return FieldError{"oneWay", "must be {0, 0} for a rounded body, ramp or segment"};
     if (def.surfaceVelocity != Vec2{} && def.type == BodyType::Dynamic)
         return FieldError{"surfaceVelocity", "a conveyor must be static or kinematic"};
     return std::nullopt;

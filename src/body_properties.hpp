@@ -100,9 +100,9 @@ inline const char* stepProblem(Rule rule, std::size_t step, float value) {
 }
 inline const char* stepProblem(Rule rule, std::size_t step, Vec2 value) {
     if (rule == Rule::Direction && step == 0 && !isValidOneWay(value))
-        return "must be [0, 0] or one of [1, 0], [-1, 0], [0, 1], [0, -1]";
+        return "must be {0, 0} or one of {1, 0}, {-1, 0}, {0, 1}, {0, -1}";
     if (rule == Rule::Corner && step == 0 && !isValidSlope(value))
-        return "must be [0, 0] or each component -1 or 1";
+        return "must be {0, 0} or each component -1 or 1";
     return nullptr;
 }
 template <class T> const char* stepProblem(Rule, std::size_t, T) {

@@ -6,7 +6,7 @@
 #include "tile_boxes.hpp"
 
 #include "body_properties.hpp"
-#include "tile_chars.hpp"
+#include "tile_rows.hpp"
 #include "world_access.hpp"
 
 #include <algorithm>
@@ -21,21 +21,6 @@ namespace {
 
 std::string describe(int column, int row) {
     return "column " + std::to_string(column) + ", row " + std::to_string(row);
-}
-
-/// Why the classic model takes no ramp tiles, as messages say it.
-constexpr const char* kNoRampsInClassic = "the classic model has sharp boxes only: no ramps";
-
-/// The first ramp of `def`'s rows, as "rows[2][5]", if the world is in the classic model
-/// (which refuses them, as createBody refuses any shape there); else nothing.
-std::optional<std::string> rampInClassic(const World& world, const TileMapDef& def) {
-    if (world.solver() != Solver::Classic)
-        return std::nullopt;
-    for (std::size_t row = 0; row < def.rows.size(); ++row)
-        for (std::size_t column = 0; column < def.rows[row].size(); ++column)
-            if (rampTile(def.rows[row][column]))
-                return "rows[" + std::to_string(row) + "][" + std::to_string(column) + "]";
-    return std::nullopt;
 }
 
 TileMapData& lookUp(WorldState& world, TileMapId id, const char* function) {
@@ -59,8 +44,9 @@ TileMapId createTileMap(World& world, const TileMapDef& def) {
     if (auto problem = checkTileMapDef(def))
         fail("createTileMap", "TileMapDef." + problem->field + ": " + problem->problem);
     // Refused before anything is made: the map's boxes would be made before its ramps.
-    if (auto ramp = rampInClassic(world, def))
-        fail("createTileMap", "TileMapDef." + *ramp + ": " + kNoRampsInClassic);
+    if (world.solver() == Solver::Classic)
+        if (auto ramp = rampProblem(def.rows, Notation::Cpp))
+            fail("createTileMap", "TileMapDef." + ramp->field + ": " + ramp->problem);
 
     TileMaps& maps = WorldAccess::state(world).tileMaps;
     const std::optional<std::uint32_t> taken = takeSlot(maps.maps, maps.freeMaps);

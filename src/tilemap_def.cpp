@@ -1,7 +1,7 @@
 // Checking a tile map's definition (jostle/tilemap.hpp's checkTileMapDef).
 #include "body_properties.hpp"
 #include "jostle/tilemap.hpp"
-#include "tile_chars.hpp"
+#include "tile_rows.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -19,26 +19,9 @@ std::optional<FieldError> checkTileMapDef(const TileMapDef& def) {
     if (def.tile / 2.0f < kMinMagnitude)
         return FieldError{"tile", "must be >= 2e-9"};
 
-    if (def.rows.empty())
-        return FieldError{"rows", "must have at least one row"};
-    if (def.rows.size() > static_cast<std::size_t>(std::numeric_limits<int>::max()))
-        return FieldError{"rows", "too many rows"};
+    if (auto problem = rowsProblem(def.rows, Notation::Cpp))
+        return problem;
     const std::size_t columns = def.rows[0].size();
-    if (columns == 0)
-        return FieldError{"rows[0]", "must have at least one column"};
-    if (columns > static_cast<std::size_t>(std::numeric_limits<int>::max()))
-        return FieldError{"rows[0]", "too many columns"};
-    for (std::size_t row = 0; row < def.rows.size(); ++row) {
-        const std::string& text = def.rows[row];
-        const std::string place = "rows[" + std::to_string(row) + "]";
-        for (std::size_t column = 0; column < text.size(); ++column)
-            if (!isTileChar(text[column]))
-                return FieldError{place + "[" + std::to_string(column) + "]",
-                                  "expected '#', '.' or a ramp, got " + describeChar(text[column])};
-        if (text.size() != columns)
-            return FieldError{place, "has " + std::to_string(text.size()) +
-                                         " columns, rows[0] has " + std::to_string(columns)};
-    }
 
     // The far corner must be in the range jostle works in (math.hpp), like every body.
     const double width = static_cast<double>(columns) * static_cast<double>(def.tile);

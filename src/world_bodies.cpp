@@ -306,8 +306,8 @@ Vec2 World::oneWay(BodyId id) const {
 
 void World::setOneWay(BodyId id, Vec2 normal) {
     Body& body = lookUpToChange(*state_, id, "setOneWay");
-    if (!isValidOneWay(normal))
-        fail("setOneWay", "normal must be {0, 0} or one of {±1, 0}, {0, ±1}");
+    if (const char* problem = properties::problemOf(properties::kOneWay.rule, normal))
+        fail("setOneWay", std::string("normal ") + problem);
     if (normal != Vec2{} && !body.isBox())
         fail("setOneWay", "a rounded body, ramp or segment cannot be one-way");
     body.oneWay = normal;

@@ -230,7 +230,7 @@ TEST(TileMapChecks, EveryBadDefinitionIsNamed) {
     EXPECT_EQ(with([](TileMapDef& d) {
                   d.oneWay = {1, 1};
               }),
-              "oneWay: must be [0, 0] or one of [1, 0], [-1, 0], [0, 1], [0, -1]");
+              "oneWay: must be {0, 0} or one of {1, 0}, {-1, 0}, {0, 1}, {0, -1}");
 }
 
 TEST(TileMapChecks, CreateTileMapRefusesWhatTheCheckRefusesAndCreatesNothing) {

@@ -2,8 +2,10 @@
 // the whole world when each ends (reader_state.hpp; the events are scene_reader.cpp's).
 //
 // The value rules of bodies and worlds are not repeated here: checkBodyDef and
-// checkWorldDef are the one source of truth, and this file only adds the place.
+// checkWorldDef are the one source of truth, and this file only adds the place and writes
+// their words in JSON's notation (notation.hpp: [0, -1], not {0, -1}).
 #include "model_rules.hpp"
+#include "notation.hpp"
 #include "reader_state.hpp"
 
 #include <optional>
@@ -17,6 +19,11 @@ FrictionMix readFrictionMix(const Json& value, const std::string& place) {
     if (auto mix = frictionMixFromString(readString(value, place)))
         return *mix;
     fail(place, R"(expected "min" or "geometricMean")");
+}
+
+/// Fails at `place` with a rule of the C++ library (checkBodyDef, ...), in JSON's notation.
+[[noreturn]] void failRule(const std::string& place, const std::string& rule) {
+    fail(place, inNotation(rule, Notation::Json));
 }
 
 /// Fails unless the object of `frame` has every field its definition requires, in table
@@ -109,7 +116,7 @@ void SceneReader::endBody(Frame& frame) {
         fail(field(frame.place, "mass"), "must be > 0");
 
     if (auto problem = checkBodyDef(frame.body.def))
-        fail(field(frame.place, problem->field), problem->problem);
+        failRule(field(frame.place, problem->field), problem->problem);
 
     scene_.bodies.push_back(std::move(frame.body));
     if (const std::size_t owner = ids_.insert(scene_.bodies.size() - 1); owner != kNone) {
@@ -126,7 +133,7 @@ void SceneReader::endTileMap(Frame& frame) {
     if (!frame.has(kRowsField))
         fail(frame.place, R"(missing field "rows")");
     if (auto problem = checkTileMapDef(frame.map))
-        fail(field(frame.place, problem->field), problem->problem);
+        failRule(field(frame.place, problem->field), problem->problem);
     scene_.tileMaps.push_back(std::move(frame.map));
 }
 
@@ -138,7 +145,7 @@ Scene SceneReader::finish() {
         for (const auto& [place, text] : written_)
             if (place == problem->field)
                 rule += ", got " + text;
-        fail(problem->field, rule);
+        failRule(problem->field, rule);
     }
     // Only now is the model known ("solver" may come last); its problems are looked for
     // in file order, bodies and tile maps alike.
@@ -152,7 +159,7 @@ Scene SceneReader::finish() {
                 return name == kTileMap ? place : element(place, i);
             });
         if (problem)
-            fail(problem->field, problem->problem);
+            failRule(problem->field, problem->problem);
     }
     return std::move(scene_);
 }

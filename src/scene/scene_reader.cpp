@@ -5,10 +5,12 @@
 // Every problem becomes a SceneError that names the place ("bodies[3].hw") and the
 // rule. The fields of bodies and tile maps are read by their descriptions
 // (definition_fields.hpp). What is checked here is what only a file can get wrong:
-// syntax, types, unknown, missing and duplicate fields, numbers a float cannot hold, ids.
+// syntax, types, unknown (with the known field it was probably meant to be: suggest.hpp),
+// missing and duplicate fields, numbers a float cannot hold, ids.
 #include "scene_reader.hpp"
 
 #include "reader_state.hpp"
+#include "suggest.hpp"
 
 #include <algorithm>
 #include <cstddef>
@@ -40,6 +42,43 @@ std::string placeName(const std::string& name) {
                c == '_';
     });
     return plain ? name : quoteName(name);
+}
+
+/// The field of an object of `kind` that `name` was probably meant to be (suggest.hpp),
+/// or empty.
+std::string_view nearestField(Kind kind, std::string_view name) {
+    NearestName nearest(name);
+    auto considerAll = [&](const auto& names) {
+        for (std::string_view known : names)
+            nearest.consider(known);
+    };
+    auto considerFile = [&](const auto& fields) {
+        for (const auto& field : fields)
+            if (inFile(field))
+                nearest.consider(field.property->name);
+    };
+    switch (kind) {
+    case Kind::Scene:
+        considerAll(kSceneFields);
+        break;
+    case Kind::Classic:
+        considerAll(kClassicFields);
+        break;
+    case Kind::Physical:
+        considerAll(kPhysicalFields);
+        break;
+    case Kind::Body:
+        considerFile(properties::kBodyFields);
+        nearest.consider("id");
+        break;
+    case Kind::TileMap:
+        considerFile(properties::kTileMapFields);
+        nearest.consider("rows");
+        break;
+    default:
+        break;
+    }
+    return nearest.name();
 }
 
 } // namespace
@@ -119,7 +158,8 @@ bool SceneReader::key(string_t& name) {
     }
     // Refused at its name, before its value is read: nothing of it is kept.
     if (index == kNone)
-        fail(frame.place, "unknown field " + quoteName(name));
+        fail(frame.place,
+             "unknown field " + quoteName(name) + didYouMean(nearestField(frame.kind, name)));
     if (frame.has(index))
         fail(frame.place, "duplicate field " + quoteName(name));
     // One map or several: two ways to say it, never both in one file.

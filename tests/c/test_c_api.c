@@ -56,6 +56,18 @@
 
 #define CHECK_NO_ERROR() CHECK(jostle_last_error()[0] == '\0', "no error expected")
 
+/// The last error is exactly `message`.
+#define CHECK_MESSAGE(message)                                                                     \
+    do {                                                                                           \
+        const char* m_ = jostle_last_error();                                                      \
+        if (strcmp(m_, message) != 0) {                                                            \
+            fprintf(stderr, "%s:%d: expected the error \"%s\", got \"%s\"\n", __FILE__, __LINE__,  \
+                    message, m_);                                                                  \
+            exit(1);                                                                               \
+        }                                                                                          \
+        jostle_clear_error();                                                                      \
+    } while (0)
+
 static bool same(jostle_body_id a, jostle_body_id b) {
     return jostle_body_id_equal(a, b);
 }
@@ -596,7 +608,7 @@ static void test_shapes(void) {
     CHECK_REFUSED_SHAPE(world, add_shape(world, JOSTLE_BODY_DYNAMIC, 5, 5, NAN, 0, 0, false),
                         "BodyDef.radius: must be a finite number");
     CHECK_REFUSED_SHAPE(world, add_shape(world, JOSTLE_BODY_STATIC, 5, 5, 0, 1, 0, false),
-                        "BodyDef.slope: must be [0, 0] or each component -1 or 1");
+                        "BodyDef.slope: must be {0, 0} or each component -1 or 1");
     CHECK_REFUSED_SHAPE(world, add_shape(world, JOSTLE_BODY_STATIC, 5, 5, 0, INFINITY, 1, false),
                         "BodyDef.slope: must be a finite number");
     CHECK_REFUSED_SHAPE(world, add_shape(world, JOSTLE_BODY_DYNAMIC, 5, 5, 0, -1, -1, false),
@@ -609,7 +621,7 @@ static void test_shapes(void) {
     round.hw = round.hh = round.radius = 2;
     round.one_way.y = -1;
     CHECK_REFUSED_SHAPE(world, jostle_body_create(world, &round),
-                        "BodyDef.oneWay: must be [0, 0] for a rounded body, ramp or segment");
+                        "BodyDef.oneWay: must be {0, 0} for a rounded body, ramp or segment");
 
     // A shape is fixed at creation: the setters that would break its rules are refused,
     // and the body stays as it was.
@@ -2188,6 +2200,42 @@ static void test_threads_that_cannot_start(void) {
 #endif
 }
 
+/// The messages of one rule in C's words (docs/reliability.md, "Misuse of the APIs"): the
+/// C++ library's, in its notation, which is C's too ({0, -1}, as a jostle_vec2 is written).
+/// C has no unknown fields (its definitions are structs) and no ragged tile maps (cells
+/// are a grid): those messages are the other languages'.
+static void test_messages(void) {
+    jostle_world_def world_def = jostle_default_world_def();
+    jostle_world* world = jostle_world_create(&world_def);
+    jostle_body_def def = jostle_default_body_def();
+    def.hw = def.hh = 1;
+    def.one_way = (jostle_vec2){1, 1};
+    CHECK(jostle_body_id_is_null(jostle_body_create(world, &def)), "a diagonal one-way");
+    CHECK_MESSAGE("jostle_body_create: createBody: BodyDef.oneWay: must be {0, 0} or one of "
+                  "{1, 0}, {-1, 0}, {0, 1}, {0, -1}");
+    def.one_way = (jostle_vec2){0, 0};
+    const jostle_body_id crate = jostle_body_create(world, &def);
+    CHECK(!jostle_body_set_one_way(world, crate, (jostle_vec2){1, 1}), "a diagonal one-way");
+    CHECK_MESSAGE("jostle_body_set_one_way: setOneWay: normal must be {0, 0} or one of {1, 0}, "
+                  "{-1, 0}, {0, 1}, {0, -1}");
+    const unsigned char cells[2] = {'#', '#'};
+    jostle_tile_map_def map = jostle_default_tile_map_def();
+    map.tile = 16;
+    map.columns = 2;
+    map.rows = 1;
+    map.cells = cells;
+    map.one_way = (jostle_vec2){0, 2};
+    CHECK(jostle_tile_map_id_is_null(jostle_tile_map_create(world, &map)), "a one-way of 2");
+    CHECK_MESSAGE("jostle_tile_map_create: createTileMap: TileMapDef.oneWay: must be {0, 0} or "
+                  "one of {1, 0}, {-1, 0}, {0, 1}, {0, -1}");
+    CHECK(!jostle_body_set_walk_speed(world, crate, 50), "a crate does not walk");
+    CHECK_MESSAGE("jostle_body_set_walk_speed: setWalkSpeed: the body is not a character (a "
+                  "dynamic body with BodyDef::character = true)");
+    CHECK(jostle_world_body_count(world) == 1, "nothing refused was made");
+    CHECK(jostle_world_destroy(world), "destroy");
+    CHECK_NO_ERROR();
+}
+
 int main(void) {
     test_defaults();
     test_free_fall();
@@ -2218,6 +2266,7 @@ int main(void) {
     test_fixed_step();
     test_draw_positions();
     test_misuse();
+    test_messages();
     test_a_handle_of_another_world();
     test_workers();
     test_a_job_system_that_breaks_the_contract();

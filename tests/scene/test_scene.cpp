@@ -285,7 +285,7 @@ TEST(SceneErrors, UnknownFieldsAreRefusedAtTheirName) {
     EXPECT_EQ(errorOf(R"({"bodies": [{"hw": 1, "colour": {"r": )"),
               R"(bodies[0]: unknown field "colour")");
     EXPECT_EQ(errorOf(R"({"bodies": [], "classic": {"masses": x)"),
-              R"(classic: unknown field "masses")");
+              R"(classic: unknown field "masses" (did you mean "mass"?))");
     EXPECT_EQ(errorOf(R"({"bodies": [], "physical": {"iterations": [)"),
               R"(physical: unknown field "iterations")");
     EXPECT_EQ(errorOf(R"({"bodies": [], "tilemaps": [{"tile": 1, "colour": "#)"),
@@ -415,7 +415,8 @@ TEST(SceneErrors, TopLevel) {
     EXPECT_EQ(errorOf("42"), "expected an object at the top level, got number");
     EXPECT_EQ(errorOf("{}"), R"(missing field "bodies")");
     EXPECT_EQ(errorOf(R"({"gravity": [0, 1]})"), R"(missing field "bodies")");
-    EXPECT_EQ(errorOf(withTop(R"("gravty": [0, 1])")), R"(unknown field "gravty")");
+    EXPECT_EQ(errorOf(withTop(R"("gravty": [0, 1])")),
+              R"(unknown field "gravty" (did you mean "gravity"?))");
     EXPECT_EQ(errorOf(R"({"bodies": {}})"), "bodies: expected an array, got object");
     EXPECT_EQ(errorOf(R"({"bodies": null})"), "bodies: expected an array, got null");
 }
@@ -464,7 +465,7 @@ TEST(SceneErrors, ClassicOptions) {
     EXPECT_EQ(errorOf(withTop(R"("classic": {"coulomb": "yes"})")),
               "classic.coulomb: expected true or false, got string");
     EXPECT_EQ(errorOf(withTop(R"("classic": {"masses": true})")),
-              R"(classic: unknown field "masses")");
+              R"(classic: unknown field "masses" (did you mean "mass"?))");
 }
 
 TEST(SceneErrors, PhysicalOptions) {

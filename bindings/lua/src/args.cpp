@@ -2,12 +2,15 @@
 #include "args.hpp"
 
 #include "binding.hpp"
+#include "notation.hpp"
+#include "suggest.hpp"
 
 #include <cmath>
 #include <cstdarg>
 #include <cstdio>
 #include <cstring>
 #include <limits>
+#include <string>
 
 namespace jostle::lua {
 
@@ -30,12 +33,20 @@ void copyMessage(char (&out)[kMessageSize], const char* text) {
 
 void describe(char (&out)[kMessageSize], const std::exception& error, bool fromJostle) {
     const char* text = error.what();
-    if (fromJostle) {
-        // "setMass: mass must be > 0": the C++ name goes, the Lua one takes its place.
-        if (const char* colon = std::strstr(text, ": "))
-            text = colon + 2;
+    if (!fromJostle) {
+        copyMessage(out, text);
+        return;
     }
-    copyMessage(out, text);
+    // "setMass: mass must be > 0": the C++ name goes, the Lua one takes its place; the
+    // rule is written in Lua's notation (notation.hpp).
+    if (const char* colon = std::strstr(text, ": "))
+        text = colon + 2;
+    copyInNotation(text, Notation::Lua, out, kMessageSize);
+}
+
+void describe(char (&out)[kMessageSize], const FieldError& problem) {
+    const std::string text = problem.field + ": " + problem.problem;
+    copyInNotation(text, Notation::Lua, out, kMessageSize);
 }
 
 const char* typeName(lua_State* L, int index) {
@@ -181,8 +192,15 @@ void Fields::allowOnly(const char* const* names) const {
             bool known = false;
             for (int i = 0; names[i] && !known; ++i)
                 known = std::strcmp(key, names[i]) == 0;
-            if (!known)
-                raise(L_, where_, "%sunknown field \"%s\"", table, key);
+            if (!known) {
+                // ' (did you mean "snapDown"?)' for the known name it was probably meant to be.
+                NearestName nearest(key);
+                for (int i = 0; names[i]; ++i)
+                    nearest.consider(names[i]);
+                char note[96];
+                didYouMean(nearest.name(), note, sizeof note);
+                raise(L_, where_, "%sunknown field \"%s\"%s", table, key, note);
+            }
         } else {
             // {0, 0, 10, 10}: positions are not names. Say what the key was without
             // converting it in place (that would confuse lua_next).

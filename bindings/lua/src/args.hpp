@@ -14,6 +14,7 @@
 
 #include "lua_compat.hpp"
 
+#include <jostle/body.hpp>
 #include <jostle/error.hpp>
 #include <jostle/math.hpp>
 
@@ -32,9 +33,12 @@ inline constexpr std::size_t kMessageSize = 512;
 
 /// Copies a C++ exception's message into `out`. jostle::Error's messages start with the
 /// C++ function's name ("setMass: mass must be > 0"); that name is dropped, as the Lua
-/// error puts the Lua method's name there instead.
+/// error puts the Lua method's name there instead, and the rest is written in Lua's
+/// notation (src/notation.hpp: "character = true", not "BodyDef::character = true").
 void describe(char (&out)[kMessageSize], const std::exception& error, bool fromJostle);
 void copyMessage(char (&out)[kMessageSize], const char* text);
+/// Copies a definition's problem (checkBodyDef, ...) as "field: problem", in Lua's notation.
+void describe(char (&out)[kMessageSize], const FieldError& problem);
 
 /// Runs `work`, catching every exception. False, with the message in `message`, if it
 /// threw. `work` must not call Lua functions that can raise (see above).
@@ -100,7 +104,8 @@ public:
     Fields(lua_State* L, int table, const char* where, const char* prefix = "");
 
     /// Raises on a key that is not one of `names` (a list ended by nullptr): a typo
-    /// must not pass silently.
+    /// must not pass silently. The message names the known field it was probably meant to
+    /// be, as scene files do (src/suggest.hpp).
     void allowOnly(const char* const* names) const;
 
     bool has(const char* name) const;

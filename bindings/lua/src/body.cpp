@@ -164,8 +164,7 @@ BodyDef readBodyDef(lua_State* L, int index, const char* where) {
     const bool ran = attempt(message, [&] {
         if (auto problem = checkBodyDef(def)) {
             bad = true;
-            std::snprintf(message, kMessageSize, "%s: %s", problem->field.c_str(),
-                          problem->problem.c_str());
+            describe(message, *problem);
         }
     });
     if (!ran || bad)

@@ -2,10 +2,11 @@
 // C++ and scene files: tile (column, row) covers x + column × tile to x + (column + 1) ×
 // tile. So the string rows[1] of the definition is row 0.
 #include "binding.hpp"
-#include "tile_chars.hpp"
+#include "tile_rows.hpp"
 
 #include <cstdio>
 #include <cstring>
+#include <optional>
 
 namespace jostle::lua {
 
@@ -25,51 +26,17 @@ TileMapHandle& checkMap(lua_State* L, int index, const char* where) {
     return *map;
 }
 
-/// Checks the rows table at `rows`: strings of '#', '.' and ramps (none if `classic`: that
-/// model's bodies are sharp boxes), all as long as the first. Messages use Lua's indices
-/// ("rows[3][6]" is rows[3]:sub(6, 6)) and say the tile.
-void checkRows(lua_State* L, int rows, const char* where, bool classic) {
+/// Checks the rows table at `rows`: an array of strings. What the strings must be is
+/// tile_rows.hpp's, checked once they are copied (worldNewTileMap).
+void checkRows(lua_State* L, int rows, const char* where) {
     if (lua_type(L, rows) != LUA_TTABLE)
         raise(L, where, "rows: expected an array of strings, got %s", typeName(L, rows));
     const std::size_t count = rawLength(L, rows);
-    if (count == 0)
-        raise(L, where, "rows: must have at least one row");
-    std::size_t columns = 0;
     for (std::size_t i = 1; i <= count; ++i) {
         rawGetInteger(L, rows, static_cast<std::int64_t>(i));
         if (lua_type(L, -1) != LUA_TSTRING)
             raise(L, where, "rows[%d]: expected a string, got %s", static_cast<int>(i),
                   typeName(L, -1));
-        std::size_t length = 0;
-        const char* text = lua_tolstring(L, -1, &length);
-        if (i == 1) {
-            if (length == 0)
-                raise(L, where, "rows[1]: must have at least one column");
-            if (length > static_cast<std::size_t>(kMaxCoordinate))
-                raise(L, where, "rows[1]: too long");
-            columns = length;
-        } else if (length != columns) {
-            raise(L, where, "rows[%d]: has %d columns, rows[1] has %d", static_cast<int>(i),
-                  static_cast<int>(length), static_cast<int>(columns));
-        }
-        for (std::size_t c = 0; c < length; ++c) {
-            if (classic && rampTile(text[c]))
-                raise(L, where,
-                      "rows[%d][%d]: the classic model has sharp boxes only: no ramps (tile "
-                      "column %d, row %d)",
-                      static_cast<int>(i), static_cast<int>(c + 1), static_cast<int>(c),
-                      static_cast<int>(i - 1));
-            if (isTileChar(text[c]))
-                continue;
-            // Copied out of the std::string (short: no allocation) before raising, which
-            // may longjmp past its destructor.
-            char got[16];
-            std::snprintf(got, sizeof got, "%s", describeChar(text[c]).c_str());
-            raise(L, where,
-                  "rows[%d][%d]: expected '#', '.' or a ramp, got %s (tile column %d, row %d)",
-                  static_cast<int>(i), static_cast<int>(c + 1), got, static_cast<int>(c),
-                  static_cast<int>(i - 1));
-        }
         lua_pop(L, 1);
     }
 }
@@ -115,7 +82,7 @@ int worldNewTileMap(lua_State* L) {
     if (lua_isnil(L, -1))
         raise(L, where, "missing field \"rows\"");
     const int rows = lua_gettop(L);
-    checkRows(L, rows, where, handle.data->world.solver() == Solver::Classic);
+    checkRows(L, rows, where);
     const std::size_t rowCount = rawLength(L, rows);
     luaL_checkstack(L, 4, "jostle: World:newTileMap");
 
@@ -142,10 +109,16 @@ int worldNewTileMap(lua_State* L) {
             def.rows.emplace_back(text, length);
             lua_pop(L, 1);
         }
-        if (auto problem = checkTileMapDef(def)) {
+        // createTileMap's checks, in its order, a problem of the rows told in Lua's
+        // counting (rows[1] is the first row, rows[1]:sub(1, 1) its first tile).
+        std::optional<FieldError> problem = checkTileMapDef(def);
+        if (problem && problem->field.starts_with("rows"))
+            problem = rowsProblem(def.rows, Notation::Lua);
+        if (!problem && handle.data->world.solver() == Solver::Classic)
+            problem = rampProblem(def.rows, Notation::Lua);
+        if (problem) {
             bad = true;
-            std::snprintf(message, kMessageSize, "%s: %s", problem->field.c_str(),
-                          problem->problem.c_str());
+            describe(message, *problem);
             return;
         }
         id = createTileMap(handle.data->world, def);

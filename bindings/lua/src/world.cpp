@@ -87,8 +87,7 @@ void requireValidWorldDef(lua_State* L, const WorldDef& def, const char* where) 
     const bool ran = attempt(message, [&] {
         if (auto problem = checkWorldDef(def)) {
             bad = true;
-            std::snprintf(message, kMessageSize, "%s: %s", problem->field.c_str(),
-                          problem->problem.c_str());
+            describe(message, *problem);
         }
     });
     if (!ran || bad)

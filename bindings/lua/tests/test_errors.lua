@@ -253,6 +253,50 @@ test("fixed step arguments", function()
   t.raises({"FixedStep:getAlpha", "expected a FixedStep as self"}, clock.getAlpha)
 end)
 
+-- The message of the error that fn(...) raises, without a caller's position in front.
+local function messageOf(fn, ...)
+  local ok, message = pcall(fn, ...)
+  t.equal(ok, false, "the call is refused")
+  return (tostring(message):gsub("^[^:]*:%d+: ", ""))
+end
+
+test("one rule, in Lua's words: did you mean, {0, 0}, rows counted from 1", function()
+  local world, _, box = newWorld()
+  -- An unknown field near a known one names it (src/suggest.hpp); one far from all does not.
+  t.equal(messageOf(world.newBody, world, {hw = 1, hh = 1, snapdown = 4}),
+    'World:newBody: unknown field "snapdown" (did you mean "snapDown"?)', "snapdown")
+  t.equal(messageOf(world.newBody, world, {hw = 1, hh = 1, foo = 4}),
+    'World:newBody: unknown field "foo"', "foo")
+  t.equal(messageOf(jostle.newWorld, {gravty = {0, 800}}),
+    'jostle.newWorld: unknown field "gravty" (did you mean "gravity"?)', "gravty")
+  t.equal(messageOf(jostle.newWorld, {physical = {Slop = 0.1}}),
+    'jostle.newWorld: physical: unknown field "Slop" (did you mean "slop"?)', "Slop")
+  t.equal(messageOf(world.newTileMap, world, {tiles = 16, rows = {"#"}}),
+    'World:newTileMap: unknown field "tiles" (did you mean "tile"?)', "tiles")
+  t.equal(messageOf(world.rayCast, world, 0, 0, 1, 1, {maks = 1}),
+    'World:rayCast: filter: unknown field "maks" (did you mean "mask"?)', "maks")
+  -- Vectors as Lua writes them: {0, -1}.
+  local oneWayRule = "must be {0, 0} or one of {1, 0}, {-1, 0}, {0, 1}, {0, -1}"
+  t.equal(messageOf(world.newBody, world, {hw = 1, hh = 1, oneWay = {1, 1}}),
+    "World:newBody: oneWay: " .. oneWayRule, "newBody's oneWay")
+  t.equal(messageOf(box.setOneWay, box, 1, 1), "Body:setOneWay: normal " .. oneWayRule, "setOneWay")
+  t.equal(messageOf(world.newTileMap, world, {tile = 16, rows = {"#"}, oneWay = {0, 2}}),
+    "World:newTileMap: oneWay: " .. oneWayRule, "newTileMap's oneWay")
+  -- Rows counted as Lua counts: rows[1] is the first; a tile's coordinates from 0.
+  t.equal(messageOf(world.newTileMap, world, {tile = 16, rows = {"#..#", "###"}}),
+    "World:newTileMap: rows[2]: has 3 columns, rows[1] has 4", "a ragged map")
+  t.equal(messageOf(world.newTileMap, world, {tile = 16, rows = {"", ""}}),
+    "World:newTileMap: rows[1]: must have at least one column", "an empty row")
+  t.equal(messageOf(world.newTileMap, world, {tile = 16, rows = {"##", "#{"}}),
+    "World:newTileMap: rows[2][2]: expected '#', '.' or a ramp, got '{' (tile column 1, row 1)",
+    "a character that is no tile's")
+  -- A definition's field as newBody takes it.
+  t.equal(messageOf(box.setWalkSpeed, box, 50),
+    "Body:setWalkSpeed: the body is not a character (a dynamic body with character = true)",
+    "walking a crate")
+  t.equal(world:getBodyCount(), 2, "nothing refused was made")
+end)
+
 test("error messages carry the caller's position", function()
   local world = jostle.newWorld()
   local ok, message = pcall(function() world:step(0) end)

@@ -53,7 +53,7 @@ test("the rules between the shape's fields, each named", function()
   refused({"World:newBody", "radius: must be >= 0"}, {hw = 5, hh = 5, radius = -1})
   refused({"World:newBody", "radius: expected a number, got string"},
     {hw = 5, hh = 5, radius = "round"})
-  refused({"World:newBody", "slope: must be [0, 0] or each component -1 or 1"},
+  refused({"World:newBody", "slope: must be {0, 0} or each component -1 or 1"},
     {type = "static", hw = 5, hh = 5, slope = {1, 0}})
   refused({"World:newBody", "slope"}, {type = "static", hw = 5, hh = 5, slope = {1}})
   refused({"World:newBody", "slope"}, {type = "static", hw = 5, hh = 5, slope = "up"})
@@ -65,7 +65,7 @@ test("the rules between the shape's fields, each named", function()
     segment = true})
   refused({"World:newBody", "segment: expected true or false"},
     {type = "static", hw = 5, hh = 5, slope = {-1, -1}, segment = 1})
-  refused({"World:newBody", "oneWay: must be [0, 0] for a rounded body, ramp or segment"},
+  refused({"World:newBody", "oneWay: must be {0, 0} for a rounded body, ramp or segment"},
     {hw = 5, hh = 5, radius = 5, oneWay = {0, -1}})
   t.equal(world:getBodyCount(), 0, "nothing made")
 end)

@@ -13,6 +13,7 @@
 // given again, and then names the new body (docs/web.md).
 #include "jostle/scene.hpp"
 #include "jostle/world.hpp"
+#include "notation.hpp"
 
 #include <emscripten/emscripten.h>
 #include <malloc.h>
@@ -115,15 +116,19 @@ std::string aboutTheDefinition(std::string_view message) {
     return std::string(message);
 }
 
-/// Runs `call`, turning an exception into `failed` and its message into the error.
+/// Runs `call`, turning an exception into `failed` and its message into the error: the
+/// C++ library's rules (jostle::Error) in JavaScript's notation (src/notation.hpp: [0, -1],
+/// "character: true"), the scene loader's (SceneError) as they are, in JSON's already.
 template <class Call, class Result> Result guarded(Call&& call, Result failed) {
     try {
         games().error.clear();
         return call();
+    } catch (const Error& error) {
+        games().error = inNotation(error.what(), Notation::JavaScript);
     } catch (const std::exception& error) {
         games().error = error.what();
-        return failed;
     }
+    return failed;
 }
 
 } // namespace
@@ -187,6 +192,8 @@ EMSCRIPTEN_KEEPALIVE int jostle_game_body_create(int world, const char* bodyJson
                     throw Error("expected one body definition, got " +
                                 std::to_string(scene.bodies.size()));
                 return giveNumber(game, addBodies(*game.world, scene).front());
+            } catch (const SceneError& error) {
+                throw SceneError(aboutTheDefinition(error.what()));
             } catch (const std::exception& error) {
                 throw Error(aboutTheDefinition(error.what()));
             }

@@ -3,10 +3,10 @@
 // is refused when it is the wrong kind, with a message that names the function and the
 // argument, before it can reach the module as some other value (a body number of
 // undefined or NaN read as body 0, 1.9 as body 1); the module's own errors name the
-// function and what the caller passed, not the scene the module wrapped it in; body
-// numbers are given again after destroy, so that a million bodies made and destroyed
-// leave boxes() listing the two live ones, the body numbers small and the module's heap
-// as it was.
+// function and what the caller passed, not the scene the module wrapped it in, in
+// JavaScript's notation and counting; body numbers are given again after destroy, so that
+// a million bodies made and destroyed leave boxes() listing the two live ones, the body
+// numbers small and the module's heap as it was.
 //   node js_api.js <page dir>
 "use strict";
 
@@ -163,6 +163,37 @@ function argumentChecks(jostle) {
   other.destroy();
 }
 
+/// One rule, in JavaScript's words (docs/reliability.md, "Misuse of the APIs"): an unknown
+/// field names the known one it was probably meant to be; vectors are arrays, [0, -1];
+/// rows count from 0 and are named by their place in the call's argument; a definition's
+/// field is written as the object passed would hold it ("character: true").
+function messages(jostle) {
+  const world = jostle.createWorld({gravity: [0, 800]});
+  const box = {x: 0, y: 0, hw: 1, hh: 1};
+  const crate = world.createBody(box);
+  refuses("createBody({snapdown: 4, ...})", () => world.createBody({...box, snapdown: 4}), "Error",
+          'createBody: unknown field "snapdown" (did you mean "snapDown"?)');
+  refuses("createBody({foo: 4, ...})", () => world.createBody({...box, foo: 4}), "Error",
+          'createBody: unknown field "foo"');
+  refuses("createWorld({gravty: [0, 1]})", () => jostle.createWorld({gravty: [0, 1]}), "Error",
+          'createWorld: unknown field "gravty" (did you mean "gravity"?)');
+  refuses("createWorld({tilemap: {tiles: 16, ...}})",
+          () => jostle.createWorld({tilemap: {tiles: 16, rows: ["#"]}}), "Error",
+          'createWorld: tilemap: unknown field "tiles" (did you mean "tile"?)');
+  refuses("createBody({oneWay: [1, 1], ...})", () => world.createBody({...box, oneWay: [1, 1]}), "Error",
+          "createBody: oneWay: must be [0, 0] or one of [1, 0], [-1, 0], [0, 1], [0, -1]");
+  refuses("createWorld with a ragged tile map",
+          () => jostle.createWorld({tilemap: {tile: 16, rows: ["#..#", "###"]}}), "Error",
+          "createWorld: tilemap.rows[1]: has 3 columns, rows[0] has 4");
+  refuses("createWorld with a tile that is no tile's",
+          () => jostle.createWorld({tilemaps: [{tile: 16, rows: ["#"]}, {tile: 16, rows: ["#{"]}]}), "Error",
+          "createWorld: tilemaps[1].rows[0][1]: expected '#', '.' or a ramp, got '{'");
+  refuses("setWalkSpeed(crate, 50), not a character", () => world.setWalkSpeed(crate, 50), "Error",
+          "setWalkSpeed: the body is not a character (a dynamic body with character: true)");
+  check(world.boxes().length === 1, "nothing refused reached the world");
+  world.destroy();
+}
+
 /// A destroyed body's number is refused until it is given again; createBody gives the
 /// smallest number no live body has; boxes() lists the live bodies in creation order.
 function numbersAfterDestroy(jostle) {
@@ -254,7 +285,7 @@ async function main() {
   }
   check(loadError === "TypeError: Jostle.load: options must be an object, got null",
         `Jostle.load(null) is refused: ${loadError}`);
-  for (const part of [argumentChecks, numbersAfterDestroy, churn, conveyor]) {
+  for (const part of [argumentChecks, messages, numbersAfterDestroy, churn, conveyor]) {
     try {
       part(jostle);
     } catch (error) {
