@@ -344,6 +344,37 @@ TEST_F(Render, GifHasAFrameForStepZeroAndEveryKthStep) {
     EXPECT_EQ(gif.frames, 4); // steps 0, 3, 6, 9: floor(10 / 3) + 1
 }
 
+// Each frame after the first holds only the rectangle that changed (drawn over the frame
+// before): the tutorial's boxes falling change a part of the picture, a static scene
+// nothing, which is one pixel.
+TEST_F(Render, GifFramesHoldWhatChanged) {
+    const std::string still = write("box.json", kOneBox);
+    const std::string falling = std::string(JOSTLE_SCENES_DIR) + "/tutorial.json";
+    for (const std::string& scene : {still, falling}) {
+        SCOPED_TRACE(scene);
+        ASSERT_EQ(render(scene + " --out " + path("delta.gif") + " --steps 4 --every 2").status, 0);
+        int error = 0;
+        GifFileType* file = DGifOpenFileName(path("delta.gif").c_str(), &error);
+        ASSERT_NE(file, nullptr) << GifErrorString(error);
+        ASSERT_NE(DGifSlurp(file), GIF_ERROR);
+        ASSERT_EQ(file->ImageCount, 3);
+        const GifImageDesc& first = file->SavedImages[0].ImageDesc;
+        EXPECT_EQ(first.Width, file->SWidth);
+        EXPECT_EQ(first.Height, file->SHeight);
+        for (int i = 1; i < 3; ++i) {
+            const GifImageDesc& desc = file->SavedImages[i].ImageDesc;
+            if (scene == still) {
+                EXPECT_EQ(desc.Width, 1);
+                EXPECT_EQ(desc.Height, 1);
+            } else {
+                EXPECT_GT(desc.Width * desc.Height, 1);
+                EXPECT_LT(desc.Width * desc.Height, file->SWidth * file->SHeight);
+            }
+        }
+        DGifCloseFile(file, &error);
+    }
+}
+
 TEST_F(Render, ExampleSceneMakesAGifOfTheDefaultWidth) {
     const Result result = render(std::string(JOSTLE_SCENES_DIR) + "/tutorial.json --out " +
                                  path("tutorial.GIF") + " --steps 8");
