@@ -6,14 +6,17 @@
 # picture: after a change to the simulation or the drawing, run this and commit docs/.
 #
 #   scripts/pictures.sh                     set up, build (build/), draw them into docs/
+#   scripts/pictures.sh --web               the same, then docs/web.png too (below)
 #   scripts/pictures.sh --redraw DIR BUILD render|demo
 #                                           the tests' way: draw one group into DIR/docs/
 #                                           with the programs in BUILD; nothing is set up
 #                                           or built
 #
-# Not drawn here: docs/web.png, the web page in headless Chromium, is saved by the test
-# web_browser_session (build/bindings/web/tests/screenshots/tutorial.png), and
-# docs/benchmarks.png is plotted by scripts/plot-bench.sh.
+# docs/web.png is the web page in headless Chromium, saved by the test web_browser_session
+# (it builds the module with emscripten first: minutes) after a second and a half of real
+# time, with the step time in its header, so no test can compare it pixel for pixel; --web
+# runs that test and copies its screenshot. docs/benchmarks.png is plotted by
+# scripts/plot-bench.sh.
 set -euo pipefail
 
 # `jostle render`, with the key to its colours (--legend).
@@ -51,6 +54,12 @@ if [ "${1:-}" = "--redraw" ]; then
   exit 0
 fi
 
+web=0
+case "${1:-}" in
+  "") ;;
+  --web) web=1 ;;
+  *) echo "usage: scripts/pictures.sh [--web] | --redraw DIR BUILD render|demo" >&2; exit 2 ;;
+esac
 cd "$(dirname "$0")/.."
 scripts/setup.sh
 scripts/build.sh
@@ -59,5 +68,15 @@ if [ -x build/demo/jostle-demo ]; then
   demo_pictures
 else
   echo "pictures: jostle-demo is not built (SDL2 missing?): its screenshots are left as they were" >&2
+fi
+if [ "$web" = 1 ]; then
+  shot=build/bindings/web/tests/screenshots/tutorial.png
+  rm -f "$shot"
+  ctest --test-dir build -R '^web_browser_session$' --output-on-failure
+  if [ -f "$shot" ]; then
+    cp "$shot" docs/web.png
+  else
+    echo "pictures: web_browser_session saved no screenshot (skipped?): docs/web.png is left as it was" >&2
+  fi
 fi
 echo "pictures: drew docs/ again; see what changed (git status docs/), look at it, commit it"
