@@ -24,8 +24,7 @@ bool canWritePng() {
     return JOSTLE_DEMO_PNG != 0;
 }
 
-std::string saveScreenshot(SDL_Renderer* renderer, int width, int height,
-                           const std::string& path) {
+std::string saveScreenshot(SDL_Renderer* renderer, int width, int height, const std::string& path) {
     if (isPngName(path)) {
 #if JOSTLE_DEMO_PNG
         // Three bytes a pixel, red first: what a PNG of RGB rows holds.

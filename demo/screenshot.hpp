@@ -16,7 +16,6 @@ bool canWritePng();
 
 /// Saves what `renderer` has drawn, width × height pixels from the top left, to `path`:
 /// a PNG when isPngName(path), else a BMP. Returns an empty string, or what went wrong.
-std::string saveScreenshot(SDL_Renderer* renderer, int width, int height,
-                           const std::string& path);
+std::string saveScreenshot(SDL_Renderer* renderer, int width, int height, const std::string& path);
 
 } // namespace jostle::demo

@@ -26,8 +26,8 @@ namespace {
 struct Frame {
     int width = 0;
     int height = 0;
-    std::vector<std::uint8_t> rgb;  ///< 3 bytes a pixel, row after row
-    int delay = -1;                 ///< a GIF frame's delay in centiseconds; -1 in a PNG
+    std::vector<std::uint8_t> rgb; ///< 3 bytes a pixel, row after row
+    int delay = -1;                ///< a GIF frame's delay in centiseconds; -1 in a PNG
 
     std::uint32_t at(int x, int y) const {
         const std::size_t i = 3 * (static_cast<std::size_t>(y) * static_cast<std::size_t>(width) +
@@ -105,7 +105,8 @@ Picture readGif(const std::string& path) {
         std::array<GifColorType, 256> colours{};
         std::array<bool, 256> known{};
         for (int index = 0; index < 256; ++index)
-            if (const auto colour = colourOf(map, index); colour && index != control.TransparentColor) {
+            if (const auto colour = colourOf(map, index);
+                colour && index != control.TransparentColor) {
                 colours[static_cast<std::size_t>(index)] = *colour;
                 known[static_cast<std::size_t>(index)] = true;
             }
@@ -138,9 +139,9 @@ Picture readGif(const std::string& path) {
             const auto background = colourOf(gif->SColorMap, gif->SBackGroundColor);
             for (int y = desc.Top; y < std::min(desc.Top + desc.Height, height); ++y)
                 for (int x = desc.Left; x < std::min(desc.Left + desc.Width, width); ++x) {
-                    const std::size_t i = 3 * (static_cast<std::size_t>(y) *
-                                                   static_cast<std::size_t>(width) +
-                                               static_cast<std::size_t>(x));
+                    const std::size_t i =
+                        3 * (static_cast<std::size_t>(y) * static_cast<std::size_t>(width) +
+                             static_cast<std::size_t>(x));
                     screen[i] = background ? background->Red : 0;
                     screen[i + 1] = background ? background->Green : 0;
                     screen[i + 2] = background ? background->Blue : 0;
@@ -174,8 +175,8 @@ std::string difference(const Frame& committed, const Frame& redrawn) {
     if (committed.rgb == redrawn.rgb)
         return committed.delay == redrawn.delay
                    ? std::string()
-                   : "it is shown for " + std::to_string(committed.delay) +
-                         " cs, drawn now for " + std::to_string(redrawn.delay) + " cs";
+                   : "it is shown for " + std::to_string(committed.delay) + " cs, drawn now for " +
+                         std::to_string(redrawn.delay) + " cs";
     for (int y = 0; y < committed.height; ++y)
         for (int x = 0; x < committed.width; ++x)
             if (committed.at(x, y) != redrawn.at(x, y)) {
@@ -187,8 +188,8 @@ std::string difference(const Frame& committed, const Frame& redrawn) {
                                  ? 0
                                  : 1;
                 return std::to_string(count) + " pixels differ, the first at (" +
-                       std::to_string(x) + ", " + std::to_string(y) + "): " +
-                       hex(committed.at(x, y)) + " in the file, " + hex(redrawn.at(x, y)) +
+                       std::to_string(x) + ", " + std::to_string(y) +
+                       "): " + hex(committed.at(x, y)) + " in the file, " + hex(redrawn.at(x, y)) +
                        " drawn now";
             }
     return {}; // not reached: the pixels differ somewhere

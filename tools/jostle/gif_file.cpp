@@ -139,8 +139,8 @@ std::string GifWriter::addFrame(const Canvas& canvas, int delayCentiseconds) {
         return failure(gif_->Error);
     std::vector<GifPixelType> line;
     for (int y = y0; y < y1; ++y) {
-        const auto row = canvas.row(y).subspan(static_cast<std::size_t>(x0),
-                                               static_cast<std::size_t>(x1 - x0));
+        const auto row =
+            canvas.row(y).subspan(static_cast<std::size_t>(x0), static_cast<std::size_t>(x1 - x0));
         line.assign(row.begin(), row.end()); // giflib wants a writable line
         if (EGifPutLine(gif_, line.data(), x1 - x0) == GIF_ERROR)
             return failure(gif_->Error);

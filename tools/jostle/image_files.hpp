@@ -47,7 +47,7 @@ private:
 
     std::FILE* file_ = nullptr;
     GifFileType* gif_ = nullptr;
-    int error_ = 0; ///< the errno of the first write that failed, or 0
+    int error_ = 0;                  ///< the errno of the first write that failed, or 0
     std::vector<std::uint8_t> last_; ///< the last frame's pixels, row after row; none yet
 };
 

@@ -98,13 +98,14 @@ std::vector<LegendEntry> legendEntries(const World& world) {
     for (int type = 0; type < 3; ++type)
         if (types[static_cast<std::size_t>(type)]) {
             const std::uint8_t fill = fillIndex(static_cast<BodyType>(type), false);
-            entries.push_back(
-                {fill, static_cast<std::uint8_t>(fill + 1), kWords[static_cast<std::size_t>(type)]});
+            entries.push_back({fill, static_cast<std::uint8_t>(fill + 1),
+                               kWords[static_cast<std::size_t>(type)]});
         }
     const bool dynamic = types[static_cast<std::size_t>(BodyType::Dynamic)];
     if ((dynamic || types[static_cast<std::size_t>(BodyType::Kinematic)]) &&
         world.solver() == Solver::Physical && world.sleeping()) {
-        const std::uint8_t fill = fillIndex(dynamic ? BodyType::Dynamic : BodyType::Kinematic, true);
+        const std::uint8_t fill =
+            fillIndex(dynamic ? BodyType::Dynamic : BodyType::Kinematic, true);
         entries.push_back({fill, static_cast<std::uint8_t>(fill + 1), "asleep"});
     }
     if (sensorType)
@@ -232,8 +233,7 @@ int render(const RenderOptions& options) {
     int height = 0;
     imageSize(options, view, width, height);
     const Camera camera(view, width, height);
-    const Legend legend(options.legend ? legendEntries(world) : std::vector<LegendEntry>{},
-                        width);
+    const Legend legend(options.legend ? legendEntries(world) : std::vector<LegendEntry>{}, width);
     const int sceneHeight = height;
     height += legend.height();
     Canvas canvas(width, height);
