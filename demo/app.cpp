@@ -8,6 +8,7 @@
 #include "mouse_drag.hpp"
 #include "palette.hpp"
 #include "sample_list.hpp"
+#include "screenshot.hpp"
 
 #include "jostle/fixed_step.hpp"
 
@@ -56,6 +57,9 @@ struct State {
     std::array<bool, SDL_NUM_SCANCODES> held{};
     MouseDrag drag;
     double stepMs = 0.0;
+    /// Whether the header shows the step time: not in a counted run (--frames), whose
+    /// frames, screenshots included, are then the same every time.
+    bool showStepTime = true;
     /// Steps of the current sample, since it was (re)started, after which a kinematic
     /// body overlapped a static one: a lift whose shaft a level's walls cross (--report).
     std::size_t kinematicInStaticSteps = 0;
@@ -261,10 +265,13 @@ void drawHeader(SDL_Renderer* renderer, State& state) {
         bodies += pane.world->bodyCount();
         models += (models.empty() ? "" : " | ") + std::string(toString(pane.world->solver()));
     }
-    char stepText[32];
-    std::snprintf(stepText, sizeof stepText, "%.2f", state.stepMs);
-    std::string stats = "bodies " + std::to_string(bodies) + "   step " + stepText +
-                        " ms   model " + models + "   60 hz";
+    std::string stats = "bodies " + std::to_string(bodies) + "   ";
+    if (state.showStepTime) {
+        char stepText[32];
+        std::snprintf(stepText, sizeof stepText, "%.2f", state.stepMs);
+        stats += "step " + std::string(stepText) + " ms   ";
+    }
+    stats += "model " + models + "   60 hz";
     if (state.paused)
         stats += "   paused";
     if (state.slow)
@@ -330,18 +337,6 @@ void printReport(State& state) {
     std::fflush(stdout);
 }
 
-bool saveScreenshot(SDL_Renderer* renderer, const std::string& path) {
-    SDL_Surface* surface = SDL_CreateRGBSurfaceWithFormat(0, kWindowWidth, kWindowHeight, 32,
-                                                          SDL_PIXELFORMAT_ARGB8888);
-    if (surface == nullptr)
-        return false;
-    const bool saved = SDL_RenderReadPixels(renderer, nullptr, SDL_PIXELFORMAT_ARGB8888,
-                                            surface->pixels, surface->pitch) == 0 &&
-                       SDL_SaveBMP(surface, path.c_str()) == 0;
-    SDL_FreeSurface(surface);
-    return saved;
-}
-
 } // namespace
 
 int probeDisplay() {
@@ -385,6 +380,7 @@ int runApp(const Options& options) {
 
     State state;
     state.samples = makeSamples();
+    state.showStepTime = options.frames == 0;
     select(state, static_cast<std::size_t>(options.sample - 1), window);
     FixedStep clock(1.0f / kStepHz);
     Uint64 last = SDL_GetPerformanceCounter();
@@ -407,11 +403,14 @@ int runApp(const Options& options) {
 
         drawFrame(renderer, state);
         const bool lastFrame = options.frames > 0 && frame >= options.frames;
-        if (lastFrame && !options.screenshot.empty() &&
-            !saveScreenshot(renderer, options.screenshot)) {
-            std::fprintf(stderr, "jostle-demo: cannot save %s: %s\n", options.screenshot.c_str(),
-                         SDL_GetError());
-            status = 1;
+        if (lastFrame && !options.screenshot.empty()) {
+            const std::string error =
+                saveScreenshot(renderer, kWindowWidth, kWindowHeight, options.screenshot);
+            if (!error.empty()) {
+                std::fprintf(stderr, "jostle-demo: cannot save %s: %s\n",
+                             options.screenshot.c_str(), error.c_str());
+                status = 1;
+            }
         }
         SDL_RenderPresent(renderer);
         if (lastFrame)

@@ -1,6 +1,8 @@
-// A tiny bitmap font, because SDL2 draws no text: 5 × 7 glyphs for digits, capital
-// letters (small ones are drawn as capitals) and a few symbols, each pixel a filled square.
+// The demo's text, because SDL2 draws none: the shared bitmap font (shared/glyphs.hpp,
+// which `jostle render`'s key uses too), each font pixel a filled square.
 #pragma once
+
+#include "shared/glyphs.hpp"
 
 #include <SDL.h>
 
@@ -9,9 +11,9 @@
 namespace jostle::demo {
 
 /// Glyph size in font pixels, and the advance from one character to the next.
-constexpr int kGlyphWidth = 5;
-constexpr int kGlyphHeight = 7;
-constexpr int kGlyphAdvance = 6;
+using shared::kGlyphAdvance;
+using shared::kGlyphHeight;
+using shared::kGlyphWidth;
 
 /// Draws `text` with its top-left corner at (x, y), each font pixel `scale` screen pixels
 /// wide, in the renderer's current colour. Characters without a glyph are drawn as '?'.

@@ -1,6 +1,8 @@
 // Parsing the command line: see options.hpp.
 #include "options.hpp"
 
+#include "screenshot.hpp"
+
 #include <CLI/CLI.hpp>
 
 namespace jostle::demo {
@@ -14,7 +16,13 @@ std::optional<Options> parseOptions(int argc, char** argv, int& exitCode) {
                    "run this many frames (each counted as 1/60 s) and exit")
         ->check(CLI::Range(1, 1000000));
     app.add_option("--screenshot", options.screenshot,
-                   "save the last frame to this BMP file before exiting");
+                   "with --frames, save the last frame to this file before exiting: a PNG "
+                   "if its name ends in .png, else a BMP")
+        ->check([](const std::string& path) {
+            return isPngName(path) && !canWritePng()
+                       ? std::string("this jostle-demo was built without libpng: save a .bmp")
+                       : std::string();
+        });
     app.add_option("--input", options.input,
                    "play keyboard and mouse events by frame: a file, or the script itself");
     app.add_flag("--report", options.report,

@@ -11,7 +11,8 @@ struct Options {
     /// Run this many frames, then exit (0: until the window is closed). Frames then count
     /// as 1/60 s each, whatever they really take, so that a run is the same every time.
     int frames = 0;
-    /// Where to save the last frame as a BMP before exiting (empty: nowhere).
+    /// Where to save the last frame before exiting, a PNG or a BMP by its name (empty:
+    /// nowhere).
     std::string screenshot;
     /// Keyboard and mouse events by frame (--input): a file's name, or the script itself.
     std::string input;

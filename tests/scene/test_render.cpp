@@ -41,6 +41,9 @@ constexpr Rgb kStaticOutline{90, 90, 90};
 constexpr Rgb kDynamic{240, 150, 60};
 constexpr Rgb kDynamicOutline{144, 90, 36};
 constexpr Rgb kKinematicSensor{70, 130, 230};
+constexpr Rgb kDynamicAsleep{132, 82, 33}; // 55%
+constexpr Rgb kLegendLine{60, 64, 76};
+constexpr Rgb kLegendText{230, 230, 230};
 
 /// A PNG read back as RGB.
 struct Png {
@@ -157,6 +160,63 @@ TEST_F(Render, YGrowsDownwardAndEachTypeHasItsColour) {
     EXPECT_EQ(png.at(7, 77), kKinematicSensor); // the sensor's left edge, x = -15
     EXPECT_EQ(png.at(37, 7), kKinematicSensor); // its top edge, y = -15
     EXPECT_EQ(png.at(6, 77), kBackground);
+}
+
+// --legend: the key in a band under the scene (docs/scene-format.md). The lone box at 110
+// pixels wide, as above: its one entry, "static", takes 5 + 7 + 3 + 6 × 6 - 1 + 5 = 55
+// font pixels with the margins, so it is drawn twice as large, 10 pixels in from the
+// left. The band is a line (row 110), a margin of 10, the swatch's 14 rows and a margin
+// of 10: 35 rows, so the image is 145 high and the scene above it as without a key.
+TEST_F(Render, LegendAddsAKeyUnderTheScene) {
+    const std::string scene = write("box.json", kOneBox);
+    const Result result = render(scene + " --out " + path("key.png") +
+                                 " --width 110 --height 110 --steps 3 --legend");
+    ASSERT_EQ(result.status, 0) << result.err;
+    const Png png = readPng(path("key.png"));
+    ASSERT_EQ(png.width, 110);
+    ASSERT_EQ(png.height, 145);
+    EXPECT_EQ(png.at(55, 55), kStatic); // the scene, as in PngOfOneBox... above
+    EXPECT_EQ(png.at(55, 104), kStaticOutline);
+    EXPECT_EQ(png.at(55, 105), kBackground);
+    EXPECT_EQ(png.at(0, 110), kLegendLine); // the line across the top of the band
+    EXPECT_EQ(png.at(109, 110), kLegendLine);
+    EXPECT_EQ(png.at(10, 121), kStaticOutline); // the swatch: columns 10-23, rows 121-134
+    EXPECT_EQ(png.at(23, 134), kStaticOutline);
+    EXPECT_EQ(png.at(16, 128), kStatic);
+    EXPECT_EQ(png.at(9, 128), kBackground);
+    // "STATIC" from x 24 + 6: the S's top row is its 4 right pixels, 2 × 2 each.
+    EXPECT_EQ(png.at(30, 121), kBackground);
+    EXPECT_EQ(png.at(32, 121), kLegendText);
+    EXPECT_EQ(png.at(39, 122), kLegendText);
+    EXPECT_EQ(png.at(55, 140), kBackground); // the bottom margin
+}
+
+// What the key lists: each body type the scene has, "asleep" where bodies can fall asleep
+// (the physical model with sleeping on), and sensors. In the stack above at 74 pixels
+// wide, the font's own size: four entries a row each (static, dynamic, asleep, sensor;
+// the only kinematic body is a sensor), 1 + 5 + 4 × 7 + 3 × 4 + 5 = 51 rows; the classic
+// model has no "asleep": three rows, 1 + 5 + 3 × 7 + 2 × 4 + 5 = 40.
+TEST_F(Render, LegendListsWhatTheSceneHas) {
+    const std::string scene = write("stack.json", kStack);
+    for (const char* solver : {"physical", "classic"}) {
+        SCOPED_TRACE(solver);
+        const std::string out = path(std::string(solver) + ".png");
+        const Result result = render(scene + " --out " + out + " --width 74 --steps 0 --legend" +
+                                     " --solver " + solver);
+        ASSERT_EQ(result.status, 0) << result.err;
+        const Png png = readPng(out);
+        const bool physical = std::string(solver) == "physical";
+        ASSERT_EQ(png.height, 154 + (physical ? 51 : 40));
+        // The swatches, 7 × 7 from x 5, rows 11 apart from row 154 + 1 + 5 = 160.
+        EXPECT_EQ(png.at(8, 163), kStatic);
+        EXPECT_EQ(png.at(8, 174), kDynamic);
+        if (physical) {
+            EXPECT_EQ(png.at(8, 185), kDynamicAsleep);
+        }
+        const int sensorRow = physical ? 196 : 185;
+        EXPECT_EQ(png.at(5, sensorRow), kKinematicSensor); // outlined only
+        EXPECT_EQ(png.at(8, sensorRow), kBackground);
+    }
 }
 
 // A circle, a ramp and a segment, 20 × 20 each, side by side, no gravity. The bounds are
@@ -282,6 +342,37 @@ TEST_F(Render, GifHasAFrameForStepZeroAndEveryKthStep) {
     EXPECT_EQ(gif.width, 64);
     EXPECT_EQ(gif.height, 48);
     EXPECT_EQ(gif.frames, 4); // steps 0, 3, 6, 9: floor(10 / 3) + 1
+}
+
+// Each frame after the first holds only the rectangle that changed (drawn over the frame
+// before): the tutorial's boxes falling change a part of the picture, a static scene
+// nothing, which is one pixel.
+TEST_F(Render, GifFramesHoldWhatChanged) {
+    const std::string still = write("box.json", kOneBox);
+    const std::string falling = std::string(JOSTLE_SCENES_DIR) + "/tutorial.json";
+    for (const std::string& scene : {still, falling}) {
+        SCOPED_TRACE(scene);
+        ASSERT_EQ(render(scene + " --out " + path("delta.gif") + " --steps 4 --every 2").status, 0);
+        int error = 0;
+        GifFileType* file = DGifOpenFileName(path("delta.gif").c_str(), &error);
+        ASSERT_NE(file, nullptr) << GifErrorString(error);
+        ASSERT_NE(DGifSlurp(file), GIF_ERROR);
+        ASSERT_EQ(file->ImageCount, 3);
+        const GifImageDesc& first = file->SavedImages[0].ImageDesc;
+        EXPECT_EQ(first.Width, file->SWidth);
+        EXPECT_EQ(first.Height, file->SHeight);
+        for (int i = 1; i < 3; ++i) {
+            const GifImageDesc& desc = file->SavedImages[i].ImageDesc;
+            if (scene == still) {
+                EXPECT_EQ(desc.Width, 1);
+                EXPECT_EQ(desc.Height, 1);
+            } else {
+                EXPECT_GT(desc.Width * desc.Height, 1);
+                EXPECT_LT(desc.Width * desc.Height, file->SWidth * file->SHeight);
+            }
+        }
+        DGifCloseFile(file, &error);
+    }
 }
 
 TEST_F(Render, ExampleSceneMakesAGifOfTheDefaultWidth) {

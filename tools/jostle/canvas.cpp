@@ -1,5 +1,7 @@
-// Filling and outlining clipped rectangles: see canvas.hpp.
+// Filling and outlining clipped rectangles, lines and text: see canvas.hpp.
 #include "canvas.hpp"
+
+#include "shared/glyphs.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -53,6 +55,21 @@ void Canvas::line(float fromX, float fromY, float toX, float toY, std::uint8_t v
         if (x >= 0 && y >= 0 && x < width_ && y < height_)
             pixels_[index(static_cast<int>(x), static_cast<int>(y))] = value;
     }
+}
+
+int Canvas::text(int x, int y, int scale, std::string_view text, std::uint8_t value) {
+    for (const char c : text) {
+        const shared::GlyphRows& rows = shared::glyphRows(c);
+        for (int row = 0; row < shared::kGlyphHeight; ++row)
+            for (int column = 0; column < shared::kGlyphWidth; ++column)
+                if (shared::glyphPixel(rows, column, row)) {
+                    const int left = x + column * scale;
+                    const int top = y + row * scale;
+                    fill({left, top, left + scale, top + scale}, value);
+                }
+        x += shared::kGlyphAdvance * scale;
+    }
+    return x;
 }
 
 } // namespace jostle::cli

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <optional>
 #include <span>
+#include <string_view>
 #include <vector>
 
 namespace jostle::cli {
@@ -51,6 +52,10 @@ public:
     /// [x, x + 1) × [y, y + 1)): the pixel under each of evenly spaced points, one a pixel
     /// along its longer axis, both ends included.
     void line(float fromX, float fromY, float toX, float toY, std::uint8_t index);
+    /// `text` in the shared bitmap font (shared/glyphs.hpp: small letters as capitals),
+    /// its top left at (x, y), each font pixel a `scale` × `scale` square; clipped.
+    /// Returns the x where the next character would go.
+    int text(int x, int y, int scale, std::string_view text, std::uint8_t index);
 
     std::uint8_t at(int x, int y) const { return pixels_[index(x, y)]; }
     /// Row y, left to right.

@@ -5,6 +5,7 @@
 
 #include <gif_lib.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdio>
 #include <vector>
@@ -90,6 +91,42 @@ std::string GifWriter::open(const std::string& path, int width, int height,
 }
 
 std::string GifWriter::addFrame(const Canvas& canvas, int delayCentiseconds) {
+    // Only the rectangle that changed since the last frame (all of the first), drawn over
+    // what that frame left (DISPOSE_DO_NOT): what is shown is the whole canvas, in a file
+    // a fraction of the size. A frame like the last is one pixel.
+    int x0 = 0;
+    int y0 = 0;
+    int x1 = canvas.width();
+    int y1 = canvas.height();
+    if (!last_.empty()) {
+        x0 = canvas.width();
+        y0 = canvas.height();
+        x1 = 0;
+        y1 = 0;
+        for (int y = 0; y < canvas.height(); ++y) {
+            const auto row = canvas.row(y);
+            const auto* before = last_.data() + static_cast<std::size_t>(y) * row.size();
+            for (int x = 0; x < canvas.width(); ++x)
+                if (row[static_cast<std::size_t>(x)] != before[x]) {
+                    x0 = std::min(x0, x);
+                    x1 = std::max(x1, x + 1);
+                    y0 = std::min(y0, y);
+                    y1 = y + 1;
+                }
+        }
+        if (x1 == 0) {
+            x0 = 0;
+            y0 = 0;
+            x1 = 1;
+            y1 = 1;
+        }
+    }
+    last_.clear();
+    for (int y = 0; y < canvas.height(); ++y) {
+        const auto row = canvas.row(y);
+        last_.insert(last_.end(), row.begin(), row.end());
+    }
+
     GraphicsControlBlock control{};
     control.DisposalMode = DISPOSE_DO_NOT;
     control.DelayTime = delayCentiseconds;
@@ -98,13 +135,14 @@ std::string GifWriter::addFrame(const Canvas& canvas, int delayCentiseconds) {
     const auto length = EGifGCBToExtension(&control, extension);
     if (EGifPutExtension(gif_, GRAPHICS_EXT_FUNC_CODE, static_cast<int>(length), extension) ==
             GIF_ERROR ||
-        EGifPutImageDesc(gif_, 0, 0, canvas.width(), canvas.height(), false, nullptr) == GIF_ERROR)
+        EGifPutImageDesc(gif_, x0, y0, x1 - x0, y1 - y0, false, nullptr) == GIF_ERROR)
         return failure(gif_->Error);
-    std::vector<GifPixelType> line(static_cast<std::size_t>(canvas.width()));
-    for (int y = 0; y < canvas.height(); ++y) {
-        const auto row = canvas.row(y);
+    std::vector<GifPixelType> line;
+    for (int y = y0; y < y1; ++y) {
+        const auto row =
+            canvas.row(y).subspan(static_cast<std::size_t>(x0), static_cast<std::size_t>(x1 - x0));
         line.assign(row.begin(), row.end()); // giflib wants a writable line
-        if (EGifPutLine(gif_, line.data(), canvas.width()) == GIF_ERROR)
+        if (EGifPutLine(gif_, line.data(), x1 - x0) == GIF_ERROR)
             return failure(gif_->Error);
     }
     return {};

@@ -5,9 +5,11 @@
 
 #include "canvas.hpp"
 
+#include <cstdint>
 #include <cstdio>
 #include <span>
 #include <string>
+#include <vector>
 
 struct GifFileType; // giflib's, kept out of the header
 
@@ -29,7 +31,8 @@ public:
     /// Returns an empty string, or what went wrong (the errno's words for a file or a
     /// write that failed, as below).
     std::string open(const std::string& path, int width, int height, std::span<const Rgb> palette);
-    /// Appends a frame shown for `delayCentiseconds`.
+    /// Appends a frame shown for `delayCentiseconds`: the canvas as it is, written as the
+    /// rectangle of pixels that differ from the frame before.
     std::string addFrame(const Canvas& canvas, int delayCentiseconds);
     /// Writes the trailer and closes the file; the reason of the first write that failed,
     /// if one did.
@@ -44,7 +47,8 @@ private:
 
     std::FILE* file_ = nullptr;
     GifFileType* gif_ = nullptr;
-    int error_ = 0; ///< the errno of the first write that failed, or 0
+    int error_ = 0;                  ///< the errno of the first write that failed, or 0
+    std::vector<std::uint8_t> last_; ///< the last frame's pixels, row after row; none yet
 };
 
 } // namespace jostle::cli

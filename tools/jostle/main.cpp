@@ -2,7 +2,7 @@
 //
 //     jostle run SCENE --steps N [--trace FILE|-] [--every K] [--solver MODEL]
 //     jostle render SCENE --out FILE.gif|FILE.png [--steps N] [--width W] [--height H]
-//                   [--every K] [--solver MODEL]
+//                   [--every K] [--solver MODEL] [--legend]
 //
 // Exit status: 0 when all went well; 2 for bad input (options, scene file, a value the
 // world refuses); 1 when the output cannot be written or something unexpected fails.
@@ -278,6 +278,9 @@ int main(int argc, char** argv) {
         ->capture_default_str()
         ->check(atLeast(1));
     addSolverOption(*renderCommand, renderOptions.solver);
+    renderCommand->add_flag("--legend", renderOptions.legend,
+                            "Draw a key to the colours in a band under the scene (the image "
+                            "grows by its height)");
 
     const auto badUsage = [](const std::string& message, const char* command) {
         printError(message);

@@ -6,6 +6,7 @@
 #include "canvas.hpp"
 #include "errors.hpp"
 #include "image_files.hpp"
+#include "legend.hpp"
 #include "load_scene.hpp"
 #include "progress.hpp"
 
@@ -36,7 +37,8 @@ bool endsWith(const std::string& text, const std::string& suffix) {
 }
 
 // The palette: the background, then for each body type (static, kinematic, dynamic, as
-// BodyType numbers them) its fill and outline awake, and its fill and outline asleep.
+// BodyType numbers them) its fill and outline awake, and its fill and outline asleep; then
+// the key's words and the line above it (--legend).
 constexpr Rgb kBackground{24, 26, 33};
 constexpr std::array<Rgb, 3> kTypeColours{{
     {150, 150, 150}, // static: grey
@@ -56,6 +58,12 @@ Rgb scaled(Rgb colour, int percent) {
 constexpr int kOutlinePercent = 60;
 constexpr int kSleepingPercent = 55;
 
+// The key's words, and the line between it and the scene: the demo's text and pane border
+// (demo/palette.hpp).
+constexpr Rgb kLegendText{230, 230, 230};
+constexpr Rgb kLegendLine{60, 64, 76};
+constexpr LegendColours kLegendColours{0, 13, 14};
+
 std::vector<Rgb> makePalette() {
     std::vector<Rgb> palette{kBackground};
     for (Rgb colour : kTypeColours)
@@ -63,11 +71,46 @@ std::vector<Rgb> makePalette() {
             palette.push_back(scaled(colour, percent));
             palette.push_back(scaled(colour, percent * kOutlinePercent / 100));
         }
+    palette.push_back(kLegendLine); // 13
+    palette.push_back(kLegendText); // 14
     return palette;
 }
 
 std::uint8_t fillIndex(BodyType type, bool sleeping) {
     return static_cast<std::uint8_t>(1 + 4 * static_cast<int>(type) + (sleeping ? 2 : 0));
+}
+
+/// The key to what the scene shows at the start: each body type it has, sleeping where
+/// bodies can fall asleep (the physical model with sleeping on), and sensors, outlined in
+/// the colour of the first one's type.
+std::vector<LegendEntry> legendEntries(const World& world) {
+    std::array<bool, 3> types{};
+    std::optional<BodyType> sensorType;
+    for (BodyId body : world.bodies()) {
+        const BodyType type = world.type(body);
+        if (!world.isSensor(body))
+            types[static_cast<std::size_t>(type)] = true;
+        else if (!sensorType)
+            sensorType = type;
+    }
+    static constexpr std::array<const char*, 3> kWords{"static", "kinematic", "dynamic"};
+    std::vector<LegendEntry> entries;
+    for (int type = 0; type < 3; ++type)
+        if (types[static_cast<std::size_t>(type)]) {
+            const std::uint8_t fill = fillIndex(static_cast<BodyType>(type), false);
+            entries.push_back({fill, static_cast<std::uint8_t>(fill + 1),
+                               kWords[static_cast<std::size_t>(type)]});
+        }
+    const bool dynamic = types[static_cast<std::size_t>(BodyType::Dynamic)];
+    if ((dynamic || types[static_cast<std::size_t>(BodyType::Kinematic)]) &&
+        world.solver() == Solver::Physical && world.sleeping()) {
+        const std::uint8_t fill =
+            fillIndex(dynamic ? BodyType::Dynamic : BodyType::Kinematic, true);
+        entries.push_back({fill, static_cast<std::uint8_t>(fill + 1), "asleep"});
+    }
+    if (sensorType)
+        entries.push_back({std::nullopt, fillIndex(*sensorType, false), "sensor"});
+    return entries;
 }
 
 WorldBox boxOf(const World& world, BodyId body) {
@@ -190,8 +233,15 @@ int render(const RenderOptions& options) {
     int height = 0;
     imageSize(options, view, width, height);
     const Camera camera(view, width, height);
+    const Legend legend(options.legend ? legendEntries(world) : std::vector<LegendEntry>{}, width);
+    const int sceneHeight = height;
+    height += legend.height();
     Canvas canvas(width, height);
     const std::vector<Rgb> palette = makePalette();
+    const auto drawFrame = [&] {
+        draw(canvas, camera, world);
+        legend.draw(canvas, sceneHeight, kLegendColours);
+    };
 
     if (imageType == ImageType::Png) {
         errno = 0;
@@ -206,7 +256,7 @@ int render(const RenderOptions& options) {
             progress.update(step);
         }
         progress.erase();
-        draw(canvas, camera, world);
+        drawFrame();
         std::string error = writePng(file.get(), canvas, palette);
         errno = 0;
         if (std::fclose(file.release()) != 0 && error.empty())
@@ -230,7 +280,7 @@ int render(const RenderOptions& options) {
         if (step > 0)
             world.step(scene.dt);
         if (step % options.every == 0) {
-            draw(canvas, camera, world);
+            drawFrame();
             error = gif.addFrame(canvas, delay);
         }
         progress.update(step);

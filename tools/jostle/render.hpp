@@ -21,6 +21,9 @@ struct RenderOptions {
     std::int64_t height = 0;
     std::int64_t every = 2; ///< GIF only: a frame every K steps
     std::string solver;     ///< --solver: "classic" or "physical"; empty: the scene's own
+    /// --legend: a key to the colours in a band under the scene (legend.hpp), which makes
+    /// the image taller by the band's height
+    bool legend = false;
 };
 
 /// Runs the command; returns the exit status (errors.hpp), having printed any error.
