@@ -1,6 +1,8 @@
 // Sample 2: a platformer. A character steered by the keys (runner.hpp) on a tile-map
 // level (createTileMap), with jump-through platforms (down + jump drops through them:
-// World::dropThrough), a lift (a kinematic body going up and down) and a few crates.
+// World::dropThrough), a lift (a kinematic body going up and down), a conveyor belt
+// (BodyDef::surfaceVelocity), two low steps it walks up (stepUp), corners it slips round
+// when a jump clips them (cornerCorrection), and crates light enough to push.
 #include "runner.hpp"
 #include "sample_list.hpp"
 
@@ -72,16 +74,40 @@ public:
                                   .hh = 8,
                                   .vy = -kLiftSpeed});
 
-        // On the floor between the two flights of steps (not inside them).
+        // On the floor between the two flights of steps (not inside them), light enough
+        // to push: the player's feet grip 0.8 × its 2 × g, two crates rub 2 × 0.6 × 1 × g.
         for (int i = 0; i < 3; ++i)
             world.createBody({.x = 520.0f + 32.0f * static_cast<float>(i),
                               .y = 490,
                               .hw = 14,
                               .hh = 14,
-                              .friction = 0.6f});
+                              .friction = 0.6f,
+                              .mass = 1.0f});
 
-        const BodyId player = world.createBody(
-            {.x = 100, .y = 480, .hw = 11, .hh = 20, .friction = 0.0f, .mass = 2.0f});
+        // Two low steps (12 px each) in the corner left of the start, walked up without a
+        // jump.
+        world.createBody({.type = BodyType::Static, .x = 68, .y = 506, .hw = 12, .hh = 6});
+        world.createBody({.type = BodyType::Static, .x = 44, .y = 500, .hw = 12, .hh = 12});
+
+        // A conveyor belt in the air, carrying what stands on it to the left.
+        const BodyId belt = world.createBody({.type = BodyType::Static,
+                                              .x = 460,
+                                              .y = 380,
+                                              .hw = 60,
+                                              .hh = 6,
+                                              .friction = 0.8f,
+                                              .surfaceVelocity = {-90.0f, 0.0f}});
+        pane.labels.push_back({belt, "<< BELT"});
+
+        const BodyId player = world.createBody({.x = 100,
+                                                .y = 480,
+                                                .hw = 11,
+                                                .hh = 20,
+                                                .friction = 0.8f,
+                                                .mass = 2.0f,
+                                                .character = true,
+                                                .cornerCorrection = 8.0f,
+                                                .stepUp = 14.0f});
         runner_ = Runner(player, kRunSpeed, kJump);
         pane.labels.push_back({player, "YOU"});
         pane.view = boundsOf(world);

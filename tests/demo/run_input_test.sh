@@ -27,6 +27,13 @@ near player_x 230 0.01 "Right held 0.5 s runs 260 px/s x 0.5 s"
 expect player_vx 0.000 "releasing Right stops the run"
 near player_y 492 0.01 "running stays on the floor"
 
+# Left held for 0.5 s: up the two low steps in the corner (12 px each, x 32 to 80) without
+# a jump (stepUp), to the wall (x 32): the player on the upper step's top (488 - 20).
+run --sample 2 --frames 70 --input "30 key-down Left; 60 key-up Left"
+near player_x 43 0.01 "Left held runs up the low steps to the wall (32 + 11)"
+near player_y 468 0.01 "walked up onto the upper step (512 - 24 - 20)"
+expect player_floor 1 "standing on it"
+
 # Space on the floor while running right for 15 steps (65 px): the player rises (take-off
 # speed sqrt(2 g h) = 674 px/s up), and lands on the jump-through platform at (160, 400),
 # whose top (395) is 117 px above the floor, so stands at y 395 - 20 = 375. Down + space

@@ -1,5 +1,6 @@
 -- The tutorial's demo on jostle, with a player: boxes of different bounce and friction
--- fall onto platforms, and a character runs and jumps among them, rides two lifts, jumps
+-- fall onto platforms (the middle one a conveyor belt), and a character runs and jumps
+-- among them, walks up two low steps, rides two lifts, jumps
 -- up through a one-way platform and collects coins. Arrows (or A, D) walk, Up (or W)
 -- jumps, Down + Up drops through the one-way platform; click to drop a box, right-click
 -- to remove one, R to start again, M to switch between jostle's two models (physical, the
@@ -36,8 +37,12 @@ local statics = {
   {x = -10, y = 300, hw = 10, hh = 300, friction = 0},    -- left wall
   {x = 810, y = 300, hw = 10, hh = 300, friction = 0},    -- right wall
   {x = 200, y = 420, hw = 120, hh = 8, friction = 0.5},   -- low platform
-  {x = 560, y = 300, hw = 110, hh = 8, friction = 0.5},   -- middle platform, x 450 .. 670
+  -- the middle platform, x 450 .. 670: a conveyor belt carrying what rests on it left
+  {x = 560, y = 300, hw = 110, hh = 8, friction = 0.5, surfaceVelocity = {-40, 0}},
   {x = 330, y = 180, hw = 70, hh = 8, friction = 0.5},    -- high platform
+  -- Two low steps by the right wall, 10 high each: the player walks up them.
+  {x = 755, y = 575, hw = 15, hh = 5, friction = 0.8},
+  {x = 785, y = 570, hw = 15, hh = 10, friction = 0.8},
 }
 local boxes = {
   {name = "crate", x = 180, y = 40, hw = 20, hh = 20, bounce = 0, friction = 0.8},
@@ -104,7 +109,8 @@ local function reset()
   info, look = {}, {}
   for _, def in ipairs(statics) do
     newBody({type = "static", x = def.x, y = def.y, hw = def.hw, hh = def.hh,
-      friction = def.friction}, {150 / 255, 150 / 255, 150 / 255})
+      friction = def.friction, surfaceVelocity = def.surfaceVelocity},
+      {150 / 255, 150 / 255, 150 / 255})
   end
   for _, def in ipairs(boxes) do
     addBox(def)
@@ -117,9 +123,10 @@ local function reset()
   coins, coinSpot = 0, 1
   coin = newBody({type = "static", x = coinSpots[1][1], y = coinSpots[1][2], hw = 6, hh = 6,
     sensor = true}, {1, 215 / 255, 0})
-  -- The player: a character, 16 x 28, standing on the floor by the left wall.
-  player = newBody({x = 100, y = 566, hw = 8, hh = 14, character = true},
-    {90 / 255, 160 / 255, 1})
+  -- The player: a character, 16 x 28, standing on the floor by the left wall. It slips
+  -- round a platform's corner its jump clips by up to 4 px, and walks up steps 10 high.
+  player = newBody({x = 100, y = 566, hw = 8, hh = 14, character = true,
+    cornerCorrection = 4, stepUp = 10}, {90 / 255, 160 / 255, 1})
   check = {minWalk = math.huge, maxWalk = -math.huge, startY = 566, highest = 0}
 end
 
