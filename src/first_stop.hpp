@@ -5,6 +5,7 @@
 
 #include "candidates.hpp"
 #include "geometry.hpp"
+#include "one_way.hpp"
 #include "shape_casts.hpp"
 #include "world_state.hpp"
 
@@ -43,7 +44,7 @@ inline std::optional<Met> castAgainstShape(const WorldState& w, std::uint32_t sl
                                            Vec2 half, float radius, Vec2 motion) {
     const Body& body = w.slots[slot];
     // A one-way box stops only with its blocking face.
-    const std::uint8_t stopping = body.blockingFaces();
+    const std::uint8_t stopping = blockingFaces(body);
     const CastOutline cast = castOutlineOf(half, radius, body.half, w.shapes[slot], stopping,
                                            std::max(2.0f * w.def.physical.slop, kMinimumSkin));
     const std::optional<ShapeHit> hit = castShape(cast, centre - body.position, motion);
@@ -102,7 +103,7 @@ void firstStop(const WorldState& w, const Candidates& candidates, Vec2 centre, V
         if (!met || met->contact.time > stop.time)
             return;
         // castBox finds only what the box runs into from outside.
-        if (!w.slots[slot].blocks(met->contact.normal, true, 0.0f))
+        if (!stops(w.slots[slot], met->contact.normal, true, 0.0f))
             return;
         if (met->contact.time < stop.time) {
             stop.time = met->contact.time;

@@ -6,6 +6,7 @@
 #include "candidates.hpp"
 #include "first_stop.hpp"
 #include "geometry.hpp"
+#include "one_way.hpp"
 #include "shape_casts.hpp"
 #include "world_access.hpp"
 
@@ -128,7 +129,7 @@ std::optional<RayFound> rayMeets(const WorldState& w, const Candidates& candidat
                    rayShape(from - body.position, delta, body.half, w.shapes[slot])) {
         contact = Hit{hit->time, hit->normal, hit->axis};
     }
-    if (!contact || !body.blocks(contact->normal, contact->axis >= 0, 0.0f))
+    if (!contact || !stops(body, contact->normal, contact->axis >= 0, 0.0f))
         return std::nullopt;
     return RayFound{slot, candidates.created(slot), *contact};
 }

@@ -105,20 +105,6 @@ struct alignas(64) Body {
             return velocity;
         return velocity + surfaceVelocity - normal * dot(surfaceVelocity, normal);
     }
-    /// The faces that stop what meets it (shapes.hpp's FaceBit): a one-way platform's
-    /// blocking face, or all four.
-    std::uint8_t blockingFaces() const {
-        return isOneWay() ? faceBit(oneWay.x != 0.0f ? 0 : 1, oneWay.x + oneWay.y)
-                          : std::uint8_t{kAllFaces};
-    }
-    /// Whether this body stops another that meets it along `normal` (from this body
-    /// towards the other). A one-way platform stops only what meets its blocking face,
-    /// having been wholly outside it when the motion began (`fromOutside`), and not while
-    /// the other drops through on purpose (`othersDropTime` > 0: its dropThroughTime);
-    /// every other body stops everything. docs/one-way-platforms.md.
-    bool blocks(Vec2 normal, bool fromOutside, float othersDropTime) const {
-        return !isOneWay() || (normal == oneWay && fromOutside && othersDropTime <= 0.0f);
-    }
     /// Its box, by corners.
     Box box() const { return boxAround(position, half); }
 };

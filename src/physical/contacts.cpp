@@ -4,6 +4,7 @@
 #include "contacts.hpp"
 
 #include "../characters.hpp"
+#include "../one_way.hpp"
 #include "../shapes.hpp"
 #include "facing.hpp"
 #include "seams.hpp"
@@ -162,8 +163,8 @@ PairOutcome examinePair(const StepContext& step, const BodyPair& pair, Contact& 
         const float skin = facing->skin;
         // The normal points from b towards a; a pair touching within the skin was on
         // the platform's side when the step began.
-        if ((a.isOneWay() && !a.blocks(-outcome.normal, outcome.gap >= -skin, b.dropThroughTime)) ||
-            (b.isOneWay() && !b.blocks(outcome.normal, outcome.gap >= -skin, a.dropThroughTime)))
+        if (!stops(a, -outcome.normal, outcome.gap >= -skin, b.dropThroughTime) ||
+            !stops(b, outcome.normal, outcome.gap >= -skin, a.dropThroughTime))
             return {};
         c = contactOf(step, a, b, outcome.normal);
     } else {

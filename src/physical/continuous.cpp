@@ -4,6 +4,7 @@
 // the solver (docs/continuous-collision.md).
 #include "continuous.hpp"
 
+#include "../one_way.hpp"
 #include "../shape_casts.hpp"
 #include "contacts.hpp"
 #include "seams.hpp"
@@ -45,7 +46,7 @@ std::optional<FirstHit> sweepShaped(const StepContext& step, std::uint32_t slot,
     const Shape& bodyShape = w.shapes[slot];
     const Shape& obstacleShape = w.shapes[other];
     const float radius = body.shape == ShapeKind::Round ? bodyShape.radius : 0.0f;
-    const std::uint8_t stopping = pushingFaces(w, obstacle, body) & obstacle.blockingFaces();
+    const std::uint8_t stopping = pushingFaces(w, obstacle, body) & blockingFaces(obstacle);
     const CastOutline cast =
         castOutlineOf(body.half, radius, obstacle.half, obstacleShape, stopping,
                       std::max(2.0f * step.options.slop, kMinimumSkin));
@@ -89,8 +90,7 @@ std::optional<FirstHit> firstHit(const StepContext& step, std::uint32_t slot, Ve
             return;
         // The sweep finds only what the body enters from outside; a segment lets through
         // what drops through it on purpose, as a one-way platform does.
-        if (!obstacle.blocks(found->hit.normal, true, body.dropThroughTime) ||
-            (obstacle.shape == ShapeKind::Segment && body.dropThroughTime > 0.0f))
+        if (!stops(obstacle, found->hit.normal, true, body.dropThroughTime))
             return;
         // Nor does what the pre-solve callback let the body through in this step.
         if (isVetoed(step, slot, other))

@@ -1,6 +1,7 @@
 // Where a pair touches (facing.hpp).
 #include "facing.hpp"
 
+#include "../one_way.hpp"
 #include "../shapes.hpp"
 #include "seams.hpp"
 #include "step_context.hpp"
@@ -113,8 +114,7 @@ std::optional<ShapedFacing> chooseShapedNormal(const StepContext& step, std::uin
     if ((apart > skin && apart > reachable) ||
         staysApart(mover, obstacle, touch->normal, touch->gap, step.dt))
         return std::nullopt;
-    if (obstacle.shape == ShapeKind::Segment &&
-        (touch->gap < -skin || mover.dropThroughTime > 0.0f))
+    if (!stops(obstacle, touch->normal, touch->gap >= -skin, mover.dropThroughTime))
         return std::nullopt;
     return ShapedFacing{aIsObstacle ? -touch->normal : touch->normal, touch->gap, skin,
                         touch->extent, size};

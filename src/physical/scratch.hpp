@@ -9,7 +9,7 @@
 #include "contacts.hpp"
 #include "continuous.hpp"
 #include "impacts.hpp"
-#include "platforms.hpp"
+#include "riders.hpp"
 #include "report.hpp"
 #include "sleep.hpp"
 #include "solver_layers.hpp"

@@ -3,6 +3,7 @@
 
 #include "../events.hpp"
 #include "../first_stop.hpp"
+#include "../one_way.hpp"
 #include "continuous.hpp"
 #include "sleep.hpp"
 #include "step_context.hpp"
@@ -47,8 +48,7 @@ std::optional<Met> floorBelow(const StepContext& step, std::uint32_t slot, Vec2 
         if (other == slot || !w.isLive(other) || obstacle.sensor || !canCollide(body, obstacle))
             return;
         std::optional<Met> met = castAgainst(w, other, body.position, body.half, radius, motion);
-        if (!met || !obstacle.blocks(met->contact.normal, true, body.dropThroughTime) ||
-            (obstacle.shape == ShapeKind::Segment && body.dropThroughTime > 0.0f))
+        if (!met || !stops(obstacle, met->contact.normal, true, body.dropThroughTime))
             return;
         met->created = w.created[other];
         if (!first || met->contact.time < first->contact.time ||

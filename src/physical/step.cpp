@@ -12,7 +12,7 @@
 #include "continuous.hpp"
 #include "corners.hpp"
 #include "impacts.hpp"
-#include "platforms.hpp"
+#include "riders.hpp"
 #include "positions.hpp"
 #include "report.hpp"
 #include "sleep.hpp"

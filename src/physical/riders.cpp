@@ -1,6 +1,6 @@
 // Riders of kinematic bodies. Friction alone would let a rider slide until it caught up
 // with a platform that started, stopped or turned.
-#include "platforms.hpp"
+#include "riders.hpp"
 
 #include "step_context.hpp"
 

@@ -1,5 +1,5 @@
-// Moving platforms (docs/moving-platforms.md): riders of a kinematic body are handed what
-// its velocity changed since the last step.
+// Riders of moving platforms (docs/moving-platforms.md): what stands on a kinematic body
+// is handed what the body's velocity changed since the last step.
 #pragma once
 
 #include <cstdint>
