@@ -128,19 +128,6 @@ Vec2 pointOf(const WorldState& world, const TouchRecord& record) {
                                      b.half, world.shapes[record.b.index], record.normal);
 }
 
-GroundRecord groundOf(const WorldState& world, BodyId id) {
-    GroundRecord ground;
-    float hardest = 0.0f;
-    world.forEachContactOf(id, [&](BodyId other, Vec2 push, const TouchRecord& r) {
-        if (surfaceOf(push, world.events.down, world.slots[id.index].floorCos) != kFloor ||
-            (!ground.body.isNull() && !(r.impulse > hardest)))
-            return;
-        ground = {other, push};
-        hardest = r.impulse;
-    });
-    return ground;
-}
-
 void recordSensor(WorldState& world, std::uint32_t sensor, std::uint32_t visitor) {
     world.events.sensorsNow.push_back({world.refOf(sensor), world.refOf(visitor), {}, 0.0f});
 }

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "counting_sort.hpp"
+#include "ground.hpp"
 #include "handles.hpp"
 #include "jostle/world.hpp"
 
@@ -25,27 +26,6 @@ struct TouchRecord {
     std::uint64_t key() const { return std::uint64_t(a.index) << 32 | b.index; }
 };
 static_assert(sizeof(TouchRecord) == 32, "a record of the bodies' slots, not their handles");
-
-/// Touching bits, by slot.
-enum TouchingBit : std::uint8_t {
-    kFloor = 1,
-    kCeiling = 2,
-    kWallLeft = 4,
-    kWallRight = 8,
-};
-
-/// What a surface that pushes a body along `push` is to it, with gravity along `down`
-/// (both unit): a floor pushes against gravity, at least `floorCos` of it (Body::floorCos:
-/// within its floor angle of straight up), a ceiling with it (within 60 degrees), a wall
-/// sideways.
-inline TouchingBit surfaceOf(Vec2 push, Vec2 down, float floorCos) {
-    const float vertical = dot(push, down);
-    if (-vertical >= floorCos)
-        return kFloor;
-    if (vertical > 0.5f)
-        return kCeiling;
-    return dot(push, Vec2{down.y, -down.x}) < 0.0f ? kWallRight : kWallLeft;
-}
 
 struct StepEvents {
     std::vector<ContactEvent> begins, ends;
@@ -121,15 +101,6 @@ void recordTouch(WorldState& world, const FoundTouch& touch);
 
 /// Where the two bodies of `record` touch, as they are now (ContactEvent::point).
 Vec2 pointOf(const WorldState& world, const TouchRecord& record);
-
-/// What body `id` stands on: of the bodies it touched at the end of the last step that
-/// pushed it as a floor, the one that pushed hardest (the first of equals). Null if none
-/// (World::ground).
-struct GroundRecord {
-    BodyId body;
-    Vec2 normal;
-};
-GroundRecord groundOf(const WorldState& world, BodyId id);
 
 /// Records that `visitor` overlaps `sensor` at the end of this step.
 void recordSensor(WorldState& world, std::uint32_t sensor, std::uint32_t visitor);

@@ -1,12 +1,12 @@
 // Building contacts: each pair the broadphase found made into a contact along the normal
-// facing.hpp chooses (one-way platforms, the pre-solve callback, warm starting, the target
+// contact_normal.hpp chooses (one-way platforms, the pre-solve callback, warm starting, the target
 // speed), in blocks on the workers or pair by pair around the pre-solve.
 #include "contacts.hpp"
 
 #include "../characters.hpp"
 #include "../one_way.hpp"
 #include "../shapes.hpp"
-#include "facing.hpp"
+#include "contact_normal.hpp"
 #include "seams.hpp"
 #include "step_context.hpp"
 

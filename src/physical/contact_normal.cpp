@@ -1,5 +1,5 @@
-// Where a pair touches (facing.hpp).
-#include "facing.hpp"
+// Where a pair touches and which way its contact points (contact_normal.hpp).
+#include "contact_normal.hpp"
 
 #include "../one_way.hpp"
 #include "../shapes.hpp"
