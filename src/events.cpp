@@ -3,6 +3,7 @@
 #include "events.hpp"
 
 #include "counting_sort.hpp"
+#include "record_touch.hpp"
 #include "world_state.hpp"
 
 #include <algorithm>
@@ -76,43 +77,6 @@ void compare(const WorldState& world, std::vector<TouchRecord>& now,
 }
 
 } // namespace
-
-namespace {
-
-// recordContact's two halves, here where the compiler can join them again.
-FoundTouch findTouch(const WorldState& world, std::uint32_t body, std::uint32_t other, Vec2 normal,
-                     float approachSpeed, float impulse) {
-    const StepEvents& events = world.events;
-    // The surface pushes each body away from the other.
-    const TouchingBit flagBody = surfaceOf(normal, events.down, world.slots[body].floorCos);
-    const TouchingBit flagOther = surfaceOf(-normal, events.down, world.slots[other].floorCos);
-    // Listed with the body created first as `a`, the normal pointing towards it.
-    if (world.createdBefore(body, other))
-        return {{world.refOf(body), world.refOf(other), normal, approachSpeed, impulse},
-                flagBody,
-                flagOther};
-    return {{world.refOf(other), world.refOf(body), -normal, approachSpeed, impulse},
-            flagOther,
-            flagBody};
-}
-
-void listTouch(WorldState& world, const FoundTouch& touch) {
-    StepEvents& events = world.events;
-    events.touching[touch.record.a.index] |= touch.flagA;
-    events.touching[touch.record.b.index] |= touch.flagB;
-    events.contactsNow.push_back(touch.record);
-}
-
-} // namespace
-
-FoundTouch touchOf(const WorldState& world, std::uint32_t body, std::uint32_t other, Vec2 normal,
-                   float approachSpeed, float impulse) {
-    return findTouch(world, body, other, normal, approachSpeed, impulse);
-}
-
-void recordTouch(WorldState& world, const FoundTouch& touch) {
-    listTouch(world, touch);
-}
 
 void recordContact(WorldState& world, std::uint32_t body, std::uint32_t other, Vec2 normal,
                    float approachSpeed, float impulse) {

@@ -89,15 +89,12 @@ private:
 void recordContact(WorldState& world, std::uint32_t body, std::uint32_t other, Vec2 normal,
                    float approachSpeed, float impulse);
 
-/// recordContact in two halves, for contacts looked at on several threads: what the pair
-/// is (a pure function of the world), then listing it (on one thread, in order).
+/// recordContact in two halves (record_touch.hpp), for contacts looked at on several
+/// threads: what the pair is, then listing it (on one thread, in order).
 struct FoundTouch {
     TouchRecord record;
     TouchingBit flagA, flagB; ///< what each body of the record gets
 };
-FoundTouch touchOf(const WorldState& world, std::uint32_t body, std::uint32_t other, Vec2 normal,
-                   float approachSpeed, float impulse);
-void recordTouch(WorldState& world, const FoundTouch& touch);
 
 /// Where the two bodies of `record` touch, as they are now (ContactEvent::point).
 Vec2 pointOf(const WorldState& world, const TouchRecord& record);

@@ -2,6 +2,7 @@
 #include "report.hpp"
 
 #include "../events.hpp"
+#include "../record_touch.hpp"
 #include "step_context.hpp"
 
 #include <algorithm>
@@ -108,17 +109,18 @@ void reportEvents(StepContext& step) {
             // the middle of the step ends it apart.
             if (gap <= skin || c.collisionImpulse > 0.0f) {
                 if (inOrder)
-                    recordContact(w, slotA, slotB, c.normal(), c.approachSpeed, c.totalImpulse());
+                    listTouch(w, findTouch(w, slotA, slotB, c.normal(), c.approachSpeed,
+                                           c.totalImpulse()));
                 else
                     touches.push_back(
-                        touchOf(w, slotA, slotB, c.normal(), c.approachSpeed, c.totalImpulse()));
+                        findTouch(w, slotA, slotB, c.normal(), c.approachSpeed, c.totalImpulse()));
             }
             // Only a dynamic body against an infinitely heavy one can be crushed.
             if ((c.invMassA == 0.0f) != (c.invMassB == 0.0f))
                 findCrush(w, c, slotA, slotB, -gap, scratch.crushCandidates[block.index]);
         }
     });
-    scratch.touches.forEachInOrder([&](const FoundTouch& touch) { recordTouch(w, touch); });
+    scratch.touches.forEachInOrder([&](const FoundTouch& touch) { listTouch(w, touch); });
     for (const BodyPair& pair : step.scratch.sensorPairs) {
         if (!w.isLive(pair.a) || !w.isLive(pair.b))
             continue;
