@@ -40,24 +40,9 @@ struct RunResult {
     std::optional<StepProfile> stages;
 };
 
-/// The stages of jostle's step profile, by name, in the order the step runs them.
-struct StageField {
-    const char* name;
-    float StepProfile::*ms;
-};
-inline constexpr StageField kStages[] = {
-    {"pairs", &StepProfile::pairs},
-    {"contacts", &StepProfile::contacts},
-    {"support", &StepProfile::support},
-    {"impacts", &StepProfile::impacts},
-    {"velocities", &StepProfile::velocities},
-    {"sweeps", &StepProfile::sweeps},
-    {"positions", &StepProfile::positions},
-    {"store", &StepProfile::store},
-    {"events", &StepProfile::events},
-    {"sleep", &StepProfile::sleep},
-    {"step", &StepProfile::step},
-};
+/// The stages of jostle's step profile, by name (jostle::kStepProfileFields).
+using StageField = StepProfileField;
+inline constexpr const auto& kStages = kStepProfileFields;
 
 /// Builds the case's scene in `engine` on `workers` threads, steps it `warmup` times, reads
 /// the heap, measures up to `steps` steps, and reads the final positions for the quality

@@ -624,8 +624,9 @@ uint64_t jostle_world_pairs_left_out(const jostle_world* world);
 /// Where the last step's time went, in milliseconds of wall-clock time, stage by stage
 /// (jostle::StepProfile says what each holds; the classic model fills `step` only).
 typedef struct jostle_step_profile {
-    float step, pairs, contacts, support, impacts, velocities, sweeps, positions, store, events,
-        sleep;
+    float step;
+    float riders, velocities, pairs, corners, contacts, support, impacts, layers, solve, shock,
+        bounces, sweeps, positions, correction, snap, store, events, sleep;
 } jostle_step_profile;
 
 /// All 0 before the first step.

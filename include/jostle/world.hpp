@@ -165,8 +165,8 @@ struct ContactInfo {
 
 /// What a body stands on (World::ground).
 struct Ground {
-    BodyId body;   ///< the body under it
-    Vec2 normal;   ///< the push of the ground: against gravity
+    BodyId body; ///< the body under it
+    Vec2 normal; ///< the push of the ground: against gravity
     /// The ground's velocity now: what a rider moves with (a conveyor's surface velocity
     /// along its surface included).
     Vec2 velocity;
@@ -202,18 +202,54 @@ struct Touching {
 /// a scene costs, never part of the results. The physical model fills every stage; the
 /// classic model fills `step` only.
 struct StepProfile {
-    float step = 0.0f;     ///< the whole of step(), the stages below and the rest
-    float pairs = 0.0f;    ///< the broadphase: its grids, and the pairs that may touch
-    float contacts = 0.0f; ///< contacts made of the pairs, warm-started from the last step
-    float support = 0.0f;  ///< ordering contacts from the ground up (and in layers, for threads)
-    float impacts = 0.0f;  ///< collisions and bounces
-    float velocities =
-        0.0f;               ///< forces and gravity, the solver's velocity passes, shock propagation
-    float sweeps = 0.0f;    ///< continuous collision
-    float positions = 0.0f; ///< moving the bodies, position correction, snapping to ground
-    float store = 0.0f;     ///< what the next step remembers of this one (contacts, platforms)
-    float events = 0.0f;    ///< contact, sensor and crush events
-    float sleep = 0.0f;     ///< islands falling asleep
+    float step = 0.0f; ///< the whole of step(), the stages below and the rest
+    // The physical model's stages, in the order a step runs them (docs/architecture.md).
+    float riders = 0.0f;     ///< carrying what stands on moving platforms
+    float velocities = 0.0f; ///< forces, gravity, damping, the clamp, characters' walks
+    float pairs = 0.0f;      ///< the broadphase: its grids, and the pairs that may touch
+    float corners = 0.0f;    ///< slipping round corners and up steps
+    float contacts = 0.0f;   ///< contacts made of the pairs, warm-started from the last step
+    float support = 0.0f;    ///< ordering contacts from the ground up
+    float impacts = 0.0f;    ///< collisions and bounces
+    float layers = 0.0f;     ///< cutting the contacts into layers, for threads
+    float solve = 0.0f;      ///< the solver's velocity passes
+    float shock = 0.0f;      ///< shock propagation
+    float bounces = 0.0f;    ///< settling bounces the contacts did not let happen
+    float sweeps = 0.0f;     ///< continuous collision
+    float positions = 0.0f;  ///< moving the bodies by their velocities
+    float correction = 0.0f; ///< position correction
+    float snap = 0.0f;       ///< snapping to the ground
+    float store = 0.0f;      ///< what the next step remembers of this one (contacts, platforms)
+    float events = 0.0f;     ///< contact, sensor and crush events
+    float sleep = 0.0f;      ///< islands falling asleep
+};
+
+/// StepProfile's fields by name, in its order: what the C API, the Lua module and the
+/// benchmark read it by.
+struct StepProfileField {
+    const char* name;
+    float StepProfile::*ms;
+};
+inline constexpr StepProfileField kStepProfileFields[] = {
+    {"step", &StepProfile::step},
+    {"riders", &StepProfile::riders},
+    {"velocities", &StepProfile::velocities},
+    {"pairs", &StepProfile::pairs},
+    {"corners", &StepProfile::corners},
+    {"contacts", &StepProfile::contacts},
+    {"support", &StepProfile::support},
+    {"impacts", &StepProfile::impacts},
+    {"layers", &StepProfile::layers},
+    {"solve", &StepProfile::solve},
+    {"shock", &StepProfile::shock},
+    {"bounces", &StepProfile::bounces},
+    {"sweeps", &StepProfile::sweeps},
+    {"positions", &StepProfile::positions},
+    {"correction", &StepProfile::correction},
+    {"snap", &StepProfile::snap},
+    {"store", &StepProfile::store},
+    {"events", &StepProfile::events},
+    {"sleep", &StepProfile::sleep},
 };
 
 /// Called for every pair the solver is about to respond to (overlapping, touching, or

@@ -79,10 +79,14 @@ uint64_t jostle_world_pairs_left_out(const jostle_world* world) {
 
 jostle_step_profile jostle_world_get_profile(const jostle_world* world) {
     return guard(__func__, jostle_step_profile{}, [&] {
+        // The C struct holds StepProfile's floats in its order.
+        static_assert(sizeof(jostle_step_profile) == sizeof(StepProfile));
         const StepProfile& p = worldOf(world).world.profile();
-        return jostle_step_profile{p.step,    p.pairs,      p.contacts, p.support,
-                                   p.impacts, p.velocities, p.sweeps,   p.positions,
-                                   p.store,   p.events,     p.sleep};
+        jostle_step_profile out{};
+        float* to = &out.step;
+        for (std::size_t k = 0; k < std::size(kStepProfileFields); ++k)
+            to[k] = p.*kStepProfileFields[k].ms;
+        return out;
     });
 }
 

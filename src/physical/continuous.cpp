@@ -8,6 +8,7 @@
 #include "../shape_casts.hpp"
 #include "contacts.hpp"
 #include "seams.hpp"
+#include "solver_layers.hpp"
 #include "step_context.hpp"
 #include "support.hpp"
 
@@ -221,6 +222,7 @@ void sweepFastBodies(StepContext& step) {
         step.contacts.insert(step.contacts.end(), s.found.begin(), s.found.end());
         s.found.clear();
         orderBySupport(step);
+        layerContacts(step);
     }
 }
 

@@ -100,6 +100,8 @@ float restingSpeed(const Body& body) {
 
 void fallAsleep(StepContext& step) {
     WorldState& w = step.world;
+    if (!w.def.sleeping)
+        return;
     SleepScratch& s = step.scratch.sleep;
     Islands islands(w, s.parent);
     updateRestTimes(step, islands);

@@ -2114,8 +2114,9 @@ static void test_workers(void) {
     run(jobs, 30);
     CHECK(calls > 0, "the game's job system was handed work");
     const jostle_step_profile p = jostle_world_get_profile(two);
-    const float stages = p.pairs + p.contacts + p.support + p.impacts + p.velocities + p.sweeps +
-                         p.positions + p.store + p.events + p.sleep;
+    const float stages = p.riders + p.velocities + p.pairs + p.corners + p.contacts + p.support +
+                         p.impacts + p.layers + p.solve + p.shock + p.bounces + p.sweeps +
+                         p.positions + p.correction + p.snap + p.store + p.events + p.sleep;
     CHECK(p.step > 0.0f && p.pairs > 0.0f && stages <= p.step * 1.001f,
           "the last step's profile: its stages are laps within it");
     // The same bits at any worker count, under any job system.

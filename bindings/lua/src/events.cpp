@@ -189,15 +189,10 @@ int worldGetPairsLeftOut(lua_State* L) {
 /// world:getProfile(): where the last step's time went, in milliseconds, by stage.
 int worldGetProfile(lua_State* L) {
     const StepProfile& p = checkWorld(L, 1, "World:getProfile").world.profile();
-    lua_createtable(L, 0, 11);
-    const std::pair<const char*, float> stages[] = {
-        {"step", p.step},       {"pairs", p.pairs},         {"contacts", p.contacts},
-        {"support", p.support}, {"impacts", p.impacts},     {"velocities", p.velocities},
-        {"sweeps", p.sweeps},   {"positions", p.positions}, {"store", p.store},
-        {"events", p.events},   {"sleep", p.sleep}};
-    for (const auto& [name, ms] : stages) {
-        lua_pushnumber(L, ms);
-        lua_setfield(L, -2, name);
+    lua_createtable(L, 0, static_cast<int>(std::size(kStepProfileFields)));
+    for (const StepProfileField& stage : kStepProfileFields) {
+        lua_pushnumber(L, p.*stage.ms);
+        lua_setfield(L, -2, stage.name);
     }
     return 1;
 }

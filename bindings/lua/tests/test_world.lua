@@ -319,8 +319,9 @@ test("a world stepped on two workers gives the same positions as on one", functi
   t.equal(one:getWorkers(), 1, "one worker by default")
   t.equal(two:getWorkers(), 2, "two workers")
   local p, stages = two:getProfile(), 0
-  for _, name in ipairs({"pairs", "contacts", "support", "impacts", "velocities", "sweeps",
-                         "positions", "store", "events", "sleep"}) do
+  for _, name in ipairs({"riders", "velocities", "pairs", "corners", "contacts", "support",
+                         "impacts", "layers", "solve", "shock", "bounces", "sweeps", "positions",
+                         "correction", "snap", "store", "events", "sleep"}) do
     t.truthy(p[name] >= 0, "profile." .. name)
     stages = stages + p[name]
   end
