@@ -9,7 +9,6 @@
 #include "handles.hpp"
 #include "jostle/world.hpp"
 #include "physical/contact_cache.hpp"
-#include "physical/scratch.hpp"
 #include "query_index.hpp"
 #include "shapes.hpp"
 #include "tasks.hpp"
@@ -133,7 +132,14 @@ inline bool canCollide(const Body& a, const Body& b) {
     return (a.category & b.mask) != 0 && (b.category & a.mask) != 0;
 }
 
+struct PhysicalScratch;
+
 struct WorldState {
+    WorldState();
+    ~WorldState(); // where PhysicalScratch is whole (world_state.cpp)
+    WorldState(const WorldState&) = delete;
+    WorldState& operator=(const WorldState&) = delete;
+
     WorldDef def;
     PreSolveFn preSolve;
 
@@ -160,7 +166,8 @@ struct WorldState {
     /// iterated, so its hash order cannot leak into the results.
     ContactCache contactCache;
     /// Buffers of the physical step and of the broadphase, kept from step to step.
-    PhysicalScratch physical;
+    /// (physical/scratch.hpp: only the stages see it, so that a stage's buffers are theirs.)
+    std::unique_ptr<PhysicalScratch> physical;
     std::vector<BodyPair> pairs;
     std::vector<Box> boundsScratch;
     /// Pairs each moving body has taken of its budget (PhysicalOptions::maxContactsPerBody),

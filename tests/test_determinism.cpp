@@ -51,7 +51,7 @@
 #include "jostle/query.hpp"
 #include "jostle/tilemap.hpp"
 #include "jostle/world.hpp"
-#include "physical/solver_layers.hpp"
+#include "physical/scratch.hpp"
 #include "shared/fnv1a.hpp"
 #include "tasks.hpp"
 #include "world_access.hpp"
@@ -405,8 +405,8 @@ TEST(Threads, SolverLayersKeepTheContactOrderOfEachBody) {
     for (int step = 0; step < 30; ++step)
         crowd.step();
     const WorldState& state = WorldAccess::state(crowd.world);
-    const SolverLayers& layers = state.physical.layers;
-    const std::vector<Contact>& contacts = state.physical.contacts;
+    const SolverLayers& layers = state.physical->layers;
+    const std::vector<Contact>& contacts = state.physical->contacts;
     ASSERT_TRUE(layers.active);
     ASSERT_GT(layers.starts.size(), 2u);
     ASSERT_EQ(layers.order.size(), contacts.size());
@@ -417,7 +417,7 @@ TEST(Threads, SolverLayersKeepTheContactOrderOfEachBody) {
             layerOf[layers.order[k]] = layer;
         }
     // Each dynamic body's contacts, in contact order, go to strictly later layers.
-    std::vector<std::uint32_t> lastLayer(state.physical.bodies.size(), UINT32_MAX);
+    std::vector<std::uint32_t> lastLayer(state.physical->bodies.size(), UINT32_MAX);
     for (std::uint32_t k = 0; k < contacts.size(); ++k) {
         ASSERT_NE(layerOf[k], UINT32_MAX) << "contact " << k << " in no layer";
         for (const auto& [body, invMass] : {std::pair{contacts[k].ia, contacts[k].invMassA},

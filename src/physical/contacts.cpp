@@ -312,7 +312,7 @@ void leaveOutCrushes(StepContext& step) {
 
 void buildContacts(StepContext& step) {
     WorldState& w = step.world;
-    w.physical.solverIndex.assign(w.slots.size(), StepContext::kNoSolverBody);
+    w.physical->solverIndex.assign(w.slots.size(), StepContext::kNoSolverBody);
     step.bodies.clear();
     step.scratch.contactsBuild.vetoed.clear();
     step.scratch.sensorPairs.clear();

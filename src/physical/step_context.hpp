@@ -4,6 +4,7 @@
 #pragma once
 
 #include "../world_state.hpp"
+#include "scratch.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -13,8 +14,8 @@ namespace jostle {
 
 struct StepContext {
     StepContext(WorldState& w, float stepDt)
-        : world(w), scratch(w.physical), options(w.def.physical), dt(stepDt),
-          bodies(w.physical.bodies), contacts(w.physical.contacts),
+        : world(w), scratch(*w.physical), options(w.def.physical), dt(stepDt),
+          bodies(w.physical->bodies), contacts(w.physical->contacts),
           noisePerSlop_(options.slop > 0.0f ? kMinimumSkin / options.slop : 0.0f) {}
 
     WorldState& world;

@@ -1,0 +1,12 @@
+// A world's state: built and torn down where the physical step's buffers are whole.
+#include "world_state.hpp"
+
+#include "physical/scratch.hpp"
+
+namespace jostle {
+
+WorldState::WorldState() : physical(std::make_unique<PhysicalScratch>()) {}
+
+WorldState::~WorldState() = default;
+
+} // namespace jostle
