@@ -82,5 +82,52 @@ TEST(Names, RoundTrip) {
     EXPECT_FALSE(solverFromString("box2d"));
 }
 
+// --- Found by the fuzzers (tests/fuzz; the input kept in tests/fuzz/corpus/) ------------
+
+// Found by fuzz_api with JOSTLE_FUZZ_OPEN=float-range (tests/fuzz/corpus/api/
+// density-mass-overflow-unchecked). checkBodyDef refused a density x area that
+// overflows, but multiplied in another order than the mass the solver uses: with a thin,
+// very dense body the check's product was finite and the mass infinite.
+TEST(BodyDefs, TheDensityMassThatIsCheckedIsTheOneUsed) {
+    // density × 4 overflows first: the mass density × 4 × hw × hh is infinite, however
+    // small hw × hh is.
+    const BodyDef def{.hw = 1e-30f, .hh = 50.5f, .density = 3e38f};
+    EXPECT_TRUE(checkBodyDef(def).has_value());
+    World world;
+    EXPECT_THROW(world.createBody(def), Error);
+    EXPECT_EQ(world.bodyCount(), 0u);
+}
+
+// Found by fuzz_api with JOSTLE_FUZZ_OPEN=float-range (tests/fuzz/corpus/api/
+// setter-density-mass-overflow). createBody refuses a body whose density × area
+// overflows, but setHalfExtents and setDensity made one: a dynamic body of infinite
+// mass, which the solver treats as immovable and divides by.
+TEST(BodyDefs, SettersRefuseAnInfiniteDensityMassAsCreateBodyDoes) {
+    World world;
+    BodyId box = world.createBody({.hw = 10, .hh = 10});
+    EXPECT_THROW(world.setHalfExtents(box, {1e20f, 1e20f}), Error);
+    EXPECT_EQ(world.halfExtents(box), (Vec2{10, 10}));
+    EXPECT_THROW(world.setDensity(box, 3e38f), Error);
+    EXPECT_EQ(world.mass(box), 400.0f);
+    // With an explicit mass, the size does not matter to the mass.
+    world.setMass(box, 2);
+    world.setHalfExtents(box, {1e9f, 1e9f});
+    EXPECT_EQ(world.mass(box), 2.0f);
+}
+
+// Found by fuzz_scene (tests/fuzz/corpus/scene/static-body-with-velocity). checkBodyDef,
+// which promises nothing for a definition createBody accepts, passed a static body with a
+// velocity, which createBody refuses: a scene file with one loaded, and addBodies, which
+// checks every body with checkBodyDef before it creates any, threw halfway through,
+// leaving the world half filled.
+TEST(BodyDefs, CheckBodyDefRefusesAMovingStaticBodyAsCreateBodyDoes) {
+    const BodyDef moving{.type = BodyType::Static, .hw = 1, .hh = 1, .vy = 1};
+    ASSERT_TRUE(checkBodyDef(moving).has_value());
+    EXPECT_EQ(checkBodyDef(moving)->field, "vy");
+    World world;
+    EXPECT_THROW(world.createBody(moving), Error);
+    EXPECT_FALSE(checkBodyDef({.type = BodyType::Kinematic, .hw = 1, .hh = 1, .vy = 1}));
+}
+
 } // namespace
 } // namespace jostle

@@ -718,5 +718,31 @@ TEST(TileSeams, FallingAlongAWallOfSeparateBoxesInMetresFarOutNeverCatches) {
     expectFallingAlongAWallNeverCatches(kMetresFarOut, boxWall);
 }
 
+// --- Found by the fuzzers (tests/fuzz; the input kept in tests/fuzz/corpus/) ------------
+
+// Found by fuzz_api (tests/fuzz/corpus/api/tile-too-small-for-its-position).
+// checkTileMapDef, which promises nothing for a map createTileMap accepts, passed a tile
+// of 2e-9 (the smallest, math.hpp) at x = 136: createTileMap works a box's edges out in
+// double, and there they round to a half extent just below 1e-9, which createBody refused
+// halfway through building the map, leaving a map without a handle. Far from the origin
+// (x = 9.9e8) a tile of 1e-8 rounds to no size at all.
+TEST(TileMap, ATileMapThatChecksBuilds) {
+    const float tiles[] = {1.99999994e-9f, 2e-9f, 1e-8f, 1e-6f};
+    const float places[] = {0, 135.925842f, 1e6f, 9.9e8f, -9.9e8f};
+    for (float tile : tiles) {
+        for (float x : places) {
+            TileMapDef def;
+            def.x = x;
+            def.y = 188.981445f;
+            def.tile = tile;
+            def.rows = {"#.#", "###", ".#.", "#.."};
+            if (checkTileMapDef(def))
+                continue;
+            World world;
+            EXPECT_NO_THROW(createTileMap(world, def)) << "tile " << tile << " at x " << x;
+        }
+    }
+}
+
 } // namespace
 } // namespace jostle

@@ -1,4 +1,5 @@
 // Handles, getters and setters, argument checks, and changes made during a step.
+#include "jostle/query.hpp"
 #include "jostle/world.hpp"
 
 #include <array>
@@ -7,6 +8,7 @@
 #include <functional>
 #include <limits>
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -446,6 +448,40 @@ TEST(World, ReadsEveryPositionAndVelocityInOneCall) {
     EXPECT_EQ(positions[2], (Vec2{-1, -1}));         // left alone
     EXPECT_EQ(world.readVelocities(velocities), 1u); // as many as fit
     EXPECT_EQ(velocities[0], world.velocity(b));
+}
+
+// --- The edge of the world (math.hpp), found by the fuzzers (tests/fuzz/corpus/) --------
+
+// Found by fuzz_api (tests/fuzz/corpus/api/edge-of-the-world-after-a-callback-throws).
+// A body that reaches the edge of the world (math.hpp: ±1e9) stops there at the end of
+// the step; a step that a pre-solve callback ended with an exception skipped that, and
+// left the body beyond the edge, out of the range every function promises. (The classic
+// model calls the callback after a body has moved; the physical one, before.)
+TEST(EdgeOfTheWorld, ABodyStopsAtTheEdgeOfTheWorldEvenWhenTheStepThrows) {
+    World world(WorldDef{.solver = Solver::Classic});
+    // 1e9 units a second carries the box 1.7e7 units past the edge in a step, into a
+    // static body that reaches beyond it (its numbers are in the range, its far side is
+    // not); the collision calls the callback, which throws.
+    const BodyId box = world.createBody({.y = 1e9f - 10, .hw = 1, .hh = 1, .vy = 1e9f});
+    world.createBody({.type = BodyType::Static, .y = 1e9f, .hw = 10, .hh = 1e8f});
+    world.setPreSolve([](Collision&) -> bool { throw std::runtime_error("game over"); });
+    EXPECT_THROW(world.step(1.0f / 60.0f), std::runtime_error);
+    EXPECT_LE(world.position(box).y, kMaxMagnitude);
+    EXPECT_LE(world.velocity(box).y, kMaxMagnitude);
+}
+
+// Found by fuzz_api (tests/fuzz/corpus/api/edge-of-the-world-asleep). The edge of the
+// world left sleeping bodies alone, but a body can fall asleep in the very step that
+// carries it past the edge: slow enough to be at rest, with a dt long enough (up to 1e9 s)
+// to take it there. It stayed beyond the edge, asleep.
+TEST(EdgeOfTheWorld, ABodyThatFallsAsleepPastTheEdgeStopsAtIt) {
+    World world; // sleeping is on
+    // 1.5 units a second is rest for a box of half extent 40 (0.05 × 40 = 2 per second).
+    const BodyId box = world.createBody({.hw = 40, .hh = 40, .vx = 1.5f});
+    world.step(1e9f);
+    EXPECT_LE(world.position(box).x, kMaxMagnitude);
+    // Where it stopped, the queries find it.
+    EXPECT_EQ(queryPoint(world, world.position(box)).size(), 1u);
 }
 
 } // namespace
