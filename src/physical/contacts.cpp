@@ -7,6 +7,7 @@
 #include "../one_way.hpp"
 #include "../shapes.hpp"
 #include "contact_normal.hpp"
+#include "contact_of.hpp"
 #include "seams.hpp"
 #include "step_context.hpp"
 
@@ -23,18 +24,6 @@ constexpr float kFirmFooting = 1e3f;
 
 /// Two normals this close (the cosine of their angle) are one contact's, from step to step.
 constexpr float kSameNormal = 0.995f;
-
-float combineFriction(FrictionMix mix, float a, float b) {
-    return mix == FrictionMix::GeometricMean ? std::sqrt(a * b) : std::min(a, b);
-}
-
-/// The friction of a pair touching along `normal` (from b towards a): each body's against
-/// the surface it meets (a character's wallFriction off its floor), combined.
-float frictionOfPair(const StepContext& step, const Body& a, const Body& b, Vec2 normal) {
-    const Vec2 down = step.world.events.down;
-    return combineFriction(step.options.frictionMix, frictionAgainst(a, normal, down),
-                           frictionAgainst(b, -normal, down));
-}
 
 /// The two slots as one number, the same in either order.
 std::uint64_t pairKey(std::uint32_t slotA, std::uint32_t slotB) {
@@ -98,38 +87,6 @@ void setTarget(Contact& c, float bounce, float gap, float dt) {
     c.targetSpeed = gap > 0.0f ? -gap / dt : 0.0f;
     c.bounce = bounce;
 }
-
-/// contactAlong, with internal linkage so that buildContacts, its hot caller, inlines it.
-Contact contactOf(const StepContext& step, const Body& a, const Body& b, Vec2 normal) {
-    Contact c;
-    const bool alongX = normal.x != 0.0f;
-    c.axis = alongX ? 0 : 1;
-    c.sign = alongX ? normal.x : normal.y;
-    c.tangentSign = alongX ? normal.x : -normal.y;
-    c.extent = alongX ? a.half.x + b.half.x : a.half.y + b.half.y;
-    c.slop =
-        step.options.slop * (alongX ? std::min(a.half.x, b.half.x) : std::min(a.half.y, b.half.y));
-    if (keepsATangentSpeed(a, b, step.world.conveyors > 0)) {
-        // Characters rub only on floors, and walk over them; conveyors carry what rubs on
-        // them (characters.hpp).
-        const Vec2 down = step.world.events.down;
-        c.friction = frictionOfPair(step, a, b, normal);
-        Vec2 tangent;
-        tangent[1 - c.axis] = c.tangentSign;
-        c.tangentTarget = dot(walkOver(a, b, normal, down), tangent);
-    } else {
-        c.friction = combineFriction(step.options.frictionMix, a.friction, b.friction);
-    }
-    return c;
-}
-
-} // namespace
-
-Contact contactAlong(const StepContext& step, const Body& a, const Body& b, Vec2 normal) {
-    return contactOf(step, a, b, normal);
-}
-
-namespace {
 
 /// What a pair makes before the pre-solve has its say.
 struct PairOutcome {

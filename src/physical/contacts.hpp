@@ -24,10 +24,6 @@ struct ContactsScratch {
 /// body that may overlap it, from step.world.pairs.
 void buildContacts(StepContext& step);
 
-/// A contact of `a` and `b` along `normal` (a unit axis vector, from b towards a): its
-/// axis, signs, extent, slop and friction, the rest left to the caller.
-Contact contactAlong(const StepContext& step, const Body& a, const Body& b, Vec2 normal);
-
 /// Whether the pre-solve callback vetoed the contact of these two bodies this step.
 bool isVetoed(const StepContext& step, std::uint32_t slotA, std::uint32_t slotB);
 

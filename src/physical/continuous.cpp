@@ -6,6 +6,7 @@
 
 #include "../one_way.hpp"
 #include "../shape_casts.hpp"
+#include "contact_of.hpp"
 #include "contacts.hpp"
 #include "seams.hpp"
 #include "solver_layers.hpp"
@@ -130,7 +131,7 @@ void addFoundContact(StepContext& step, std::uint32_t slot, const FirstHit& firs
     const Body& b = w.slots[slotB];
     const Vec2 fromB = bodyFirst ? normal : -normal;
     Contact c = a.isBox() && b.isBox()
-                    ? contactAlong(step, a, b, fromB)
+                    ? contactOf(step, a, b, fromB)
                     : contactAlongShape(step, a, b, fromB, first.extent, first.size);
     c.ia = ia;
     c.ib = ib;
