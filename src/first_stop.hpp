@@ -22,12 +22,11 @@ namespace jostle {
 struct Met {
     std::uint32_t slot;
     std::uint64_t created; ///< when its body was created: results follow it
-    /// Its axis is 2 for a normal along neither axis (a slope, a rounded corner).
-    Hit contact;
-    /// Of a body that is not a sharp box, or met by a rounded box: where the two touch,
-    /// dot(centre - body's centre, touching) == extent (shape_casts.hpp's ShapeHit).
-    Vec2 touching{};
-    float extent = 0.0f;
+    /// Its axis kAlongSlope for a normal along neither axis (a slope, a rounded corner). Of
+    /// a body that is not a sharp box, or met by a rounded box, also where the two touch:
+    /// dot(centre - body's centre, touching) == extent; between sharp boxes those are left
+    /// {0, 0} and 0.
+    ShapeHit contact;
 };
 
 /// What stops a moving box first: the time, and every body met then, in creation order.
@@ -50,7 +49,7 @@ inline std::optional<Met> castAgainstShape(const WorldState& w, std::uint32_t sl
     const std::optional<ShapeHit> hit = castShape(cast, centre - body.position, motion);
     if (!hit)
         return std::nullopt;
-    return Met{slot, 0, Hit{hit->time, hit->normal, hit->axis}, hit->touching, hit->extent};
+    return Met{slot, 0, *hit};
 }
 
 /// Where a box of half extents `half` rounded by `radius` (0: sharp) moving from `centre`
@@ -66,7 +65,7 @@ inline std::optional<Met> castAgainst(const WorldState& w, std::uint32_t slot, V
     const std::optional<Hit> hit = castBox(centre - body.position, half + body.half, motion, skin);
     if (!hit)
         return std::nullopt;
-    return Met{slot, 0, *hit};
+    return Met{slot, 0, ShapeHit{*hit, {}, 0.0f}};
 }
 
 /// Where a box of `half` rounded by `radius`, at `centre` where its cast along `motion`
@@ -74,18 +73,18 @@ inline std::optional<Met> castAgainst(const WorldState& w, std::uint32_t slot, V
 /// on, or, along a normal on neither axis, moved along it to touching.
 inline Vec2 touchingAt(const WorldState& w, Vec2 centre, Vec2 half, float radius, Vec2 motion,
                        const Met& m) {
-    const int axis = m.contact.axis;
-    if (axis < 0)
+    const Axis axis = m.contact.axis;
+    if (axis == kFromInside)
         return centre;
     const Body& body = w.slots[m.slot];
-    const Vec2 n = m.touching;
-    if (axis == 2)
-        centre += n * (m.extent - dot(centre - body.position, n));
+    const Vec2 n = m.contact.touching;
+    if (axis == kAlongSlope)
+        centre += n * (m.contact.extent - dot(centre - body.position, n));
     else if (radius == 0.0f && body.isBox())
         centre[axis] =
             body.position[axis] - std::copysign(half[axis] + body.half[axis], motion[axis]);
     else
-        centre[axis] = body.position[axis] + n[axis] * m.extent;
+        centre[axis] = body.position[axis] + n[axis] * m.contact.extent;
     return centre;
 }
 

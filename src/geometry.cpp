@@ -18,8 +18,8 @@ struct Crossing {
 
     /// The axis whose slab it enters last, where it enters the box; a tie goes to y, or to
     /// x when `tieToX`.
-    int entryAxis(bool tieToX = false) const {
-        return (tieToX ? enter[1] > enter[0] : enter[1] >= enter[0]) ? 1 : 0;
+    Axis entryAxis(bool tieToX = false) const {
+        return (tieToX ? enter[1] > enter[0] : enter[1] >= enter[0]) ? kAlongY : kAlongX;
     }
 };
 
@@ -89,16 +89,16 @@ Axis contactAxis(float gapX, float gapY, float skinX, float skinY) {
     const bool overlapX = gapX < -skinX;
     const bool overlapY = gapY < -skinY;
     if (overlapX && overlapY)
-        return gapX > gapY ? Axis::X : Axis::Y;
+        return gapX > gapY ? kAlongX : kAlongY;
     if (overlapY)
-        return Axis::X;
+        return kAlongX;
     if (overlapX)
-        return Axis::Y;
+        return kAlongY;
     if (gapY <= skinY)
-        return Axis::Y;
+        return kAlongY;
     if (gapX <= skinX)
-        return Axis::X;
-    return gapX > gapY ? Axis::X : Axis::Y;
+        return kAlongX;
+    return gapX > gapY ? kAlongX : kAlongY;
 }
 
 std::optional<Hit> sweepBox(Vec2 offset, Vec2 reach, Vec2 motion, Vec2 skin) {
@@ -108,7 +108,7 @@ std::optional<Hit> sweepBox(Vec2 offset, Vec2 reach, Vec2 motion, Vec2 skin) {
     const std::optional<Crossing> c = cross(grown(offset, deep), motion, false);
     if (!c)
         return std::nullopt;
-    const int axis = c->entryAxis(true);
+    const Axis axis = c->entryAxis(true);
     const float enter = c->enter[axis];
     if (enter < 0.0f || enter > 1.0f || enter >= c->leave)
         return std::nullopt;
@@ -124,7 +124,7 @@ std::optional<Hit> castBox(Vec2 offset, Vec2 reach, Vec2 motion, Vec2 skin) {
     const std::optional<Crossing> touch = cross(grown(offset, reach), motion, false);
     if (!penetrate || !touch)
         return std::nullopt;
-    const int axis = penetrate->entryAxis();
+    const Axis axis = penetrate->entryAxis();
     const float enter = penetrate->enter[axis];
     // Never deeper than the skin on both axes at once; or already that deep at the start
     // (inside, free to leave).
@@ -132,12 +132,12 @@ std::optional<Hit> castBox(Vec2 offset, Vec2 reach, Vec2 motion, Vec2 skin) {
         return std::nullopt;
     // Touching comes at or before penetrating, and may be before the start (overlapping
     // within the skin: moving in stops at once).
-    const int touchAxis = touch->entryAxis();
+    const Axis touchAxis = touch->entryAxis();
     const float time = touch->enter[touchAxis];
     if (time > 1.0f)
         return std::nullopt;
     if (time <= 0.0f)
-        return Hit{0.0f, faceNormal(axis, motion), -1};
+        return Hit{0.0f, faceNormal(axis, motion), kFromInside};
     return Hit{time, faceNormal(axis, motion), touchAxis};
 }
 
@@ -147,7 +147,7 @@ std::optional<Hit> castRay(Vec2 from, Vec2 delta, const Box& box) {
     const std::optional<Crossing> c = cross({box.min - from, box.max - from}, delta, true);
     if (!c)
         return std::nullopt;
-    const int axis = c->entryAxis();
+    const Axis axis = c->entryAxis();
     const float entry = c->enter[axis];
     // entry == leave is a grazed corner: it counts. leave <= 0: the ray starts on the box's
     // far side, heading away.
@@ -157,7 +157,7 @@ std::optional<Hit> castRay(Vec2 from, Vec2 delta, const Box& box) {
         return Hit{entry, faceNormal(axis, delta), axis};
     // Inside from the start: the face the ray heads for along its main direction.
     const int heading = std::abs(delta.y) >= std::abs(delta.x) ? 1 : 0;
-    return Hit{0.0f, faceNormal(heading, delta), -1};
+    return Hit{0.0f, faceNormal(heading, delta), kFromInside};
 }
 
 } // namespace jostle

@@ -84,8 +84,11 @@ inline float contactSkin(float slop, float halfA, float halfB) {
     return std::max(2.0f * slop, kMinimumSkin) * std::min(halfA, halfB);
 }
 
-/// The axis of a contact normal.
-enum class Axis { X, Y };
+/// Which way a contact, a hit or a cast points, the one vocabulary of every stage and
+/// query: along x or along y (a vector's index 0 or 1), or along a slope or a curve (a
+/// normal at an angle); and, for a hit, from inside (touching or overlapping from the
+/// start, no face crossed).
+enum Axis : std::int8_t { kFromInside = -1, kAlongX = 0, kAlongY = 1, kAlongSlope = 2 };
 
 /// The axis along which two boxes touch, for the physical model. `gapX` and `gapY` are
 /// the distances between their edges along each axis (negative: they overlap by that
@@ -105,9 +108,10 @@ Axis contactAxis(float gapX, float gapY, float skinX, float skinY);
 struct Hit {
     float time;  ///< fraction of the motion, in [0, 1]
     Vec2 normal; ///< unit, along x or y: the face met, pointing back at the mover
-    /// The axis (0: x, 1: y) of the face the mover lies on exactly at `time`; -1 when it
-    /// touches the box, or is inside it, from the start.
-    int axis;
+    /// The axis of the face the mover lies on exactly at `time` (kAlongX, kAlongY; a shape's
+    /// hit may be kAlongSlope); kFromInside when it touches the box, or is inside it, from
+    /// the start.
+    Axis axis;
 };
 
 /// The solvers' sweep: box a moving by `motion` against still box b (`offset`, `reach`:

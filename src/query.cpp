@@ -129,7 +129,7 @@ std::optional<RayFound> rayMeets(const WorldState& w, const Candidates& candidat
                    rayShape(from - body.position, delta, body.half, w.shapes[slot])) {
         contact = Hit{hit->time, hit->normal, hit->axis};
     }
-    if (!contact || !stops(body, contact->normal, contact->axis >= 0, 0.0f))
+    if (!contact || !stops(body, contact->normal, contact->axis != kFromInside, 0.0f))
         return std::nullopt;
     return RayFound{slot, candidates.created(slot), *contact};
 }
@@ -137,11 +137,11 @@ std::optional<RayFound> rayMeets(const WorldState& w, const Candidates& candidat
 RayHit toRayHit(const WorldState& w, const RayFound& found, Vec2 from, Vec2 delta) {
     const Hit& contact = found.contact;
     Vec2 point = from + delta * contact.time;
-    if ((contact.axis == 0 || contact.axis == 1) && contact.time > 0.0f) {
+    if ((contact.axis == kAlongX || contact.axis == kAlongY) && contact.time > 0.0f) {
         // Exactly on the face, whatever the rounding of the fraction (a flat face of a
         // shape lies on its box's face too).
         const Box box = w.slots[found.slot].box();
-        if (contact.axis == 0)
+        if (contact.axis == kAlongX)
             point.x = contact.normal.x < 0.0f ? box.min.x : box.max.x;
         else
             point.y = contact.normal.y < 0.0f ? box.min.y : box.max.y;

@@ -23,7 +23,7 @@ float skinOf(const CastOutline& cast, int k) {
 /// Whether edge `k` of the outline stops the mover.
 bool stops(const CastOutline& cast, int k) {
     const std::uint8_t face = edgeOf(cast.outline, k).face;
-    return face == Outline::kSloped || (cast.stopping & face) != 0;
+    return face == kFaceSlope || (cast.stopping & face) != 0;
 }
 
 /// The times `t` at which the line from `start` along `motion` is `radius` away from the
@@ -160,16 +160,16 @@ float touchingExtent(const CastOutline& cast, const Crossing& crossing) {
 }
 
 /// ShapeHit::axis of a crossing met at a time > 0.
-int axisOf(const Crossing& crossing) {
+Axis axisOf(const Crossing& crossing) {
     const Vec2 n = crossing.normal;
     if (crossing.rounded || (n.x != 0.0f && n.y != 0.0f))
-        return 2;
-    return n.x != 0.0f ? 0 : 1;
+        return kAlongSlope;
+    return n.x != 0.0f ? kAlongX : kAlongY;
 }
 
 ShapeHit hitOf(const CastOutline& cast, const Crossing& crossing, float time) {
-    return {time, crossing.normal, axisOf(crossing), crossing.normal,
-            touchingExtent(cast, crossing)};
+    return {
+        {time, crossing.normal, axisOf(crossing)}, crossing.normal, touchingExtent(cast, crossing)};
 }
 
 /// The largest separation of `p` from the outline's edges (without its radius): > 0
@@ -201,7 +201,7 @@ float distanceFrom(const Outline& o, Vec2 p) {
 /// The sloped edge of a ramp's or segment's outline.
 const Outline::Edge& slopedEdge(const Outline& o) {
     for (int k = 0; k < o.count; ++k)
-        if (edgeOf(o, k).face == Outline::kSloped)
+        if (edgeOf(o, k).face == kFaceSlope)
             return edgeOf(o, k);
     return o.edges[0]; // not reached: only asked of ramps and segments
 }
@@ -247,7 +247,8 @@ std::optional<ShapeHit> castShape(const CastOutline& cast, Vec2 offset, Vec2 mot
     if (time > 1.0f)
         return std::nullopt;
     if (time <= 0.0f)
-        return ShapeHit{0.0f, deep->normal, -1, deep->normal, touchingExtent(cast, *deep)};
+        return ShapeHit{
+            {0.0f, deep->normal, kFromInside}, deep->normal, touchingExtent(cast, *deep)};
     // The normal of the edge it goes into; around a rounded corner, where it touches it.
     ShapeHit hit = hitOf(cast, *touch, time);
     if (!(deep->rounded && touch->rounded && deep->corner == touch->corner))
@@ -276,7 +277,7 @@ std::optional<ShapeHit> rayShape(Vec2 from, Vec2 delta, Vec2 half, const Shape& 
     const int heading = std::abs(delta.y) >= std::abs(delta.x) ? 1 : 0;
     Vec2 normal{0.0f, 0.0f};
     normal[heading] = delta[heading] > 0.0f ? -1.0f : 1.0f;
-    return ShapeHit{0.0f, normal, -1, normal, 0.0f};
+    return ShapeHit{{0.0f, normal, kFromInside}, normal, 0.0f};
 }
 
 bool shapeHolds(Vec2 half, const Shape& shape, Vec2 point) {

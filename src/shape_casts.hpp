@@ -38,14 +38,11 @@ struct CastOutline {
 CastOutline castOutlineOf(Vec2 moverHalf, float moverRadius, Vec2 half, const Shape& shape,
                           std::uint8_t stopping, float skinFactor);
 
-/// Where a mover meets a shape: geometry.hpp's Hit, and where exactly the two touch.
-struct ShapeHit {
-    float time;  ///< fraction of the motion, in [0, 1]
-    Vec2 normal; ///< unit, from the obstacle towards the mover
-    /// Where the mover touches the outline at `time`: 0 or 1, on a flat face along x or y,
-    /// which lies on the obstacle's box face; 2, along any other normal (a slope, a
-    /// rounded corner); -1: touching or inside from the start.
-    int axis;
+/// Where a mover meets a shape: geometry.hpp's Hit (its normal from the obstacle towards
+/// the mover; its axis kAlongX or kAlongY on a flat face, which lies on the obstacle's box
+/// face, kAlongSlope along any other normal: a slope, a rounded corner), and where exactly
+/// the two touch.
+struct ShapeHit : Hit {
     /// The outline's normal where the mover touches it: `normal`, but for a cast that
     /// touches one edge and goes deeper through the next (as castBox's touch axis).
     Vec2 touching;

@@ -133,7 +133,7 @@ Outline outlineOf(Vec2 core, float radius, Vec2 half, const Shape& shape) {
         const Vec2 onY{s.x * (core.x - obstacleCore.x), s.y * h.y};
         const bool xFaceFirst = (kEdgeFaces[(i + 3) % 4] & (kFaceMinusX | kFacePlusX)) != 0;
         vertices[n] = xFaceFirst ? onX : onY;
-        faces[n++] = Outline::kSloped;
+        faces[n++] = kFaceSlope;
         vertices[n] = xFaceFirst ? onY : onX;
         faces[n++] = kEdgeFaces[i];
     }
@@ -143,7 +143,7 @@ Outline outlineOf(Vec2 core, float radius, Vec2 half, const Shape& shape) {
         e.from = vertices[k];
         e.to = vertices[(k + 1) % n];
         e.face = faces[k];
-        if (e.face == Outline::kSloped) {
+        if (e.face == kFaceSlope) {
             e.normal = slopeNormalHere;
         } else {
             for (int f = 0; f < 4; ++f)
@@ -161,7 +161,7 @@ std::optional<Touch> touchOf(const Outline& outline, Vec2 offset, std::uint8_t p
     const float radius = outline.radius;
     auto pushes = [&](int k) {
         const std::uint8_t face = outline.edges[std::size_t(k)].face;
-        return face == Outline::kSloped ? slopedPushes : (pushing & face) != 0;
+        return face == kFaceSlope ? slopedPushes : (pushing & face) != 0;
     };
     apart = -std::numeric_limits<float>::infinity();
     int best = -1;

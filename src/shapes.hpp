@@ -41,6 +41,7 @@ enum FaceBit : std::uint8_t {
     kFaceMinusY = 4,
     kFacePlusY = 8,
     kAllFaces = 15,
+    kFaceSlope = 16, ///< a ramp's sloped face (an outline's edge from it)
 };
 
 /// The face bit of the box face whose outward normal is `sign` along `axis`.
@@ -78,12 +79,11 @@ Vec2 touchPointOf(Vec2 offset, Vec2 halfA, const Shape& shapeA, Vec2 halfB, cons
 /// the sum of the radii around it. Each edge comes from one face of the obstacle's box
 /// (a ramp's tips count as the faces they end on) or from its sloped face.
 struct Outline {
-    static constexpr std::uint8_t kSloped = 16; ///< the face of an edge from the slope
     struct Edge {
         Vec2 normal;       ///< outward, unit
         float offset;      ///< the edge's line: dot(p, normal) == offset
         Vec2 from, to;     ///< counter-clockwise in a y-up frame
-        std::uint8_t face; ///< its box face's bit (kFaceMinusX...), or kSloped
+        std::uint8_t face; ///< its box face's bit (kFaceMinusX...), or kFaceSlope
     };
     std::array<Edge, 5> edges;
     int count = 0;

@@ -84,28 +84,28 @@ TEST(ShortestSeparation, SeparatedBoxesNoLongerOverlap) {
 // contactAxis(gapX, gapY, skinX, skinY), with skins of 0.1.
 
 TEST(ContactAxis, DeepOverlapOnBothAxesTakesTheLeastPenetration) {
-    EXPECT_EQ(contactAxis(-1, -3, 0.1f, 0.1f), Axis::X);
-    EXPECT_EQ(contactAxis(-3, -1, 0.1f, 0.1f), Axis::Y);
-    EXPECT_EQ(contactAxis(-2, -2, 0.1f, 0.1f), Axis::Y); // tie
+    EXPECT_EQ(contactAxis(-1, -3, 0.1f, 0.1f), kAlongX);
+    EXPECT_EQ(contactAxis(-3, -1, 0.1f, 0.1f), kAlongY);
+    EXPECT_EQ(contactAxis(-2, -2, 0.1f, 0.1f), kAlongY); // tie
 }
 
 TEST(ContactAxis, SideBySideWhenOnlyOneAxisOverlaps) {
-    EXPECT_EQ(contactAxis(0.5f, -3, 0.1f, 0.1f), Axis::X); // a wall ahead
-    EXPECT_EQ(contactAxis(-3, 0.5f, 0.1f, 0.1f), Axis::Y); // a floor below
+    EXPECT_EQ(contactAxis(0.5f, -3, 0.1f, 0.1f), kAlongX); // a wall ahead
+    EXPECT_EQ(contactAxis(-3, 0.5f, 0.1f, 0.1f), kAlongY); // a floor below
 }
 
 TEST(ContactAxis, ARestingOverlapIsTouchingNotPenetration) {
     // A box resting on a floor box (0.05 deep) reaches the next floor box: it is just
     // entering it sideways (0.01), but that is the floor, not a wall.
-    EXPECT_EQ(contactAxis(-0.01f, -0.05f, 0.1f, 0.1f), Axis::Y);
-    EXPECT_EQ(contactAxis(0.5f, -0.05f, 0.1f, 0.1f), Axis::Y);
+    EXPECT_EQ(contactAxis(-0.01f, -0.05f, 0.1f, 0.1f), kAlongY);
+    EXPECT_EQ(contactAxis(0.5f, -0.05f, 0.1f, 0.1f), kAlongY);
     // Falling along a wall of boxes, flush with it, above the next wall box.
-    EXPECT_EQ(contactAxis(0, 0.5f, 0.1f, 0.1f), Axis::X);
+    EXPECT_EQ(contactAxis(0, 0.5f, 0.1f, 0.1f), kAlongX);
 }
 
 TEST(ContactAxis, ApartOnBothAxesTakesTheLargerGap) {
-    EXPECT_EQ(contactAxis(2, 1, 0.1f, 0.1f), Axis::X);
-    EXPECT_EQ(contactAxis(1, 2, 0.1f, 0.1f), Axis::Y);
+    EXPECT_EQ(contactAxis(2, 1, 0.1f, 0.1f), kAlongX);
+    EXPECT_EQ(contactAxis(1, 2, 0.1f, 0.1f), kAlongY);
 }
 
 // --- Moving through a box ----------------------------------------------------------------
@@ -123,7 +123,7 @@ TEST(SweepBox, StopsWhereTheMoverFirstGoesDeeperThanTheSkin) {
     ASSERT_TRUE(hit);
     EXPECT_FLOAT_EQ(hit->time, 0.3f);
     EXPECT_EQ(hit->normal, (Vec2{-1, 0}));
-    EXPECT_EQ(hit->axis, 0);
+    EXPECT_EQ(hit->axis, kAlongX);
     const std::optional<Hit> skinned = sweepBox({-5, 0}, kReach, {10, 0}, {0.1f, 0.1f});
     ASSERT_TRUE(skinned);
     EXPECT_FLOAT_EQ(skinned->time, 0.31f);
@@ -153,7 +153,7 @@ TEST(CastBox, HitsWhereTheBoxesFirstTouch) {
     ASSERT_TRUE(hit);
     EXPECT_FLOAT_EQ(hit->time, 0.3f);
     EXPECT_EQ(hit->normal, (Vec2{-1, 0}));
-    EXPECT_EQ(hit->axis, 0);
+    EXPECT_EQ(hit->axis, kAlongX);
 }
 
 TEST(CastBox, TouchingAtTheStartAndMovingInStopsAtOnce) {
@@ -161,7 +161,7 @@ TEST(CastBox, TouchingAtTheStartAndMovingInStopsAtOnce) {
     ASSERT_TRUE(hit);
     EXPECT_EQ(hit->time, 0.0f);
     EXPECT_EQ(hit->normal, (Vec2{-1, 0}));
-    EXPECT_EQ(hit->axis, -1);
+    EXPECT_EQ(hit->axis, kFromInside);
 }
 
 TEST(CastBox, SlidingAlongAFaceOrMovingAwayIsNoHit) {
@@ -175,7 +175,7 @@ TEST(CastBox, ExactlyIntoACornerMeetsTheYFace) {
     ASSERT_TRUE(hit);
     EXPECT_FLOAT_EQ(hit->time, 0.3f);
     EXPECT_EQ(hit->normal, (Vec2{0, -1}));
-    EXPECT_EQ(hit->axis, 1);
+    EXPECT_EQ(hit->axis, kAlongY);
 }
 
 TEST(CastRay, MeetsTheFaceItEntersThrough) {
@@ -185,7 +185,7 @@ TEST(CastRay, MeetsTheFaceItEntersThrough) {
     ASSERT_TRUE(hit);
     EXPECT_FLOAT_EQ(hit->time, 0.4f);
     EXPECT_EQ(hit->normal, (Vec2{-1, 0}));
-    EXPECT_EQ(hit->axis, 0);
+    EXPECT_EQ(hit->axis, kAlongX);
 }
 
 TEST(CastRay, TouchingCountsButLeavingFromTheStartDoesNot) {
@@ -201,7 +201,7 @@ TEST(CastRay, StartingInsideHitsAtOnceTheFaceItHeadsFor) {
     ASSERT_TRUE(hit);
     EXPECT_EQ(hit->time, 0.0f);
     EXPECT_EQ(hit->normal, (Vec2{0, -1}));
-    EXPECT_EQ(hit->axis, -1);
+    EXPECT_EQ(hit->axis, kFromInside);
 }
 
 TEST(CastRay, ExactlyIntoACornerMeetsTheYFace) {

@@ -2,6 +2,7 @@
 // and writes these; src/physical/step.cpp lists the stages.
 #pragma once
 
+#include "../geometry.hpp"
 #include "jostle/math.hpp"
 
 #include <cstdint>
@@ -21,14 +22,13 @@ struct SolverBody {
 /// rotate, so a contact is one normal and one tangent, and its effective mass is
 /// 1 / (invMassA + invMassB) and nothing else. Between boxes the normal lies along x or
 /// y, and the passes work on that axis alone; a slope or a rounded corner gives any other
-/// normal (axis kSloped).
+/// normal (axis kAlongSlope).
 struct Contact {
-    static constexpr std::uint8_t kSloped = 2;
     std::uint32_t ia, ib; ///< solver bodies; a is the body created first
-    /// The normal points from b towards a along one axis (0: x, 1: y), with this sign;
-    /// the tangent is the other axis, with its own sign (the normal turned a quarter,
-    /// (-ny, nx)). kSloped: along `sloped`, the tangent (-ny, nx).
-    std::uint8_t axis;
+    /// The normal points from b towards a along one axis (kAlongX, kAlongY), with this
+    /// sign; the tangent is the other axis, with its own sign (the normal turned a quarter,
+    /// (-ny, nx)). kAlongSlope: along `sloped`, the tangent (-ny, nx).
+    Axis axis;
     /// Which body holds the other, staying put in shock propagation and position
     /// correction (support.hpp says when): 0 none, 1 a, 2 b.
     std::uint8_t supporter = 0;
@@ -57,11 +57,11 @@ struct Contact {
     /// Of the impacts stage (impacts.hpp): both bodies felt it; not warm-started.
     float collisionImpulse = 0.0f;
     float approachSpeed = 0.0f; ///< how fast the pair closed when the step began (>= 0)
-    Vec2 sloped;                ///< the normal of a kSloped contact, unit
-    float size = 0.0f;          ///< of a kSloped contact: the smaller body's reach along the normal
+    Vec2 sloped;                ///< the normal of a kAlongSlope contact, unit
+    float size = 0.0f; ///< of a kAlongSlope contact: the smaller body's reach along the normal
 
     Vec2 normal() const {
-        return axis == 0 ? Vec2{sign, 0.0f} : axis == 1 ? Vec2{0.0f, sign} : sloped;
+        return axis == kAlongX ? Vec2{sign, 0.0f} : axis == kAlongY ? Vec2{0.0f, sign} : sloped;
     }
     Vec2 tangent() const {
         const Vec2 n = normal();

@@ -38,13 +38,13 @@ std::optional<Facing> chooseNormal(const StepContext& step, const Body& a, const
     if ((gapX > skinX && staysApart(a, b, normalX, gapX, step.dt)) ||
         (gapY > skinY && staysApart(a, b, normalY, gapY, step.dt)))
         return std::nullopt;
-    bool alongX = contactAxis(gapX, gapY, skinX, skinY) == Axis::X;
+    bool alongX = contactAxis(gapX, gapY, skinX, skinY) == kAlongX;
     if (gapX > skinX && gapY > skinY && (a.invMass == 0.0f || b.invMass == 0.0f)) {
         const std::optional<Hit> path =
             sweepBox(d, a.half + b.half, (a.velocity - b.velocity) * step.dt, Vec2{});
         if (!path)
             return std::nullopt;
-        alongX = path->axis == 0;
+        alongX = path->axis == kAlongX;
     }
     const bool oneStatic =
         a.type != b.type && (a.type == BodyType::Static || b.type == BodyType::Static);
@@ -116,8 +116,8 @@ std::optional<ShapedFacing> chooseShapedNormal(const StepContext& step, std::uin
         return std::nullopt;
     if (!stops(obstacle, touch->normal, touch->gap >= -skin, mover.dropThroughTime))
         return std::nullopt;
-    return ShapedFacing{aIsObstacle ? -touch->normal : touch->normal, touch->gap, skin,
-                        touch->extent, size};
+    return ShapedFacing{
+        {aIsObstacle ? -touch->normal : touch->normal, touch->gap, skin}, touch->extent, size};
 }
 
 } // namespace jostle

@@ -36,13 +36,11 @@ struct Facing {
 ///   pair overlapping deeper than the skin goes the shallower way out, covered or not.
 std::optional<Facing> chooseNormal(const StepContext& step, const Body& a, const Body& b);
 
-/// A pair where one body is not a sharp box (shapes.hpp), as chooseNormal for boxes.
-struct ShapedFacing {
-    Vec2 normal; ///< from b towards a
-    float gap;
-    float skin;
-    float extent;
-    float size; ///< the smaller reach along the normal
+/// A pair where one body is not a sharp box (shapes.hpp), as chooseNormal for boxes: the
+/// normal (from b towards a, at any angle), gap and skin, and where the two touch along it.
+struct ShapedFacing : Facing {
+    float extent; ///< the value of (a - b) · normal at which the two touch
+    float size;   ///< the smaller reach along the normal
 };
 
 /// Where a pair with a rounded body, a ramp or a segment touches, or nothing if it cannot

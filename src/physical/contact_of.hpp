@@ -31,7 +31,7 @@ inline float frictionOfPair(const StepContext& step, const Body& a, const Body& 
 inline Contact contactOf(const StepContext& step, const Body& a, const Body& b, Vec2 normal) {
     Contact c;
     const bool alongX = normal.x != 0.0f;
-    c.axis = alongX ? 0 : 1;
+    c.axis = alongX ? kAlongX : kAlongY;
     c.sign = alongX ? normal.x : normal.y;
     c.tangentSign = alongX ? normal.x : -normal.y;
     c.extent = alongX ? a.half.x + b.half.x : a.half.y + b.half.y;

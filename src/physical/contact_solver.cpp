@@ -31,7 +31,7 @@ float relativeSpeed(const StepContext& step, const Contact& c, Vec2 direction) {
 
 void warmStart(StepContext& step) {
     forEachContact(step, [&](const Contact& c) {
-        if (c.axis == Contact::kSloped) {
+        if (c.axis == kAlongSlope) {
             applyImpulse(step, c, c.sloped, c.normalImpulse);
             applyImpulse(step, c, c.tangent(), c.tangentImpulse);
             return;
@@ -67,7 +67,7 @@ void solveSloped(StepContext& step, Contact& c) {
 
 void velocityPass(StepContext& step) {
     forEachContact(step, [&](Contact& c) {
-        if (c.axis == Contact::kSloped) {
+        if (c.axis == kAlongSlope) {
             solveSloped(step, c);
             return;
         }
@@ -108,7 +108,7 @@ void propagateShock(StepContext& step) {
         const float invMass = c.supporter == 1 ? c.invMassB : c.invMassA;
         if (invMass <= 0.0f)
             return;
-        if (c.axis == Contact::kSloped) {
+        if (c.axis == kAlongSlope) {
             const float speed = relativeSpeed(step, c, c.sloped);
             const float impulse = std::max(-(speed - c.targetSpeed) / invMass, -c.normalImpulse);
             SolverBody& held = step.bodies[c.supporter == 1 ? c.ib : c.ia];

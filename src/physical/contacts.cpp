@@ -37,11 +37,11 @@ Contact shapedContactOf(const StepContext& step, const Body& a, const Body& b,
     const Vec2 n = facing.normal;
     if (n.x == 0.0f || n.y == 0.0f) {
         const bool alongX = n.x != 0.0f;
-        c.axis = alongX ? 0 : 1;
+        c.axis = alongX ? kAlongX : kAlongY;
         c.sign = alongX ? n.x : n.y;
         c.tangentSign = alongX ? n.x : -n.y;
     } else {
-        c.axis = Contact::kSloped;
+        c.axis = kAlongSlope;
         c.sign = c.tangentSign = 1.0f;
     }
     c.sloped = n;
@@ -289,7 +289,7 @@ bool isVetoed(const StepContext& step, std::uint32_t slotA, std::uint32_t slotB)
 
 Contact contactAlongShape(const StepContext& step, const Body& a, const Body& b, Vec2 normal,
                           float extent, float size) {
-    return shapedContactOf(step, a, b, ShapedFacing{normal, 0.0f, 0.0f, extent, size});
+    return shapedContactOf(step, a, b, ShapedFacing{{normal, 0.0f, 0.0f}, extent, size});
 }
 
 } // namespace jostle

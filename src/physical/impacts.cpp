@@ -41,10 +41,10 @@ void shiftApart(StepContext& step, const Contact& c, Vec2 normal, float shift) {
 /// first test, worked out along the contact's axis (the same comparison, but for the sign
 /// of a zero), so that the many contacts that do not meet cost little.
 inline bool mayMeet(const StepContext& step, const Contact& c) {
-    if (c.axis == Contact::kSloped)
+    if (c.axis == kAlongSlope)
         return true;
     const std::vector<Vec2>& gravity = step.scratch.impacts.gravityInStep;
-    const auto along = [&](Vec2 v) { return c.axis == 0 ? v.x : v.y; };
+    const auto along = [&](Vec2 v) { return c.axis == kAlongX ? v.x : v.y; };
     const float vn =
         c.sign * (step.bodies[c.ia].velocity[c.axis] - step.bodies[c.ib].velocity[c.axis]);
     const float fromGravity =

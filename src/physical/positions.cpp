@@ -20,7 +20,7 @@ bool correctionPass(StepContext& step) {
         const float overlap = step.overlapOf(c);
         // Centres that have passed each other along the normal (a kinematic body that
         // went on through what it pushed): pushing "out" would push through.
-        const bool sloped = c.axis == Contact::kSloped;
+        const bool sloped = c.axis == kAlongSlope;
         if (!sloped && overlap > c.extent)
             return;
         const float excess = overlap - c.slop;

@@ -33,8 +33,7 @@ void findCrush(const WorldState& w, const Contact& c, std::uint32_t slotA, std::
     const std::uint32_t by = kinematicA ? slotA : slotB;
     const Vec2 into = kinematicA ? -c.normal() : c.normal();
     const Vec2 bodyHalf = w.slots[body].half;
-    const float half =
-        c.axis == Contact::kSloped ? std::min(bodyHalf.x, bodyHalf.y) : bodyHalf[c.axis];
+    const float half = c.axis == kAlongSlope ? std::min(bodyHalf.x, bodyHalf.y) : bodyHalf[c.axis];
     if (dot(w.slots[by].velocity, into) > 0.0f && overlap > kCrushDepth * half)
         candidates.push_back({body, by, into});
 }
@@ -102,8 +101,8 @@ void reportEvents(StepContext& step) {
             const Contact& c = step.contacts[k];
             // The solver bodies hold where the step leaves every body of a contact.
             const float gap = -step.overlapOf(c);
-            const float skin = std::max(
-                2.0f * c.slop, kMinimumSkin * (c.axis == Contact::kSloped ? c.size : c.extent));
+            const float skin =
+                std::max(2.0f * c.slop, kMinimumSkin * (c.axis == kAlongSlope ? c.size : c.extent));
             const std::uint32_t slotA = step.bodies[c.ia].slot, slotB = step.bodies[c.ib].slot;
             // A pair that collided touched this step, if only for a moment: a bounce from
             // the middle of the step ends it apart.

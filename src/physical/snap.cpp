@@ -31,8 +31,9 @@ bool leavesGround(const WorldState& w, std::uint32_t slot) {
 /// The normal along which a cast met `m`: a box meeting a box, the hit's axis; else where
 /// the two touch.
 Vec2 normalOf(const WorldState& w, const Met& m, float radius) {
-    return m.contact.axis < 2 && radius == 0.0f && w.slots[m.slot].isBox() ? m.contact.normal
-                                                                           : m.touching;
+    return m.contact.axis != kAlongSlope && radius == 0.0f && w.slots[m.slot].isBox()
+               ? m.contact.normal
+               : m.contact.touching;
 }
 
 /// The floor the body in `slot` first meets moving down by `motion`: what stops it (one-way
@@ -128,7 +129,8 @@ void snapToGround(StepContext& step) {
         const float size = std::min(reachOf(body.half, w.shapes[slot], n),
                                     reachOf(obstacle.half, w.shapes[floor->slot], n));
         found.sweepStart = found.found.size();
-        addFoundContact(step, slot, {floor->contact, floor->slot, floor->extent, size}, 0.0f);
+        addFoundContact(step, slot, {floor->contact, floor->slot, floor->contact.extent, size},
+                        0.0f);
     }
     if (!found.found.empty()) {
         step.contacts.insert(step.contacts.end(), found.found.begin(), found.found.end());

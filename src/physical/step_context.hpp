@@ -50,7 +50,7 @@ struct StepContext {
     /// How deep the pair of contact `c` overlaps along its normal where the solver bodies
     /// are now (negative: the gap between them).
     float overlapOf(const Contact& c) const {
-        if (c.axis == Contact::kSloped)
+        if (c.axis == kAlongSlope)
             return c.extent - dot(positionOf(c.ia) - positionOf(c.ib), c.sloped);
         return c.extent - c.sign * (bodies[c.ia].position[c.axis] - bodies[c.ib].position[c.axis]);
     }
@@ -80,7 +80,7 @@ struct StepContext {
     /// the smaller half extent along the normal, and four float steps at the pair's
     /// coordinates. Overlap within the slop and this is within the slop.
     float noiseOf(const Contact& c) const {
-        if (c.axis == Contact::kSloped) {
+        if (c.axis == kAlongSlope) {
             const Vec2 pa = positionOf(c.ia), pb = positionOf(c.ib);
             const float largest = std::max({std::abs(pa.x), std::abs(pa.y), std::abs(pb.x),
                                             std::abs(pb.y), std::abs(c.extent)});
@@ -96,7 +96,7 @@ struct StepContext {
     /// position correction leaves them.
     bool beyondSlop(const Contact& c) const {
         const float overlap = overlapOf(c);
-        return (c.axis == Contact::kSloped || overlap <= c.extent) && overlap - c.slop > noiseOf(c);
+        return (c.axis == kAlongSlope || overlap <= c.extent) && overlap - c.slop > noiseOf(c);
     }
 
 private:

@@ -73,7 +73,7 @@ void findBacking(StepContext& step) {
     std::vector<std::uint8_t>& backing = step.scratch.support.backing;
     backing.assign(step.bodies.size(), 0);
     for (const Contact& c : step.contacts) {
-        if (c.targetSpeed < 0.0f || c.axis == Contact::kSloped)
+        if (c.targetSpeed < 0.0f || c.axis == kAlongSlope)
             continue;
         // The normal points from b towards a: b lies on a's side -sign, a on b's +sign.
         if (c.invMassB == 0.0f)
@@ -106,7 +106,7 @@ std::uint8_t supporterOf(const StepContext& step, const Contact& c) {
     }
     // Neither holding the other up, between two dynamic bodies: one with a static or
     // kinematic body right behind it, on the side the contact pushes it to.
-    if (supporter == 0 && c.invMassA > 0.0f && c.invMassB > 0.0f && c.axis != Contact::kSloped) {
+    if (supporter == 0 && c.invMassA > 0.0f && c.invMassB > 0.0f && c.axis != kAlongSlope) {
         const bool aHeld = isBacked(step, c.ia, c.axis, c.sign);
         const bool bHeld = isBacked(step, c.ib, c.axis, -c.sign);
         supporter = aHeld && !bHeld ? 1 : bHeld && !aHeld ? 2 : 0;
