@@ -34,9 +34,10 @@ void createAndDestroy(int bodies) {
         world.destroyBody(id);
 }
 
-TEST(DestroyMany, AMillionTakeTenTimesAsLongAsAHundredThousand) {
-    const double growth = test_support::growthOf([] { createAndDestroy(100'000); },
-                                                 [] { createAndDestroy(1'000'000); });
+TEST(DestroyMany, TenTimesTheBodiesTakeTenTimesAsLong) {
+    // 300,000 in reverse took minutes when each destroy searched the creation order.
+    const double growth = test_support::growthOf([] { createAndDestroy(30'000); },
+                                                 [] { createAndDestroy(300'000); });
     EXPECT_LT(growth, 30.0) << "ten times the bodies";
 }
 
