@@ -1,0 +1,29 @@
+#!/usr/bin/env bash
+# Installs the built jostle into a scratch prefix, then builds the C and the C++ consumer
+# programs (tests/c/consumer, tests/consumer) with nothing but the compiler and
+# `pkg-config --cflags --libs jostle`, and runs them: each drops a box on a floor.
+#   run_pkgconfig_test.sh BUILD_DIR SOURCE_DIR WORK_DIR CC CXX "CFLAGS" "CXXFLAGS" "LDFLAGS"
+set -euo pipefail
+build=$1 source=$2 work=$3 cc=$4 cxx=$5 cflags=$6 cxxflags=$7 ldflags=$8
+command -v pkg-config >/dev/null || { echo "pkg-config not found (apt-get install pkgconf)"; exit 77; }
+rm -rf "$work"
+mkdir -p "$work"
+cmake --install "$build" --prefix "$work/prefix" >/dev/null
+pc_dir=$(dirname "$(find "$work/prefix" -name jostle.pc | head -1)")
+export PKG_CONFIG_PATH=$pc_dir
+echo "pkg-config --modversion jostle: $(pkg-config --modversion jostle)"
+# A sanitized clang build's library needs the sanitizers' C++ runtime in a C link too.
+c_ldflags=$ldflags
+if [[ $ldflags == *-fsanitize* ]] && $cc --version | grep -q clang; then
+  c_ldflags="$ldflags -fsanitize-link-c++-runtime"
+fi
+# shellcheck disable=SC2046,SC2086
+$cc $cflags "$source/tests/c/consumer/main.c" -o "$work/c_consumer" $c_ldflags $(pkg-config --cflags --libs jostle)
+# shellcheck disable=SC2046,SC2086
+$cxx -std=c++20 $cxxflags "$source/tests/consumer/main.cpp" -o "$work/cxx_consumer" $ldflags $(pkg-config --cflags --libs jostle)
+"$work/c_consumer"
+"$work/cxx_consumer"
+if [ -f "$pc_dir/jostle-scene.pc" ]; then
+  pkg-config --exists --print-errors "jostle-scene = $(pkg-config --modversion jostle)"
+  echo "jostle-scene: $(pkg-config --libs jostle-scene)"
+fi
