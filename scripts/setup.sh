@@ -7,6 +7,7 @@ set -euo pipefail
 packages=(
   cmake g++ make          # the build
   pkgconf                 # the installed package is tested through pkg-config too
+  dpkg-dev lintian luarocks  # the Debian package and the rock (scripts/package.sh)
   libgtest-dev libgmock-dev  # tests
   nlohmann-json3-dev      # scene files
   libcli11-dev            # the jostle program's command line

@@ -8,12 +8,14 @@
 #pragma once
 
 #include "jostle/math.hpp"
+#include "jostle/visibility.h"
 
 #include <cstdint>
 #include <optional>
 #include <string>
 
 namespace jostle {
+JOSTLE_EXPORT_BEGIN
 
 /// How a body moves.
 enum class BodyType : std::uint8_t {
@@ -186,4 +188,5 @@ bool isValidOneWay(Vec2 normal);
 /// True if `corner` is acceptable as BodyDef::slope.
 bool isValidSlope(Vec2 corner);
 
+JOSTLE_EXPORT_END
 } // namespace jostle

@@ -8,13 +8,16 @@
 // "createBody: BodyDef.hw: must be > 0". The world is left as it was before the call.
 #pragma once
 
+#include "jostle/visibility.h"
 #include <stdexcept>
 
 namespace jostle {
+JOSTLE_EXPORT_BEGIN
 
 class Error : public std::invalid_argument {
 public:
     using std::invalid_argument::invalid_argument;
 };
 
+JOSTLE_EXPORT_END
 } // namespace jostle

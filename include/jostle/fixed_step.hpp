@@ -16,6 +16,7 @@
 #pragma once
 
 #include "jostle/error.hpp"
+#include "jostle/visibility.h"
 #include "jostle/world.hpp"
 
 #include <algorithm>
@@ -25,6 +26,7 @@
 #include <vector>
 
 namespace jostle {
+JOSTLE_EXPORT_BEGIN
 
 class FixedStep {
 public:
@@ -198,4 +200,5 @@ private:
     double dropped_ = 0.0;
 };
 
+JOSTLE_EXPORT_END
 } // namespace jostle

@@ -89,6 +89,9 @@
 #ifndef JOSTLE_JOSTLE_H
 #define JOSTLE_JOSTLE_H
 
+#include "jostle/version.h"
+#include "jostle/visibility.h"
+
 #include <stdbool.h>
 #include <stdint.h>
 
@@ -100,6 +103,14 @@ extern "C" {
 #else
 #define JOSTLE_ENUM_BASE_
 #endif
+JOSTLE_EXPORT_BEGIN
+
+// === Version ===============================================================================
+
+/// The version of the library this program runs with, "major.minor.patch" (for example
+/// "0.1.0"). Compare it with JOSTLE_VERSION_STRING (jostle/version.h), the headers' version,
+/// to catch a program built against other headers than the library it loads.
+const char* jostle_version(void);
 
 // === Errors ================================================================================
 
@@ -1010,6 +1021,7 @@ int jostle_fixed_step_max_steps_per_frame(const jostle_fixed_step* clock);
 /// Forgets the time left over and the dropped time (after a pause or a level load).
 bool jostle_fixed_step_reset(jostle_fixed_step* clock);
 
+JOSTLE_EXPORT_END
 #ifdef __cplusplus
 } // extern "C"
 #endif

@@ -4,9 +4,11 @@
 // is clever: a 2D vector and the few operations the library and its users need.
 #pragma once
 
+#include "jostle/visibility.h"
 #include <cmath>
 
 namespace jostle {
+JOSTLE_EXPORT_BEGIN
 
 /// A 2D vector: a position, a velocity, half extents or a normal.
 struct Vec2 {
@@ -77,4 +79,5 @@ inline bool inRange(Vec2 a) {
     return inRange(a.x) && inRange(a.y);
 }
 
+JOSTLE_EXPORT_END
 } // namespace jostle

@@ -41,6 +41,7 @@
 
 #include "jostle/body.hpp"
 #include "jostle/math.hpp"
+#include "jostle/visibility.h"
 #include "jostle/world.hpp"
 
 #include <cstdint>
@@ -49,6 +50,7 @@
 #include <vector>
 
 namespace jostle {
+JOSTLE_EXPORT_BEGIN
 
 /// Which bodies a query reports. The defaults report every body except sensors.
 ///
@@ -286,4 +288,5 @@ struct MoveOutcome {
 /// not finite, or that carries the body out of the range of math.hpp.
 MoveOutcome move(World& world, BodyId id, Vec2 delta, const MoveFilter& filter = {});
 
+JOSTLE_EXPORT_END
 } // namespace jostle

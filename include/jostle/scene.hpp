@@ -11,6 +11,7 @@
 #pragma once
 
 #include "jostle/tilemap.hpp"
+#include "jostle/visibility.h"
 #include "jostle/world.hpp"
 
 #include <cstddef>
@@ -20,6 +21,7 @@
 #include <vector>
 
 namespace jostle {
+JOSTLE_EXPORT_BEGIN
 
 /// A body of a scene: its definition and the name it goes by in traces.
 struct SceneBody {
@@ -66,4 +68,5 @@ std::vector<BodyId> addBodies(World& world, const Scene& scene);
 /// leaves the world as it was.
 std::vector<TileMapId> addTileMaps(World& world, const Scene& scene);
 
+JOSTLE_EXPORT_END
 } // namespace jostle

@@ -18,9 +18,11 @@
 // Callbacks (the pre-solve) and events stay on the thread that calls step().
 #pragma once
 
+#include "jostle/visibility.h"
 #include <cstdint>
 
 namespace jostle {
+JOSTLE_EXPORT_BEGIN
 
 /// Work jostle hands to a task system: run it for every item of [begin, end), on worker
 /// `worker` (in [0, workers), no two ranges running at once on the same one).
@@ -61,4 +63,5 @@ struct TaskSystem {
     void* userContext = nullptr; ///< passed to enqueueTask and finishTask as given
 };
 
+JOSTLE_EXPORT_END
 } // namespace jostle

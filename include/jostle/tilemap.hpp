@@ -18,6 +18,7 @@
 
 #include "jostle/body.hpp"
 #include "jostle/math.hpp"
+#include "jostle/visibility.h"
 
 #include <cstdint>
 #include <optional>
@@ -26,6 +27,7 @@
 #include <vector>
 
 namespace jostle {
+JOSTLE_EXPORT_BEGIN
 
 class World;
 
@@ -148,4 +150,5 @@ std::span<const BodyId> tileMapBodies(const World& world, TileMapId map);
 /// The map that `body` is part of, or the null TileMapId if it is not part of one.
 TileMapId tileMapOf(const World& world, BodyId body);
 
+JOSTLE_EXPORT_END
 } // namespace jostle

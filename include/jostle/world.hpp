@@ -18,6 +18,7 @@
 #include "jostle/error.hpp"
 #include "jostle/math.hpp"
 #include "jostle/tasks.hpp"
+#include "jostle/visibility.h"
 
 #include <functional>
 #include <limits>
@@ -28,6 +29,7 @@
 #include <vector>
 
 namespace jostle {
+JOSTLE_EXPORT_BEGIN
 
 struct TileMapId; // jostle/tilemap.hpp
 
@@ -507,4 +509,5 @@ private:
     std::unique_ptr<struct WorldState> state_;
 };
 
+JOSTLE_EXPORT_END
 } // namespace jostle

@@ -21,6 +21,8 @@ fi
 $cc $cflags "$source/tests/c/consumer/main.c" -o "$work/c_consumer" $c_ldflags $(pkg-config --cflags --libs jostle)
 # shellcheck disable=SC2046,SC2086
 $cxx -std=c++20 $cxxflags "$source/tests/consumer/main.cpp" -o "$work/cxx_consumer" $ldflags $(pkg-config --cflags --libs jostle)
+# -ljostle is the shared library where there is one: the programs load it from the prefix.
+export LD_LIBRARY_PATH=$(dirname "$pc_dir")
 "$work/c_consumer"
 "$work/cxx_consumer"
 if [ -f "$pc_dir/jostle-scene.pc" ]; then

@@ -15,6 +15,7 @@
 #include "trace.hpp"
 
 #include "jostle/scene.hpp"
+#include "jostle/version.h"
 
 #include <CLI/CLI.hpp>
 
@@ -206,7 +207,7 @@ std::string commandProblem(CLI::App& app, int argc, char** argv) {
     const std::string commands = " (commands: " + names + ")";
     if (argc < 2)
         return "a command is required" + commands;
-    if (known || app.get_help_ptr()->check_name(first))
+    if (known || app.get_help_ptr()->check_name(first) || app.get_version_ptr()->check_name(first))
         return {};
     if (first.starts_with('-'))
         return "unknown option '" + first + "'" + commands;
@@ -226,8 +227,9 @@ void holdStandardDescriptors() {
 
 int main(int argc, char** argv) {
     holdStandardDescriptors();
-    CLI::App app{"jostle: 2D axis-aligned box collision, from the command line.", "jostle"};
+    CLI::App app{"jostle: 2D collision detection and response, from the command line.", "jostle"};
     app.require_subcommand(1);
+    app.set_version_flag("--version", "jostle " JOSTLE_VERSION_STRING);
 
     RunOptions options;
     CLI::App* runCommand =

@@ -7,10 +7,7 @@
 //
 // docs/lua.md is the manual.
 #include "binding.hpp"
-
-#ifndef JOSTLE_VERSION
-#define JOSTLE_VERSION "unknown"
-#endif
+#include "jostle/version.h"
 
 namespace {
 
@@ -32,7 +29,7 @@ extern "C" __attribute__((visibility("default"))) int luaopen_jostle(lua_State* 
 
     lua_createtable(L, 0, 4);
     luaL_setfuncs(L, kModuleFunctions, 0);
-    lua_pushliteral(L, JOSTLE_VERSION);
+    lua_pushliteral(L, JOSTLE_VERSION_STRING);
     lua_setfield(L, -2, "version");
     return 1;
 }

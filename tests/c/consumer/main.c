@@ -2,6 +2,7 @@
 #include <jostle/jostle.h>
 
 #include <stdio.h>
+#include <string.h>
 
 int main(void) {
     jostle_world_def def = jostle_default_world_def();
@@ -24,7 +25,9 @@ int main(void) {
         jostle_world_step(world, 1.0f / 60.0f);
     /* The floor's top is at y = 90, so the resting box's centre is at 80. */
     float y = jostle_body_get_position(world, box).y;
-    printf("box at y = %g, errors: \"%s\"\n", (double)y, jostle_last_error());
+    printf("box at y = %g, errors: \"%s\"; library %s, headers %s\n", (double)y,
+           jostle_last_error(), jostle_version(), JOSTLE_VERSION_STRING);
     jostle_world_destroy(world);
-    return (y > 79.0f && y < 81.0f && jostle_last_error()[0] == '\0') ? 0 : 1;
+    const int sameVersion = strcmp(jostle_version(), JOSTLE_VERSION_STRING) == 0;
+    return (y > 79.0f && y < 81.0f && jostle_last_error()[0] == '\0' && sameVersion) ? 0 : 1;
 }

@@ -1,0 +1,63 @@
+#!/usr/bin/env bash
+# The Debian package works for each ecosystem's tool: makes it (scripts/package.sh, which
+# fails on a lintian error), unpacks it into a scratch root (dpkg -x: the install without
+# touching the machine), then, against that tree alone,
+#   - builds and runs the C and the C++ consumer with pkg-config (the shared library),
+#     and the C one linked with the static library too;
+#   - configures, builds and runs the C++ consumer with CMake (find_package(jostle));
+#   - requires the module in Lua 5.4 and in LuaJIT from Debian's module paths;
+#   - runs the jostle program.
+#   run_deb_test.sh SOURCE_DIR WORK_DIR VERSION
+set -euo pipefail
+source=$1 work=$2 version=$3
+for tool in dpkg-deb lintian pkg-config cpack; do
+  command -v $tool >/dev/null || { echo "$tool not found (scripts/setup.sh installs it)"; exit 77; }
+done
+mkdir -p "$work"
+package=$("$source/scripts/package.sh" "$work/build-deb" | tail -1)
+echo "package: $package"
+dpkg-deb --field "$package" Package Version
+[ "$(dpkg-deb --field "$package" Version)" = "$version" ] || { echo "not version $version"; exit 1; }
+
+root=$work/root
+rm -rf "$root"
+dpkg-deb -x "$package" "$root"
+arch=$(dpkg-architecture -qDEB_HOST_MULTIARCH)
+libdir=$root/usr/lib/$arch
+for f in "$libdir/libjostle.so.0.1" "$libdir/libjostle.a" "$libdir/pkgconfig/jostle.pc" \
+         "$libdir/cmake/jostle/jostleConfig.cmake" "$root/usr/include/jostle/jostle.h" \
+         "$libdir/lua/5.1/jostle.so" "$libdir/lua/5.4/jostle.so" "$root/usr/bin/jostle" \
+         "$root/usr/share/doc/jostle/copyright" "$root/usr/share/doc/jostle/changelog.gz"; do
+  [ -e "$f" ] || { echo "missing from the package: ${f#"$root"}"; exit 1; }
+done
+
+export PKG_CONFIG_PATH=$libdir/pkgconfig
+# shellcheck disable=SC2046
+cc "$source/tests/c/consumer/main.c" -o "$work/c_shared" $(pkg-config --cflags --libs jostle)
+# shellcheck disable=SC2046
+c++ -std=c++20 "$source/tests/consumer/main.cpp" -o "$work/cxx_shared" \
+  $(pkg-config --cflags --libs jostle)
+# shellcheck disable=SC2046
+cc "$source/tests/c/consumer/main.c" -o "$work/c_static" $(pkg-config --cflags jostle) \
+  -L"$libdir" -Wl,-Bstatic -ljostle -Wl,-Bdynamic -lstdc++ -lm -pthread
+# The shared library is the one the programs load.
+LD_LIBRARY_PATH=$libdir ldd "$work/c_shared" | grep -q "$libdir/libjostle.so.0.1" \
+  || { echo "c_shared does not load the package's libjostle.so.0.1"; exit 1; }
+LD_LIBRARY_PATH=$libdir "$work/c_shared"
+LD_LIBRARY_PATH=$libdir "$work/cxx_shared"
+"$work/c_static"
+
+cmake -S "$source/tests/consumer" -B "$work/cmake_consumer" -DCMAKE_PREFIX_PATH="$root/usr" \
+  -DCMAKE_BUILD_TYPE=Release >/dev/null
+cmake --build "$work/cmake_consumer" >/dev/null
+"$work/cmake_consumer/consumer"
+
+for lua in lua5.4 luajit; do
+  if command -v $lua >/dev/null; then
+    cpath=$libdir/lua/$([ $lua = luajit ] && echo 5.1 || echo 5.4)/?.so
+    LUA_CPATH=$cpath $lua "$source/tests/packaging/drop_box.lua" "$version"
+  fi
+done
+
+[ "$("$root/usr/bin/jostle" --version)" = "jostle $version" ]
+echo "the package works: C, C++ (pkg-config and CMake), Lua 5.4, LuaJIT, jostle $version"
