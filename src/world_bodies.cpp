@@ -345,6 +345,10 @@ std::size_t World::readVelocities(std::span<Vec2> out) const {
     return readEach(*state_, out, &Body::velocity);
 }
 
+std::size_t World::readHalfExtents(std::span<Vec2> out) const {
+    return readEach(*state_, out, &Body::half);
+}
+
 // --- Forces -------------------------------------------------------------------------------
 
 void World::applyForce(BodyId id, Vec2 force) {

@@ -435,11 +435,11 @@ TEST(Range, TheLargestNumbersTogetherStayFinite) {
     }
 }
 
-TEST(World, ReadsEveryPositionAndVelocityInOneCall) {
+TEST(World, ReadsEveryPositionVelocityAndHalfExtentsInOneCall) {
     World world;
     const BodyId a = world.createBody({.x = 1, .y = 2, .hw = 1, .hh = 1, .vx = 3, .vy = 4});
-    const BodyId b = world.createBody({.x = 5, .y = 6, .hw = 1, .hh = 1, .vx = 7, .vy = 8});
-    world.createBody({.x = 9, .y = 10, .hw = 1, .hh = 1});
+    const BodyId b = world.createBody({.x = 5, .y = 6, .hw = 2, .hh = 3, .vx = 7, .vy = 8});
+    world.createBody({.x = 9, .y = 10, .hw = 4, .hh = 5});
     world.destroyBody(a); // the order is bodies()'s: b, then the third
     std::vector<Vec2> positions(5, Vec2{-1, -1}), velocities(1);
     EXPECT_EQ(world.readPositions(positions), 2u);
@@ -448,6 +448,10 @@ TEST(World, ReadsEveryPositionAndVelocityInOneCall) {
     EXPECT_EQ(positions[2], (Vec2{-1, -1}));         // left alone
     EXPECT_EQ(world.readVelocities(velocities), 1u); // as many as fit
     EXPECT_EQ(velocities[0], world.velocity(b));
+    std::vector<Vec2> halves(2);
+    EXPECT_EQ(world.readHalfExtents(halves), 2u);
+    EXPECT_EQ(halves[0], (Vec2{2, 3}));
+    EXPECT_EQ(halves[1], (Vec2{4, 5}));
 }
 
 // --- The edge of the world (math.hpp), found by the fuzzers (tests/fuzz/corpus/) --------

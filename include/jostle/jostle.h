@@ -313,6 +313,8 @@ int jostle_world_bodies(const jostle_world* world, jostle_body_id* out, int capa
 int jostle_world_read_positions(const jostle_world* world, jostle_vec2* out, int capacity);
 /// The same for their velocities.
 int jostle_world_read_velocities(const jostle_world* world, jostle_vec2* out, int capacity);
+/// The same for their half extents: with the positions, every box to draw.
+int jostle_world_read_half_extents(const jostle_world* world, jostle_vec2* out, int capacity);
 
 // === Bodies ================================================================================
 

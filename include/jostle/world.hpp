@@ -305,6 +305,8 @@ public:
     std::size_t readPositions(std::span<Vec2> out) const;
     /// The same for their velocities.
     std::size_t readVelocities(std::span<Vec2> out) const;
+    /// The same for their half extents (halfExtents): with the positions, every box to draw.
+    std::size_t readHalfExtents(std::span<Vec2> out) const;
 
     /// The body as a definition: its current position, velocity and settings.
     BodyDef bodyDef(BodyId id) const;

@@ -160,6 +160,13 @@ int jostle_world_read_velocities(const jostle_world* world, jostle_vec2* out, in
     });
 }
 
+int jostle_world_read_half_extents(const jostle_world* world, jostle_vec2* out, int capacity) {
+    return guard(__func__, 0, [&] {
+        const World& w = worldOf(world).world;
+        return readEach(w, out, capacity, [&](std::span<Vec2> read) { w.readHalfExtents(read); });
+    });
+}
+
 bool jostle_world_set_pre_solve(jostle_world* world, jostle_pre_solve_fn callback, void* context) {
     return guard(__func__, false, [&] {
         // Refused during a step: the C++ callback running now would be replaced under

@@ -895,7 +895,7 @@ static void test_read_positions(void) {
     jostle_body_id a = jostle_body_create(world, &def);
     def.x = 5, def.y = 6, def.vx = 7, def.vy = 8;
     jostle_body_create(world, &def);
-    def.x = 9, def.y = 10, def.vx = 0, def.vy = 0;
+    def.x = 9, def.y = 10, def.vx = 0, def.vy = 0, def.hw = 2, def.hh = 3;
     jostle_body_create(world, &def);
     CHECK(jostle_body_destroy(world, a), "destroyed: the order is the list's, b then c");
 
@@ -909,6 +909,9 @@ static void test_read_positions(void) {
     jostle_vec2 velocities[1] = {{-1, -1}};
     CHECK(jostle_world_read_velocities(world, velocities, 1) == 2, "the full count");
     CHECK(velocities[0].x == 7 && velocities[0].y == 8, "b's, as many as fit");
+    jostle_vec2 halves[2];
+    CHECK(jostle_world_read_half_extents(world, halves, 2) == 2, "two half extents");
+    CHECK(halves[0].x == 1 && halves[0].y == 1 && halves[1].x == 2 && halves[1].y == 3, "b, c");
     CHECK(jostle_world_read_positions(world, NULL, 0) == 2, "the count alone");
     CHECK_NO_ERROR();
 

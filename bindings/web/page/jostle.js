@@ -8,25 +8,26 @@
 //     world.step(1 / 60);
 //     const {x, y} = world.body(crate);
 //
-// Worlds and bodies are described as in scene files (docs/scene-format.md), and checked
-// as they are: a mistake throws an Error naming the field. Every argument is checked
-// before it reaches the module (JostleArgs): a wrong kind throws a TypeError naming the
-// function and the argument. `jostle.page` drives the demo's samples, for the page
-// itself (page.js).
+// It calls the C API (jostle.h, docs/c-api.md), which the module exports whole, as a C
+// program would; web_c_api.cpp adds what C cannot say: a scene file's JSON read into
+// jostle.h's definitions, and the last error in JavaScript's notation. Worlds and bodies
+// are described as in scene files (docs/scene-format.md), and checked as they are: a
+// mistake throws an Error naming the field. Every argument is checked before it reaches
+// the module (JostleArgs): a wrong kind throws a TypeError naming the function and the
+// argument. `jostle.page` drives the demo's samples, for the page itself (page.js).
 "use strict";
 
 /// The checks of the arguments a game passes, made before anything reaches the module:
 /// each throws a TypeError that names the function, the argument and what it got. What
-/// only the module knows (whether a body is alive, jostle's own rules: dt > 0, a static
-/// body does not move, a definition's fields) it reports itself, as an Error that names
-/// the function too.
+/// only the module knows (jostle's own rules: dt > 0, a static body does not move, a
+/// definition's fields) it reports itself, in the C API's last error, which Jostle.check
+/// throws as an Error that names the function too.
 class JostleArgs {
-  /// A body number: an integer >= 0. Returns it. (Whether a body has it is the module's
-  /// to say: "no such body: 3". A number past the int32 the module takes can name none.)
+  /// A body number: an integer >= 0. Returns it. (Whether a body has it is the world's
+  /// to say: "no such body: 3", JostleWorld.handle.)
   static body(fn, value) {
     if (typeof value !== "number" || !Number.isInteger(value) || value < 0)
       throw new TypeError(`${fn}: body must be a body number (an integer >= 0), got ${JostleArgs.describe(value)}`);
-    if (value > 0x7fffffff) throw new Error(`${fn}: no such body: ${value}`);
     return value;
   }
 
@@ -125,7 +126,20 @@ class Jostle {
   constructor(module) {
     this.module = module;
     this.page = new JostlePage(this);
+    // The module's memory where jostle.js lays out the structs of jostle.h's calls (at
+    // Jostle.HANDLE, VECTOR and OUT), and the buffer of boxes()'s reads, grown as needed.
+    this.scratch = module._malloc(Jostle.SCRATCH);
+    this.buffer = 0;
+    this.bufferSize = 0;
   }
+
+  // A struct of jostle.h goes through WebAssembly's C calls by address: an argument
+  // (jostle_body_id, jostle_vec2) as a pointer to its bytes, a result as a pointer, put
+  // first, to the bytes it is written to. Their places in the scratch memory, in bytes:
+  static HANDLE = 0; // a jostle_body_id or jostle_tile_map_id: index, generation, world
+  static VECTOR = 12; // a jostle_vec2 argument: x, y
+  static OUT = 20; // the results of body(): position, velocity (jostle_vec2), touching
+  static SCRATCH = 64;
 
   /// A world from a scene: an object or a scene file's text. Its bodies, if any, are
   /// numbered from 0 in their order.
@@ -135,12 +149,49 @@ class Jostle {
       if (typeof scene !== "object" || scene === null || Array.isArray(scene))
         throw new TypeError(`${fn}: scene must be an object or a scene file's text, got ${JostleArgs.describe(scene)}`);
     const text = typeof scene === "string" ? scene : JostleArgs.json(fn, {bodies: [], ...scene});
-    const number = this.withText(text, (p) => this.module._jostle_game_world_create(p));
-    this.check(fn, number);
-    return new JostleWorld(this, number);
+    const m = this.module;
+    // The scene loader reads the text into jostle.h's definitions (web_c_api.cpp), which
+    // jostle.h's functions then create, as a C program would.
+    const def = this.withText(text, (p) => m._jostle_web_read_scene(p));
+    this.check(fn, def !== 0);
+    try {
+      const pointer = m._jostle_world_create(def);
+      this.check(fn, pointer !== 0);
+      const world = new JostleWorld(this, pointer);
+      try {
+        for (let i = 0, map; (map = m._jostle_web_scene_tile_map(i)) !== 0; i++) {
+          m._jostle_tile_map_create(this.scratch + Jostle.HANDLE, pointer, map);
+          this.check(fn, m.HEAPU32[(this.scratch + Jostle.HANDLE) / 4 + 1] !== 0);
+        }
+        for (let i = 0, body; (body = m._jostle_web_scene_body(i)) !== 0; i++) {
+          m._jostle_body_create(this.scratch + Jostle.HANDLE, pointer, body);
+          world.created(fn);
+        }
+      } catch (error) {
+        m._jostle_world_destroy(pointer);
+        throw error;
+      }
+      return world;
+    } finally {
+      m._jostle_web_forget_scene();
+    }
   }
 
-  // --- Between JavaScript and the module's memory -----------------------------------
+  // --- Between JavaScript and the module --------------------------------------------
+
+  /// Does nothing if `ok`: a call of jostle.h (or web_c_api.cpp) said it did what was
+  /// asked (true, a pointer, a handle that is not null). Else throws its error, the C
+  /// API's last error in JavaScript's notation, named by the function `fn` where the C
+  /// function's name was ("jostle_body_set_velocity: setVelocity: a static body cannot
+  /// move" becomes "setVelocity: a static body cannot move", "jostle_web_read_body: hw:
+  /// must be > 0" "createBody: hw: must be > 0").
+  check(fn, ok) {
+    if (ok) return;
+    let message = this.text(this.module._jostle_web_last_error());
+    const cFunction = /^jostle_\w+: /.exec(message);
+    if (cFunction !== null) message = message.slice(cFunction[0].length);
+    throw new Error(message.startsWith(`${fn}: `) ? message : `${fn}: ${message}`);
+  }
 
   /// Calls fn with a pointer to `text` in the module's memory, as UTF-8; frees it after.
   withText(text, fn) {
@@ -164,21 +215,40 @@ class Jostle {
     return this.module.HEAPF32.slice(pointer / 4, pointer / 4 + count);
   }
 
-  /// Returns `result`, what a call of the game's surface returned, or throws its error,
-  /// which it reported with -1, named by the function `fn`.
-  check(fn, result) {
-    if (result >= 0) return result;
-    const message = this.text(this.module._jostle_game_error());
-    throw new Error(message.startsWith(`${fn}: `) ? message : `${fn}: ${message}`);
+  /// The address of a jostle_vec2 {x, y} in the scratch memory.
+  vector(x, y) {
+    const at = this.scratch + Jostle.VECTOR, floats = this.module.HEAPF32;
+    floats[at / 4] = x;
+    floats[at / 4 + 1] = y;
+    return at;
+  }
+
+  /// A buffer of at least `size` bytes in the module's memory, kept for the next call.
+  bufferOf(size) {
+    if (size > this.bufferSize) {
+      this.module._free(this.buffer);
+      this.bufferSize = Math.max(size, 2 * this.bufferSize, 1024);
+      this.buffer = this.module._malloc(this.bufferSize);
+    }
+    return this.buffer;
   }
 }
 
-/// A world of a game. Bodies are numbers: a number names its body until the body is
-/// destroyed; then it is refused until createBody gives it again, to a new body.
+/// A world of a game, over jostle.h's jostle_world. Bodies are numbers: a number names its
+/// body until the body is destroyed; then it is refused until createBody gives it again,
+/// to a new body.
 class JostleWorld {
-  constructor(jostle, number) {
+  constructor(jostle, pointer) {
     this.jostle = jostle;
-    this.number = number; // null once destroyed
+    this.pointer = pointer; // the jostle_world*; null once destroyed
+    // Body numbers: the handle (jostle_body_id) of number n is {slots[n],
+    // generations[n], serial}, slots[n] -1 where no live body has n; the numbers below
+    // slots.length that no live body has, smallest first; a slot's number, for boxes().
+    this.slots = [];
+    this.generations = [];
+    this.serial = 0; // the world's, which its handles carry
+    this.free = new JostleFreeNumbers();
+    this.numberOfSlot = [];
   }
 
   /// A body from a scene file's body object: {type, x, y, hw, hh, vx, vy, bounce, ...}.
@@ -187,79 +257,167 @@ class JostleWorld {
     const fn = "createBody";
     const text = JostleArgs.json(fn, JostleArgs.object(fn, "def", def));
     const world = this.live(fn);
-    const j = this.jostle;
-    return j.check(fn, j.withText(text, (p) => j.module._jostle_game_body_create(world, p)));
+    const j = this.jostle, m = j.module;
+    const read = j.withText(text, (p) => m._jostle_web_read_body(world, p));
+    j.check(fn, read !== 0);
+    m._jostle_body_create(j.scratch + Jostle.HANDLE, world, read);
+    return this.created(fn);
   }
 
   /// Removes a body; its number may be given to a later body.
   destroyBody(body) {
     const fn = "destroyBody";
-    this.call(fn, "_jostle_game_body_destroy", JostleArgs.body(fn, body));
+    JostleArgs.body(fn, body);
+    const world = this.live(fn);
+    this.jostle.check(fn, this.jostle.module._jostle_body_destroy(world, this.handle(fn, body)) !== 0);
+    this.numberOfSlot[this.slots[body]] = -1;
+    this.slots[body] = -1;
+    this.free.push(body);
   }
 
   step(dt) {
     const fn = "step";
-    this.call(fn, "_jostle_game_step", JostleArgs.number(fn, "dt", dt));
+    JostleArgs.number(fn, "dt", dt);
+    this.jostle.check(fn, this.jostle.module._jostle_world_step(this.live(fn), dt) !== 0);
   }
 
   /// Every body that exists, in creation order: {body, x, y, hw, hh} (centre and half
-  /// extents). Costs as much as the live bodies, whatever the world made before.
+  /// extents). Costs as much as the live bodies, whatever the world made before: three
+  /// calls read every body's handle, position and half extents.
   boxes() {
-    const m = this.jostle.module;
-    const count = this.call("boxes", "_jostle_game_read_boxes");
-    // Five 32-bit words a body: its number (an int32, exact) and four floats. Read at
-    // once: the memory does not move before the module is called again.
-    const at = m._jostle_game_boxes() / 4;
-    const ints = m.HEAP32, floats = m.HEAPF32;
-    const boxes = new Array(count);
-    for (let i = 0, w = at; i < count; i++, w += 5)
-      boxes[i] = {body: ints[w], x: floats[w + 1], y: floats[w + 2], hw: floats[w + 3], hh: floats[w + 4]};
+    const world = this.live("boxes");
+    const j = this.jostle, m = j.module;
+    const count = m._jostle_world_body_count(world);
+    // 12 bytes a handle, 8 a position, 8 half extents.
+    const ids = j.bufferOf(28 * count), positions = ids + 12 * count, halves = ids + 20 * count;
+    m._jostle_world_bodies(world, ids, count);
+    m._jostle_world_read_positions(world, positions, count);
+    m._jostle_world_read_half_extents(world, halves, count);
+    // Read at once: the memory does not move before the module is called again.
+    const words = m.HEAPU32, floats = m.HEAPF32;
+    const boxes = [];
+    for (let i = 0, id = ids / 4, p = positions / 4, h = halves / 4; i < count; i++, id += 3, p += 2, h += 2) {
+      // A tile map's body has no number.
+      const body = this.numberOfSlot[words[id]];
+      if (body === undefined || body < 0 || this.generations[body] !== words[id + 1]) continue;
+      boxes.push({body, x: floats[p], y: floats[p + 1], hw: floats[h], hh: floats[h + 1]});
+    }
     return boxes;
   }
 
   /// One body: its centre, velocity, and the sides it touched in the last step.
   body(body) {
     const fn = "body";
-    const j = this.jostle;
-    this.call(fn, "_jostle_game_read_body", JostleArgs.body(fn, body));
-    const [x, y, vx, vy, t] = j.floats(j.module._jostle_game_data(), 5);
-    return {x, y, vx, vy, touching: {floor: (t & 1) !== 0, ceiling: (t & 2) !== 0,
-                                      wallLeft: (t & 4) !== 0, wallRight: (t & 8) !== 0}};
+    JostleArgs.body(fn, body);
+    const world = this.live(fn);
+    const m = this.jostle.module, handle = this.handle(fn, body), out = this.jostle.scratch + Jostle.OUT;
+    m._jostle_body_get_position(out, world, handle);
+    m._jostle_body_get_velocity(out + 8, world, handle);
+    m._jostle_body_get_touching(out + 16, world, handle); // four bools
+    const floats = m.HEAPF32, bytes = m.HEAPU8, at = out / 4;
+    return {x: floats[at], y: floats[at + 1], vx: floats[at + 2], vy: floats[at + 3],
+            touching: {floor: bytes[out + 16] !== 0, ceiling: bytes[out + 17] !== 0,
+                       wallLeft: bytes[out + 18] !== 0, wallRight: bytes[out + 19] !== 0}};
   }
 
-  setVelocity(body, vx, vy) { this.withBody("setVelocity", "_jostle_game_set_velocity", body, {vx, vy}); }
-  setPosition(body, x, y) { this.withBody("setPosition", "_jostle_game_set_position", body, {x, y}); }
-  applyImpulse(body, ix, iy) { this.withBody("applyImpulse", "_jostle_game_apply_impulse", body, {ix, iy}); }
+  setVelocity(body, vx, vy) { this.withBody("setVelocity", "_jostle_body_set_velocity", body, {vx, vy}); }
+  setPosition(body, x, y) { this.withBody("setPosition", "_jostle_body_set_position", body, {x, y}); }
+  applyImpulse(body, ix, iy) { this.withBody("applyImpulse", "_jostle_body_apply_impulse", body, {ix, iy}); }
   /// A character's speed along what it stands on (docs/characters.md).
-  setWalkSpeed(body, speed) { this.withBody("setWalkSpeed", "_jostle_game_set_walk_speed", body, {speed}); }
+  setWalkSpeed(body, speed) { this.withBody("setWalkSpeed", "_jostle_body_set_walk_speed", body, {speed}); }
   /// Falls through one-way platforms for `seconds`.
-  dropThrough(body, seconds) { this.withBody("dropThrough", "_jostle_game_drop_through", body, {seconds}); }
+  dropThrough(body, seconds) { this.withBody("dropThrough", "_jostle_body_drop_through", body, {seconds}); }
 
   /// Frees the world; it may not be used after.
   destroy() {
-    this.call("destroy", "_jostle_game_world_destroy");
-    this.number = null;
+    const fn = "destroy";
+    this.jostle.check(fn, this.jostle.module._jostle_world_destroy(this.live(fn)) !== 0);
+    this.pointer = null;
   }
 
-  /// The world's number, or an Error if it was destroyed (its number may be another's now).
+  /// The world's jostle_world*, or an Error if it was destroyed (another world may have
+  /// its memory now).
   live(fn) {
-    if (this.number === null) throw new Error(`${fn}: the world was destroyed`);
-    return this.number;
+    if (this.pointer === null) throw new Error(`${fn}: the world was destroyed`);
+    return this.pointer;
   }
 
-  /// Calls `name` of the module with a body and `numbers` ({name: value}, in order),
-  /// each checked.
+  /// The address of the handle of body number `body` (checked by JostleArgs.body), laid
+  /// out in the scratch memory; or an Error if no live body has the number.
+  handle(fn, body) {
+    const slot = this.slots[body];
+    if (slot === undefined || slot < 0) throw new Error(`${fn}: no such body: ${body}`);
+    const at = this.jostle.scratch + Jostle.HANDLE, words = this.jostle.module.HEAPU32;
+    words[at / 4] = slot;
+    words[at / 4 + 1] = this.generations[body];
+    words[at / 4 + 2] = this.serial;
+    return at;
+  }
+
+  /// Gives the body whose handle jostle_body_create just wrote to the scratch memory the
+  /// smallest number no live body has, and returns it; or throws the error of a null
+  /// handle.
+  created(fn) {
+    const at = (this.jostle.scratch + Jostle.HANDLE) / 4;
+    const [slot, generation, serial] = this.jostle.module.HEAPU32.subarray(at, at + 3);
+    this.jostle.check(fn, generation !== 0);
+    const body = this.free.size > 0 ? this.free.pop() : this.slots.length;
+    this.slots[body] = slot;
+    this.generations[body] = generation;
+    this.serial = serial;
+    this.numberOfSlot[slot] = body;
+    return body;
+  }
+
+  /// Calls `name` of jostle.h with the world, the handle of `body` and `numbers` ({name:
+  /// value}, in order), each checked: a pair is a jostle_vec2, one number a float.
   withBody(fn, name, body, numbers) {
     JostleArgs.body(fn, body);
-    for (const [argument, value] of Object.entries(numbers)) JostleArgs.number(fn, argument, value);
-    this.call(fn, name, body, ...Object.values(numbers));
+    const values = Object.entries(numbers).map(([argument, value]) => JostleArgs.number(fn, argument, value));
+    const world = this.live(fn);
+    const j = this.jostle, handle = this.handle(fn, body);
+    const argument = values.length === 2 ? j.vector(values[0], values[1]) : values[0];
+    j.check(fn, j.module[name](world, handle, argument) !== 0);
+  }
+}
+
+/// The numbers no live body of a world has, below the largest given: a binary heap, so
+/// that the smallest is taken first, each push and pop in time logarithmic in the count.
+class JostleFreeNumbers {
+  constructor() {
+    this.heap = [];
   }
 
-  /// Calls `name` of the module for this world with `args`, checked already; returns
-  /// what it returned, or throws its error.
-  call(fn, name, ...args) {
-    const world = this.live(fn);
-    return this.jostle.check(fn, this.jostle.module[name](world, ...args));
+  get size() {
+    return this.heap.length;
+  }
+
+  push(number) {
+    const heap = this.heap;
+    let i = heap.push(number) - 1;
+    while (i > 0 && heap[(i - 1) >> 1] > number) {
+      heap[i] = heap[(i - 1) >> 1];
+      i = (i - 1) >> 1;
+    }
+    heap[i] = number;
+  }
+
+  /// The smallest, taken out.
+  pop() {
+    const heap = this.heap, smallest = heap[0], last = heap.pop();
+    if (heap.length > 0) {
+      let i = 0;
+      for (;;) {
+        let child = 2 * i + 1;
+        if (child >= heap.length) break;
+        if (child + 1 < heap.length && heap[child + 1] < heap[child]) child++;
+        if (heap[child] >= last) break;
+        heap[i] = heap[child];
+        i = child;
+      }
+      heap[i] = last;
+    }
+    return smallest;
   }
 }
 

@@ -226,8 +226,8 @@ function churn(jostle) {
   };
   for (let i = 0; i < 1000; i++) cycle();
   world.boxes();
-  const heapCounter = typeof m._jostle_game_heap_in_use === "function";
-  const inUse = () => (heapCounter ? m._jostle_game_heap_in_use() : NaN);
+  const heapCounter = typeof m._jostle_web_heap_in_use === "function";
+  const inUse = () => (heapCounter ? m._jostle_web_heap_in_use() : NaN);
   const memoryBefore = m.HEAP8.length;
   const inUseBefore = inUse();
 
@@ -251,7 +251,7 @@ function churn(jostle) {
   // bound, 64 KiB, is far below that and far above an allocator's slack. The memory
   // itself grows by at least a fifth at a time (emscripten's growth step), so it must not
   // have grown at all.
-  check(heapCounter, "the module reports its heap in use (jostle_game_heap_in_use)");
+  check(heapCounter, "the module reports its heap in use (jostle_web_heap_in_use)");
   const grown = inUse() - inUseBefore;
   check(grown < 65536, `the heap in use grew by ${grown} bytes (< 65536; ${inUseBefore} bytes in use before)`);
   check(m.HEAP8.length === memoryBefore,
