@@ -2,7 +2,7 @@
 # One version, written in include/jostle/version.h, said the same everywhere else a format
 # needs it written: CMake's project version, CHANGELOG.md's newest release, the rockspec's
 # name and version, the JavaScript package (once there is one), the jostle program, the
-# Lua module and the shared library's file name.
+# Lua module (and the JavaScript one: web_js_api_in_node) and the shared library's file name.
 #   check_versions.sh SOURCE_DIR BUILD_DIR CMAKE_VERSION
 set -euo pipefail
 source=$1 build=$2 cmake_version=$3

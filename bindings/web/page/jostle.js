@@ -125,6 +125,8 @@ class Jostle {
 
   constructor(module) {
     this.module = module;
+    /// The library's version, "major.minor.patch" (jostle/version.h, jostle_version()).
+    this.version = module.UTF8ToString(module._jostle_version());
     this.page = new JostlePage(this);
     // The module's memory where jostle.js lays out the structs of jostle.h's calls (at
     // Jostle.HANDLE, VECTOR and OUT), and the buffer of boxes()'s reads, grown as needed.

@@ -7,7 +7,8 @@
 // JavaScript's notation and counting; body numbers are given again after destroy, so that
 // a million bodies made and destroyed leave boxes() listing the two live ones, the body
 // numbers small and the module's heap as it was.
-//   node js_api.js <page dir>
+// jostle.version is the version of include/jostle/version.h, which CMake passes.
+//   node js_api.js <page dir> <version>
 "use strict";
 
 const fs = require("node:fs");
@@ -272,10 +273,11 @@ function conveyor(jostle) {
 }
 
 async function main() {
-  const [pageDir] = process.argv.slice(2);
+  const [pageDir, version] = process.argv.slice(2);
   const Jostle = loadPageScripts(path.resolve(pageDir));
   const wasmBinary = fs.readFileSync(path.join(pageDir, "jostle-web.wasm"));
   const jostle = await Jostle.load({wasmBinary});
+  check(jostle.version === version, `jostle.version is ${jostle.version}, version.h says ${version}`);
   let loadError = "";
   try {
     // (Were it not refused it would load without the bytes, and might never settle.)
