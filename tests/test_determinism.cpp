@@ -433,7 +433,7 @@ TEST(Threads, SolverLayersKeepTheContactOrderOfEachBody) {
 }
 
 TEST(Threads, EveryWorkerCountGivesTheRecordedHash) {
-#if JOSTLE_TESTS_SANITIZED
+#if JOSTLE_TESTS_FEWER_SAMPLES
     const int workerCounts[] = {3, 8}; // an odd count, and more threads than cores
 #else
     const int workerCounts[] = {2, 3, 4, 8};
