@@ -1,8 +1,10 @@
-// Names of solvers and the rules a WorldDef must follow.
+// Names of solvers and friction mixes, and the rules a WorldDef must follow (the rules of
+// each option are world_options.hpp's).
 #include "jostle/world.hpp"
-#include "range_check.hpp"
 
-#include <cmath>
+#include "world_options.hpp"
+
+#include <string>
 
 namespace jostle {
 
@@ -42,42 +44,32 @@ std::optional<FrictionMix> frictionMixFromString(const std::string& name) {
 
 namespace {
 
-std::optional<FieldError> checkPhysicalOptions(const PhysicalOptions& p) {
-    auto error = [](const char* field, const char* problem) {
-        return FieldError{std::string("physical.") + field, problem};
-    };
-    if (p.velocityIterations < 1 || p.velocityIterations > 1000)
-        return error("velocityIterations", "must be in [1, 1000]");
-    if (p.positionIterations < 0 || p.positionIterations > 1000)
-        return error("positionIterations", "must be in [0, 1000]");
-    if (p.maxContactsPerBody < 1 || p.maxContactsPerBody > 65536)
-        return error("maxContactsPerBody", "must be in [1, 65536]");
-    if (!(p.slop >= 0.0f && p.slop <= 0.5f))
-        return error("slop", "must be in [0, 0.5]");
-    if (!(p.correction > 0.0f && p.correction <= 1.0f))
-        return error("correction", "must be in (0, 1]");
-    if (!(p.restitutionThreshold >= 0.0f) || std::isinf(p.restitutionThreshold))
-        return error("restitutionThreshold", "must be a finite number >= 0");
-    if (p.frictionMix != FrictionMix::Min && p.frictionMix != FrictionMix::GeometricMean)
-        return error("frictionMix", "must be min or geometricMean");
-    return std::nullopt;
+/// A problem of a group of options, named as a member of WorldDef ("physical.slop").
+std::optional<FieldError> within(const char* group, std::optional<FieldError> problem) {
+    if (problem)
+        problem->field = std::string(group) + "." + problem->field;
+    return problem;
 }
 
 } // namespace
 
 std::optional<FieldError> checkWorldDef(const WorldDef& def) {
-    if (const char* problem = rangeProblem(def.gravity))
-        return FieldError{"gravity", problem};
-    // Infinity is allowed here: it is how "no clamp" is spelt.
-    if (std::isnan(def.maxVelocity) || def.maxVelocity <= 0.0f)
-        return FieldError{"maxVelocity", "must be > 0"};
-    if (def.solver != Solver::Classic && def.solver != Solver::Physical)
-        return FieldError{"solver", "must be classic or physical"};
-    if (def.tasks.workers < 1 || def.tasks.workers > 64)
-        return FieldError{"tasks.workers", "must be in [1, 64]"};
+    using namespace properties;
+    if (auto problem = ruleProblem(def, kWorldFields))
+        return problem;
+    if (auto problem = within("tasks", ruleProblem(def.tasks, kTaskFields)))
+        return problem;
     if ((def.tasks.enqueueTask == nullptr) != (def.tasks.finishTask == nullptr))
         return FieldError{"tasks", "enqueueTask and finishTask come together: both or neither"};
-    return checkPhysicalOptions(def.physical);
+    if (auto problem = within("classic", ruleProblem(def.classic, kClassicFields)))
+        return problem;
+    return within("physical", ruleProblem(def.physical, kPhysicalFields));
 }
+
+static_assert(properties::defaultsAgree(WorldDef{}, properties::kWorldFields) &&
+                  properties::defaultsAgree(TaskSystem{}, properties::kTaskFields) &&
+                  properties::defaultsAgree(ClassicOptions{}, properties::kClassicFields) &&
+                  properties::defaultsAgree(PhysicalOptions{}, properties::kPhysicalFields),
+              "world_options.hpp's defaults are world.hpp's");
 
 } // namespace jostle

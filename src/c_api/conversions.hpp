@@ -9,6 +9,7 @@
 #include "jostle/world.hpp"
 #include "misuse.hpp"
 #include "tile_chars.hpp"
+#include "world_options.hpp"
 
 #include <algorithm>
 #include <cstddef>
@@ -96,56 +97,9 @@ inline jostle_friction_mix toC(FrictionMix mix) {
     return mix == FrictionMix::Min ? JOSTLE_FRICTION_MIX_MIN : JOSTLE_FRICTION_MIX_GEOMETRIC_MEAN;
 }
 
-inline ClassicOptions toCpp(const jostle_classic_options& o) {
-    return {.mass = o.mass, .coulomb = o.coulomb, .ccd = o.ccd};
-}
-inline jostle_classic_options toC(const ClassicOptions& o) {
-    return {o.mass, o.coulomb, o.ccd};
-}
-
-inline PhysicalOptions toCpp(const jostle_physical_options& o) {
-    return {.velocityIterations = o.velocity_iterations,
-            .positionIterations = o.position_iterations,
-            .slop = o.slop,
-            .correction = o.correction,
-            .restitutionThreshold = o.restitution_threshold,
-            .frictionMix = toCpp(o.friction_mix),
-            .maxContactsPerBody = o.max_contacts_per_body};
-}
-inline jostle_physical_options toC(const PhysicalOptions& o) {
-    return {o.velocityIterations, o.positionIterations,   o.slop,
-            o.correction,         o.restitutionThreshold, toC(o.frictionMix),
-            o.maxContactsPerBody};
-}
-
-static_assert(std::is_same_v<jostle_task_fn, TaskFn> &&
-              std::is_same_v<jostle_enqueue_task_fn, EnqueueTaskFn> &&
-              std::is_same_v<jostle_finish_task_fn, FinishTaskFn>);
-inline TaskSystem toCpp(const jostle_task_system& t) {
-    return {t.workers, t.enqueue_task, t.finish_task, t.user_context};
-}
-inline jostle_task_system toC(const TaskSystem& t) {
-    return {t.workers, t.enqueueTask, t.finishTask, t.userContext};
-}
-
-inline WorldDef toCpp(const jostle_world_def& d) {
-    requireCookie(d.internal_cookie, "def", "jostle_default_world_def");
-    return {.gravity = toCpp(d.gravity),
-            .maxVelocity = d.max_velocity,
-            .solver = toCpp(d.solver),
-            .classic = toCpp(d.classic),
-            .physical = toCpp(d.physical),
-            .sleeping = d.sleeping,
-            .tasks = toCpp(d.tasks)};
-}
-inline jostle_world_def toC(const WorldDef& d) {
-    return {toC(d.gravity),  d.maxVelocity, toC(d.solver), toC(d.classic),
-            toC(d.physical), d.sleeping,    toC(d.tasks),  kCookie};
-}
-
 // Numbers, flags, bits and pointers are the same in C and C++.
 template <class T>
-concept SameInC = std::is_same_v<T, float> || std::is_same_v<T, bool> ||
+concept SameInC = std::is_same_v<T, float> || std::is_same_v<T, int> || std::is_same_v<T, bool> ||
     std::is_same_v<T, std::uint32_t> || std::is_same_v<T, void*>;
 template <SameInC T> T toCpp(T value) {
     return value;
@@ -154,8 +108,8 @@ template <SameInC T> T toC(T value) {
     return value;
 }
 
-/// Copies each field of a definition's table (body_properties.hpp) from the C struct into
-/// the C++ definition (an enum is checked on the way), and back.
+/// Copies each field of a definition's table (body_properties.hpp, world_options.hpp) from
+/// the C struct into the C++ definition (an enum is checked on the way), and back.
 template <class Def, class CDef, class F, std::size_t N>
 void copyFromC(const CDef& from, Def& to, const F (&fields)[N]) {
     for (const F& field : fields)
@@ -167,17 +121,71 @@ void copyToC(const Def& from, CDef& to, const F (&fields)[N]) {
         field.visitWithC([&](auto member, auto cMember) { to.*cMember = toC(from.*member); });
 }
 
-inline BodyDef toCpp(const jostle_body_def& d) {
-    requireCookie(d.internal_cookie, "def", "jostle_default_body_def");
-    BodyDef def;
-    copyFromC(d, def, properties::kBodyFields);
+/// A definition made from its C struct by its table, and the C struct from the definition.
+template <class Def, class CDef, class F, std::size_t N>
+Def fromC(const CDef& from, const F (&fields)[N], Def to = {}) {
+    copyFromC(from, to, fields);
+    return to;
+}
+template <class CDef, class Def, class F, std::size_t N>
+CDef inC(const Def& from, const F (&fields)[N], CDef to = {}) {
+    copyToC(from, to, fields);
+    return to;
+}
+
+inline ClassicOptions toCpp(const jostle_classic_options& o) {
+    return fromC<ClassicOptions>(o, properties::kClassicFields);
+}
+inline jostle_classic_options toC(const ClassicOptions& o) {
+    return inC<jostle_classic_options>(o, properties::kClassicFields);
+}
+
+inline PhysicalOptions toCpp(const jostle_physical_options& o) {
+    return fromC<PhysicalOptions>(o, properties::kPhysicalFields);
+}
+inline jostle_physical_options toC(const PhysicalOptions& o) {
+    return inC<jostle_physical_options>(o, properties::kPhysicalFields);
+}
+
+static_assert(std::is_same_v<jostle_task_fn, TaskFn> &&
+              std::is_same_v<jostle_enqueue_task_fn, EnqueueTaskFn> &&
+              std::is_same_v<jostle_finish_task_fn, FinishTaskFn>);
+// The game's job system is the same functions in C and C++; its settings are a table's.
+inline TaskSystem toCpp(const jostle_task_system& t) {
+    return fromC(t, properties::kTaskFields,
+                 TaskSystem{.enqueueTask = t.enqueue_task,
+                            .finishTask = t.finish_task,
+                            .userContext = t.user_context});
+}
+inline jostle_task_system toC(const TaskSystem& t) {
+    return inC(t, properties::kTaskFields,
+               jostle_task_system{.enqueue_task = t.enqueueTask,
+                                  .finish_task = t.finishTask,
+                                  .user_context = t.userContext});
+}
+
+inline WorldDef toCpp(const jostle_world_def& d) {
+    requireCookie(d.internal_cookie, "def", "jostle_default_world_def");
+    WorldDef def = fromC<WorldDef>(d, properties::kWorldFields);
+    def.classic = toCpp(d.classic);
+    def.physical = toCpp(d.physical);
+    def.tasks = toCpp(d.tasks);
     return def;
 }
+inline jostle_world_def toC(const WorldDef& d) {
+    return inC(d, properties::kWorldFields,
+               jostle_world_def{.classic = toC(d.classic),
+                                .physical = toC(d.physical),
+                                .tasks = toC(d.tasks),
+                                .internal_cookie = kCookie});
+}
+
+inline BodyDef toCpp(const jostle_body_def& d) {
+    requireCookie(d.internal_cookie, "def", "jostle_default_body_def");
+    return fromC<BodyDef>(d, properties::kBodyFields);
+}
 inline jostle_body_def toC(const BodyDef& d) {
-    jostle_body_def c{};
-    copyToC(d, c, properties::kBodyFields);
-    c.internal_cookie = kCookie;
-    return c;
+    return inC(d, properties::kBodyFields, jostle_body_def{.internal_cookie = kCookie});
 }
 
 /// NULL is the default filter.

@@ -1,5 +1,6 @@
-// Scene files: the fields of a body's and a tile map's definition, read by their
-// descriptions (body_properties.hpp), for the scene reader (scene_reader.cpp).
+// Scene files: the fields of a world's, a body's and a tile map's definition, read by their
+// descriptions (world_options.hpp, body_properties.hpp), for the scene reader
+// (scene_reader.cpp).
 #pragma once
 
 #include "body_properties.hpp"
@@ -22,7 +23,7 @@ inline BodyType readBodyType(const Json& value, const std::string& place) {
     fail(place, R"(expected one of "static", "kinematic", "dynamic")");
 }
 
-// --- Definitions: fields by their descriptions (body_properties.hpp) ------------------
+// --- Definitions: fields by their descriptions (properties.hpp) ------------------------
 
 // A value of each type a property has; a pointer (userData) has no form in a file.
 inline void readValue(const Json& value, const std::string& place, BodyType& out) {
@@ -40,6 +41,21 @@ inline void readValue(const Json& value, const std::string& place, bool& out) {
 inline void readValue(const Json& value, const std::string& place, std::uint32_t& out) {
     out = readBits(value, place);
 }
+inline void readValue(const Json& value, const std::string& place, int& out) {
+    out = readInt(value, place);
+}
+inline void readValue(const Json& value, const std::string& place, Solver& out) {
+    auto solver = solverFromString(readString(value, place));
+    if (!solver)
+        fail(place, R"(expected "classic" or "physical")");
+    out = *solver;
+}
+inline void readValue(const Json& value, const std::string& place, FrictionMix& out) {
+    auto mix = frictionMixFromString(readString(value, place));
+    if (!mix)
+        fail(place, R"(expected "min" or "geometricMean")");
+    out = *mix;
+}
 
 template <class T, class Def, class U> constexpr bool isMemberOf(U Def::*) {
     return std::is_same_v<T, U>;
@@ -48,6 +64,11 @@ template <class T, class Def, class U> constexpr bool isMemberOf(U Def::*) {
 /// True if a file can give the field: all but a pointer (userData).
 template <class F> inline bool inFile(const F& field) {
     return std::visit([](auto member) { return !isMemberOf<void*>(member); }, field.member);
+}
+
+/// True if the field's value is a whole number (velocityIterations).
+template <class F> inline bool isWhole(const F& field) {
+    return std::visit([](auto member) { return isMemberOf<int>(member); }, field.member);
 }
 
 /// True if the field's value is an array of 2 numbers (oneWay, slope).

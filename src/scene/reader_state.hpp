@@ -8,6 +8,7 @@
 #include "id_table.hpp"
 #include "jostle/scene.hpp"
 #include "json.hpp"
+#include "world_options.hpp"
 
 #include <cstddef>
 #include <cstdint>
@@ -19,30 +20,28 @@
 
 namespace jostle::scene_file {
 
-/// The fields of the top level, and of "classic" and "physical", by index.
-inline constexpr std::string_view kSceneFields[] = {"gravity", "maxVelocity", "dt",       "solver",
-                                                    "classic", "physical",    "sleeping", "bodies",
-                                                    "tilemap", "tilemaps"};
+/// The fields of the top level by index: WorldDef's own (properties::kWorldFields) first,
+/// then the scene's own from kWorldRows on. "classic" and "physical" are read by their
+/// tables (world_options.hpp).
+inline constexpr std::size_t kWorldRows = std::size(properties::kWorldFields);
+inline constexpr std::string_view kSceneOwnFields[] = {"dt",     "classic", "physical",
+                                                       "bodies", "tilemap", "tilemaps"};
 enum SceneField : std::size_t {
-    kGravity,
-    kMaxVelocity,
-    kDt,
-    kSolver,
+    kDt = kWorldRows,
     kClassic,
     kPhysical,
-    kSleeping,
     kBodies,
     kTileMap,
-    kTileMaps
+    kTileMaps,
+    kSceneFieldCount
 };
-inline constexpr std::string_view kClassicFields[] = {"mass", "coulomb", "ccd"};
-inline constexpr std::string_view kPhysicalFields[] = {
-    "velocityIterations", "positionIterations", "slop", "correction", "restitutionThreshold",
-    "frictionMix",        "maxContactsPerBody"};
+static_assert(kSceneFieldCount - kWorldRows == std::size(kSceneOwnFields));
 /// A body's "id" and a tile map's "rows", after the fields of their definitions.
 inline constexpr std::size_t kIdField = std::size(properties::kBodyFields);
 inline constexpr std::size_t kRowsField = std::size(properties::kTileMapFields);
-static_assert(kIdField < 64 && kRowsField < 64, "Frame::given has a bit for each field");
+static_assert(kIdField < 64 && kRowsField < 64 && kSceneFieldCount <= 64 &&
+                  std::size(properties::kPhysicalFields) <= 64,
+              "Frame::given has a bit for each field");
 
 /// What belongs at a place of the file, and so what the reader does with the value there.
 enum class Kind : std::uint8_t {
@@ -59,11 +58,15 @@ enum class Kind : std::uint8_t {
     Skip,     ///< a container where none or another belongs: read to its end, kept empty
 };
 
-/// What the value of each field of kSceneFields is.
-inline constexpr Kind kSceneFieldKinds[] = {
-    Kind::Vec2,     Kind::Scalar, Kind::Scalar, Kind::Scalar,  Kind::Classic,
-    Kind::Physical, Kind::Scalar, Kind::Bodies, Kind::TileMap, Kind::TileMaps};
-static_assert(std::size(kSceneFieldKinds) == std::size(kSceneFields));
+/// What the value of each field of kSceneOwnFields is.
+inline constexpr Kind kSceneOwnKinds[] = {Kind::Scalar, Kind::Classic, Kind::Physical,
+                                          Kind::Bodies, Kind::TileMap, Kind::TileMaps};
+static_assert(std::size(kSceneOwnKinds) == std::size(kSceneOwnFields));
+
+/// What the value of a field of a definition's table is.
+template <class F> Kind kindOf(const F& field) {
+    return isVec2(field) ? Kind::Vec2 : Kind::Scalar;
+}
 
 /// An object or array being read: where it is, what it is, and what has been read of it.
 struct Frame {
@@ -132,7 +135,9 @@ private:
     bool value(const Json& v);
     void take(const Json& v);
     void takeSceneField(const Frame& frame, const Json& v);
-    void takePhysicalField(const Frame& frame, const Json& v);
+    /// Reads a world option of `def` by its row, keeping a whole number as written.
+    template <class Def, class F>
+    void takeOption(Def& def, const F& field, const Json& v, const std::string& at);
     void endBody(Frame& frame);
     void endTileMap(Frame& frame);
 
@@ -147,5 +152,12 @@ private:
     /// Ids name bodies in traces, so two bodies must never share one.
     IdTable ids_{scene_.bodies};
 };
+
+template <class Def, class F>
+void SceneReader::takeOption(Def& def, const F& field, const Json& v, const std::string& at) {
+    readField(def, field, v, at);
+    if (isWhole(field))
+        written_.emplace_back(at, numberText(v)); // for checkWorldDef's messages: ", got 0"
+}
 
 } // namespace jostle::scene_file

@@ -15,12 +15,6 @@ namespace jostle::scene_file {
 
 namespace {
 
-FrictionMix readFrictionMix(const Json& value, const std::string& place) {
-    if (auto mix = frictionMixFromString(readString(value, place)))
-        return *mix;
-    fail(place, R"(expected "min" or "geometricMean")");
-}
-
 /// Fails at `place` with a rule of the C++ library (checkBodyDef, ...), in JSON's notation.
 [[noreturn]] void failRule(const std::string& place, const std::string& rule) {
     fail(place, inNotation(rule, Notation::Json));
@@ -38,13 +32,11 @@ template <class F, std::size_t N> void requireFields(const Frame& frame, const F
 
 void SceneReader::takeSceneField(const Frame& frame, const Json& v) {
     const std::string& name = frame.key;
+    if (frame.field < kWorldRows) {
+        takeOption(scene_.world, properties::kWorldFields[frame.field], v, name);
+        return;
+    }
     switch (frame.field) {
-    case kGravity:
-        scene_.world.gravity = readVec2(v, name);
-        break;
-    case kMaxVelocity:
-        scene_.world.maxVelocity = readFloat(v, name);
-        break;
     case kDt:
         scene_.dt = readFloat(v, name);
         if (!(scene_.dt > 0.0f))
@@ -52,52 +44,11 @@ void SceneReader::takeSceneField(const Frame& frame, const Json& v) {
         if (scene_.dt < kMinMagnitude || scene_.dt > kMaxMagnitude)
             fail(name, "must be in [1e-9, 1e9]"); // what World::step accepts
         break;
-    case kSolver: {
-        auto solver = solverFromString(readString(v, name));
-        if (!solver)
-            fail(name, R"(expected "classic" or "physical")");
-        scene_.world.solver = *solver;
-        break;
-    }
-    case kSleeping:
-        scene_.world.sleeping = readBool(v, name);
-        break;
     case kBodies:
     case kTileMaps:
         failType(v, name, "an array");
     default: // classic, physical, tilemap
         failType(v, name, "an object");
-    }
-}
-
-void SceneReader::takePhysicalField(const Frame& frame, const Json& v) {
-    const std::string at = field(frame.place, frame.key);
-    PhysicalOptions& options = scene_.world.physical;
-    switch (frame.field) {
-    case 0:
-        options.velocityIterations = readInt(v, at);
-        written_.emplace_back(at, numberText(v));
-        break;
-    case 1:
-        options.positionIterations = readInt(v, at);
-        written_.emplace_back(at, numberText(v));
-        break;
-    case 2:
-        options.slop = readFloat(v, at);
-        break;
-    case 3:
-        options.correction = readFloat(v, at);
-        break;
-    case 4:
-        options.restitutionThreshold = readFloat(v, at);
-        break;
-    case 5:
-        options.frictionMix = readFrictionMix(v, at);
-        break;
-    default:
-        options.maxContactsPerBody = readInt(v, at);
-        written_.emplace_back(at, numberText(v));
-        break;
     }
 }
 
@@ -155,7 +106,7 @@ Scene SceneReader::finish() {
             problem = modelProblem(scene_.world.solver, scene_.bodies);
         else
             problem = modelProblem(scene_.world.solver, scene_.tileMaps, [&](std::size_t i) {
-                const std::string place(kSceneFields[name]);
+                const std::string place(kSceneOwnFields[name - kWorldRows]);
                 return name == kTileMap ? place : element(place, i);
             });
         if (problem)

@@ -59,13 +59,14 @@ std::string_view nearestField(Kind kind, std::string_view name) {
     };
     switch (kind) {
     case Kind::Scene:
-        considerAll(kSceneFields);
+        considerFile(properties::kWorldFields);
+        considerAll(kSceneOwnFields);
         break;
     case Kind::Classic:
-        considerAll(kClassicFields);
+        considerFile(properties::kClassicFields);
         break;
     case Kind::Physical:
-        considerAll(kPhysicalFields);
+        considerFile(properties::kPhysicalFields);
         break;
     case Kind::Body:
         considerFile(properties::kBodyFields);
@@ -98,7 +99,12 @@ Kind SceneReader::expected() const {
     const Frame& frame = frames_.back();
     switch (frame.kind) {
     case Kind::Scene:
-        return kSceneFieldKinds[frame.field];
+        return frame.field < kWorldRows ? kindOf(properties::kWorldFields[frame.field])
+                                        : kSceneOwnKinds[frame.field - kWorldRows];
+    case Kind::Classic:
+        return kindOf(properties::kClassicFields[frame.field]);
+    case Kind::Physical:
+        return kindOf(properties::kPhysicalFields[frame.field]);
     case Kind::Body:
         return frame.field != kIdField && isVec2(properties::kBodyFields[frame.field])
                    ? Kind::Vec2
@@ -113,7 +119,7 @@ Kind SceneReader::expected() const {
         return Kind::TileMap;
     case Kind::Skip:
         return Kind::Skip;
-    default: // Classic, Physical, Rows, Vec2
+    default: // Rows, Vec2
         return Kind::Scalar;
     }
 }
@@ -138,13 +144,15 @@ bool SceneReader::key(string_t& name) {
     std::size_t index = kNone;
     switch (frame.kind) {
     case Kind::Scene:
-        index = indexOf(kSceneFields, name);
+        index = fileFieldIndex(properties::kWorldFields, name);
+        if (const std::size_t own = indexOf(kSceneOwnFields, name); own != kNone)
+            index = kWorldRows + own;
         break;
     case Kind::Classic:
-        index = indexOf(kClassicFields, name);
+        index = fileFieldIndex(properties::kClassicFields, name);
         break;
     case Kind::Physical:
-        index = indexOf(kPhysicalFields, name);
+        index = fileFieldIndex(properties::kPhysicalFields, name);
         break;
     case Kind::Body:
         index = name == "id" ? kIdField : fileFieldIndex(properties::kBodyFields, name);
@@ -236,14 +244,13 @@ void SceneReader::take(const Json& v) {
     case Kind::Scene:
         takeSceneField(frame, v);
         break;
-    case Kind::Classic: {
-        ClassicOptions& options = scene_.world.classic;
-        bool* const flags[] = {&options.mass, &options.coulomb, &options.ccd};
-        *flags[frame.field] = readBool(v, field(frame.place, frame.key));
+    case Kind::Classic:
+        takeOption(scene_.world.classic, properties::kClassicFields[frame.field], v,
+                   field(frame.place, frame.key));
         break;
-    }
     case Kind::Physical:
-        takePhysicalField(frame, v);
+        takeOption(scene_.world.physical, properties::kPhysicalFields[frame.field], v,
+                   field(frame.place, frame.key));
         break;
     case Kind::Body: {
         const std::string at = field(frame.place, frame.key);

@@ -1,8 +1,10 @@
 // world:newBody and the Body methods. newBody's fields and getDef follow the descriptions
-// of src/body_properties.hpp; the settings World gets and sets whole are a table (Setting).
+// of src/body_properties.hpp (definitions.hpp); the settings World gets and sets whole are a
+// table (Setting).
 #include "binding.hpp"
 
 #include "body_properties.hpp"
+#include "definitions.hpp"
 
 #include <array>
 #include <cmath>
@@ -15,17 +17,6 @@
 namespace jostle::lua {
 
 namespace {
-
-constexpr const char* kTypeNames[] = {"static", "kinematic", "dynamic", nullptr};
-
-BodyType bodyTypeOf(int option) {
-    return option == 0 ? BodyType::Static : option == 1 ? BodyType::Kinematic : BodyType::Dynamic;
-}
-const char* bodyTypeName(BodyType type) {
-    return type == BodyType::Static      ? "static"
-           : type == BodyType::Kinematic ? "kinematic"
-                                         : "dynamic";
-}
 
 /// The body that is self, live: its world is alive and the body not destroyed.
 BodyHandle& checkBody(lua_State* L, int index, const char* where) {
@@ -70,71 +61,11 @@ int pushFloat(lua_State* L, float value) {
     return 1;
 }
 
-// --- Definition tables: fields by their descriptions (src/body_properties.hpp) ---------
-
-/// Reads the field `name` of each type a property has into `out`: true if it is given.
-bool readField(const Fields& fields, const char* name, BodyType& out) {
-    int type = 0;
-    if (!fields.option(name, type, kTypeNames))
-        return false;
-    out = bodyTypeOf(type);
-    return true;
-}
-bool readField(const Fields& fields, const char* name, float& out) {
-    return fields.number(name, out);
-}
-bool readField(const Fields& fields, const char* name, Vec2& out) {
-    return fields.vec2(name, out);
-}
-bool readField(const Fields& fields, const char* name, bool& out) {
-    return fields.boolean(name, out);
-}
-bool readField(const Fields& fields, const char* name, std::uint32_t& out) {
-    return fields.bits(name, out);
-}
-/// userData is any Lua value: worldNewBody keeps it in the world's user value table.
-bool readField(const Fields&, const char*, void*&) {
-    return false;
-}
-
-/// Pushes a value of each type a property has as one Lua value; false for userData.
-bool pushField(lua_State* L, BodyType type) {
-    lua_pushstring(L, bodyTypeName(type));
-    return true;
-}
-bool pushField(lua_State* L, float value) {
-    lua_pushnumber(L, static_cast<lua_Number>(value));
-    return true;
-}
-bool pushField(lua_State* L, Vec2 value) {
-    lua_createtable(L, 2, 0);
-    lua_pushnumber(L, static_cast<lua_Number>(value.x));
-    lua_rawseti(L, -2, 1);
-    lua_pushnumber(L, static_cast<lua_Number>(value.y));
-    lua_rawseti(L, -2, 2);
-    return true;
-}
-bool pushField(lua_State* L, bool value) {
-    lua_pushboolean(L, value);
-    return true;
-}
-bool pushField(lua_State* L, std::uint32_t value) {
-    pushWhole(L, value);
-    return true;
-}
-bool pushField(lua_State*, void*) {
-    return false;
-}
-
 // --- newBody ---------------------------------------------------------------------------
 
-/// The fields newBody takes: every property's, ended by nullptr.
-constexpr auto kBodyFieldNames = [] {
-    std::array<const char*, std::size(properties::kBodyFields) + 1> names{};
-    for (std::size_t i = 0; i < std::size(properties::kBodyFields); ++i)
-        names[i] = properties::kBodyFields[i].property->name;
-    return names;
-}();
+/// The fields newBody takes: every property's, userData (any Lua value) included.
+constexpr auto kBodyFieldNames =
+    Names<std::size(properties::kBodyFields)>().addAll(properties::kBodyFields, true);
 
 /// The BodyDef of the table at `index`, with the rules of scene files: hw and hh
 /// required, mass (> 0) or density but not both, every value checked.
@@ -144,10 +75,8 @@ BodyDef readBodyDef(lua_State* L, int index, const char* where) {
     fields.allowOnly(kBodyFieldNames.data());
     BodyDef def;
     bool hasMass = false;
-    for (const auto& field : properties::kBodyFields) {
+    readFields(fields, def, properties::kBodyFields, [&](const auto& field, bool given) {
         const char* name = field.property->name;
-        auto read = [&](auto member) { return readField(fields, name, def.*member); };
-        const bool given = std::visit(read, field.member);
         if (!given && field.property->required)
             raise(L, where, "missing field \"%s\"", name);
         if (given && field.property == &properties::kMass) {
@@ -157,7 +86,7 @@ BodyDef readBodyDef(lua_State* L, int index, const char* where) {
         }
         if (given && hasMass && field.property == &properties::kDensity)
             raise(L, where, "give \"mass\" or \"density\", not both");
-    }
+    });
 
     char message[kMessageSize];
     bool bad = false;
@@ -255,9 +184,8 @@ int bodyGetId(lua_State* L) {
 }
 
 int bodyGetType(lua_State* L) {
-    lua_pushstring(L, bodyTypeName(read<BodyType>(L, "Body:getType", [](const World& w, BodyId id) {
-                       return w.type(id);
-                   })));
+    pushField(
+        L, read<BodyType>(L, "Body:getType", [](const World& w, BodyId id) { return w.type(id); }));
     return 1;
 }
 
@@ -457,13 +385,9 @@ int bodyGetDef(lua_State* L) {
     const properties::Property* leftOut =
         def.mass > 0.0f ? &properties::kDensity : &properties::kMass;
     lua_createtable(L, 0, 20);
-    for (const auto& field : properties::kBodyFields) {
-        if (field.property == leftOut)
-            continue;
-        auto push = [&](auto member) { return pushField(L, def.*member); };
-        if (std::visit(push, field.member))
-            lua_setfield(L, -2, field.property->name);
-    }
+    setFields(L, def, properties::kBodyFields);
+    lua_pushnil(L);
+    lua_setfield(L, -2, leftOut->name);
     // userData lives in the world's user value table, not in the BodyDef.
     const int table = lua_gettop(L);
     bodyGetUserData(L);

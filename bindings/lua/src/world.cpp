@@ -1,5 +1,10 @@
-// jostle.newWorld and the World's own methods: settings, bodies, stepping, destroy.
+// jostle.newWorld and the World's own methods: settings, bodies, stepping, destroy. The
+// fields of newWorld and of the options are read and given back by the tables of
+// src/world_options.hpp (definitions.hpp).
 #include "binding.hpp"
+
+#include "definitions.hpp"
+#include "world_options.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -10,38 +15,20 @@ namespace jostle::lua {
 
 namespace {
 
-constexpr const char* kSolverNames[] = {"classic", "physical", nullptr};
-constexpr const char* kFrictionMixNames[] = {"min", "geometricMean", nullptr};
-
-Solver solverOf(int option) {
-    return option == 0 ? Solver::Classic : Solver::Physical;
-}
-const char* solverName(Solver solver) {
-    return solver == Solver::Classic ? "classic" : "physical";
+/// Reads the options of `table` that a Lua table gives, and only those, into `options`.
+template <class Options, class F, std::size_t N>
+void readGroup(const Fields& fields, Options& options, const F (&table)[N]) {
+    static const auto names = Names<N>().addAll(table);
+    fields.allowOnly(names.data());
+    readOptions(fields, options, table);
 }
 
 void readClassic(const Fields& fields, ClassicOptions& options) {
-    static constexpr const char* kNames[] = {"mass", "coulomb", "ccd", nullptr};
-    fields.allowOnly(kNames);
-    fields.boolean("mass", options.mass);
-    fields.boolean("coulomb", options.coulomb);
-    fields.boolean("ccd", options.ccd);
+    readGroup(fields, options, properties::kClassicFields);
 }
 
 void readPhysical(const Fields& fields, PhysicalOptions& options) {
-    static constexpr const char* kNames[] = {
-        "velocityIterations", "positionIterations", "slop", "correction", "restitutionThreshold",
-        "frictionMix",        "maxContactsPerBody", nullptr};
-    fields.allowOnly(kNames);
-    fields.whole("velocityIterations", options.velocityIterations, 1, 1000);
-    fields.whole("positionIterations", options.positionIterations, 0, 1000);
-    fields.number("slop", options.slop);
-    fields.number("correction", options.correction);
-    fields.number("restitutionThreshold", options.restitutionThreshold);
-    fields.whole("maxContactsPerBody", options.maxContactsPerBody, 1, 65536);
-    int mix = 0;
-    if (fields.option("frictionMix", mix, kFrictionMixNames))
-        options.frictionMix = mix == 0 ? FrictionMix::Min : FrictionMix::GeometricMean;
+    readGroup(fields, options, properties::kPhysicalFields);
 }
 
 /// Reads the nested table `name` of `fields`, if present, with `read`.
@@ -64,19 +51,19 @@ WorldDef readWorldDef(lua_State* L, int index, const char* where) {
         return def;
     checkTable(L, index, where, "def");
     const Fields fields(L, index, where);
-    static constexpr const char* kNames[] = {"gravity",  "maxVelocity", "solver",  "classic",
-                                             "physical", "sleeping",    "workers", nullptr};
-    fields.allowOnly(kNames);
-    fields.vec2("gravity", def.gravity);
-    if (fields.numberOrInfinity("maxVelocity", def.maxVelocity) && !(def.maxVelocity > 0.0f))
-        fields.fail("maxVelocity", "must be > 0");
-    int solver = 0;
-    if (fields.option("solver", solver, kSolverNames))
-        def.solver = solverOf(solver);
+    // WorldDef's own fields, its options in tables of their own, and (at the top level) its
+    // task system's settings, workers.
+    static constexpr auto kNames =
+        Names<std::size(properties::kWorldFields) + 2 + std::size(properties::kTaskFields)>()
+            .addAll(properties::kWorldFields)
+            .add("classic")
+            .add("physical")
+            .addAll(properties::kTaskFields);
+    fields.allowOnly(kNames.data());
+    readOptions(fields, def, properties::kWorldFields);
     readNested(L, fields, where, "classic", "classic.", def.classic, readClassic);
     readNested(L, fields, where, "physical", "physical.", def.physical, readPhysical);
-    fields.boolean("sleeping", def.sleeping);
-    fields.whole("workers", def.tasks.workers, 1, 64);
+    readOptions(fields, def.tasks, properties::kTaskFields);
     return def;
 }
 
@@ -94,32 +81,11 @@ void requireValidWorldDef(lua_State* L, const WorldDef& def, const char* where) 
         raise(L, where, "%s", message);
 }
 
-void pushClassicOptions(lua_State* L, const ClassicOptions& options) {
-    lua_createtable(L, 0, 3);
-    lua_pushboolean(L, options.mass);
-    lua_setfield(L, -2, "mass");
-    lua_pushboolean(L, options.coulomb);
-    lua_setfield(L, -2, "coulomb");
-    lua_pushboolean(L, options.ccd);
-    lua_setfield(L, -2, "ccd");
-}
-
-void pushPhysicalOptions(lua_State* L, const PhysicalOptions& options) {
-    lua_createtable(L, 0, 7);
-    pushWhole(L, options.velocityIterations);
-    lua_setfield(L, -2, "velocityIterations");
-    pushWhole(L, options.positionIterations);
-    lua_setfield(L, -2, "positionIterations");
-    lua_pushnumber(L, static_cast<lua_Number>(options.slop));
-    lua_setfield(L, -2, "slop");
-    lua_pushnumber(L, static_cast<lua_Number>(options.correction));
-    lua_setfield(L, -2, "correction");
-    lua_pushnumber(L, static_cast<lua_Number>(options.restitutionThreshold));
-    lua_setfield(L, -2, "restitutionThreshold");
-    lua_pushstring(L, kFrictionMixNames[options.frictionMix == FrictionMix::Min ? 0 : 1]);
-    lua_setfield(L, -2, "frictionMix");
-    pushWhole(L, options.maxContactsPerBody);
-    lua_setfield(L, -2, "maxContactsPerBody");
+/// The options as a table that their setter (and newWorld) accepts.
+template <class Options, class F, std::size_t N>
+void pushOptions(lua_State* L, const Options& options, const F (&table)[N]) {
+    lua_createtable(L, 0, static_cast<int>(N));
+    setFields(L, options, table);
 }
 
 // --- Methods -----------------------------------------------------------------------------
@@ -237,7 +203,7 @@ int worldSetMaxVelocity(lua_State* L) {
 }
 
 int worldGetSolver(lua_State* L) {
-    lua_pushstring(L, solverName(checkWorld(L, 1, "World:getSolver").world.solver()));
+    pushField(L, checkWorld(L, 1, "World:getSolver").world.solver());
     return 1;
 }
 
@@ -268,7 +234,8 @@ int worldSetSleeping(lua_State* L) {
 }
 
 int worldGetClassicOptions(lua_State* L) {
-    pushClassicOptions(L, checkWorld(L, 1, "World:getClassicOptions").world.classicOptions());
+    pushOptions(L, checkWorld(L, 1, "World:getClassicOptions").world.classicOptions(),
+                properties::kClassicFields);
     return 1;
 }
 
@@ -284,7 +251,8 @@ int worldSetClassicOptions(lua_State* L) {
 }
 
 int worldGetPhysicalOptions(lua_State* L) {
-    pushPhysicalOptions(L, checkWorld(L, 1, "World:getPhysicalOptions").world.physicalOptions());
+    pushOptions(L, checkWorld(L, 1, "World:getPhysicalOptions").world.physicalOptions(),
+                properties::kPhysicalFields);
     return 1;
 }
 
