@@ -17,37 +17,16 @@ bool World::isValid(BodyId id) const {
     return state_->isCurrent(id);
 }
 
-namespace {
-
-/// Calls f(BodyDef member, Body member) for each setting a Body keeps as its BodyDef gives
-/// it; position, velocity and size become vectors.
-template <class F> void forEachKeptSetting(F&& f) {
-    f(&BodyDef::type, &Body::type);
-    f(&BodyDef::bounce, &Body::bounce);
-    f(&BodyDef::friction, &Body::friction);
-    f(&BodyDef::mass, &Body::mass);
-    f(&BodyDef::gravityScale, &Body::gravityScale);
-    f(&BodyDef::damping, &Body::damping);
-    f(&BodyDef::bullet, &Body::bullet);
-    f(&BodyDef::oneWay, &Body::oneWay);
-    f(&BodyDef::category, &Body::category);
-    f(&BodyDef::mask, &Body::mask);
-    f(&BodyDef::sensor, &Body::sensor);
-    f(&BodyDef::character, &Body::character);
-    f(&BodyDef::wallFriction, &Body::wallFriction);
-    f(&BodyDef::snapDown, &Body::snapDown);
-    f(&BodyDef::surfaceVelocity, &Body::surfaceVelocity);
-}
-
-} // namespace
-
 BodyId World::createBody(const BodyDef& def) {
     requireChangeable(*state_, "createBody");
     if (auto problem = checkBodyDef(def))
         fail("createBody", "BodyDef." + problem->field + ": " + problem->problem);
 
     WorldState& w = *state_;
-    const Shape shape{def.radius, def.slope, def.segment};
+    Body made;
+    KeptAsGiven kept;
+    Shape shape;
+    properties::keep(def, {made, kept, shape});
     if (shape.kind() != ShapeKind::Box && w.def.solver == Solver::Classic)
         fail("createBody", std::string("BodyDef.") + (def.slope != Vec2{} ? "slope" : "radius") +
                                ": the classic model has sharp boxes only");
@@ -60,34 +39,18 @@ BodyId World::createBody(const BodyDef& def) {
     w.shapes.resize(w.slots.size());
     w.shapes[slot] = shape;
     w.asGiven.resize(w.slots.size());
-    w.asGiven[slot] = {def.userData, def.floorAngle, def.density, def.cornerCorrection, def.stepUp};
-    if (w.asGiven[slot].slipsRoundCorners())
-        ++w.cornerBodies;
+    w.asGiven[slot] = kept;
     // A body created by a callback may be touched later in the same step.
     w.events.touching.resize(w.slots.size(), 0);
     w.events.touching[slot] = 0;
-    Body& body = w.slots[slot];
-    const std::uint32_t generation = body.generation;
-    body = Body{};
-    body.generation = generation;
-    body.alive = true;
-    body.position = {def.x, def.y};
-    body.velocity = {def.vx, def.vy};
-    body.half = {def.hw, def.hh};
-    forEachKeptSetting([&](auto given, auto kept) { body.*kept = def.*given; });
-    body.lastStepVelocity = body.velocity;
-    body.shape = shape.kind();
-    body.floorCos = floorCosOf(def.floorAngle);
-    if (!body.isBox())
-        ++w.shapedBodies;
-    if (body.maySnap())
-        ++w.snappingBodies;
-    body.updateMass(def.density);
-    if (body.surfaceVelocity != Vec2{})
-        ++w.conveyors;
+    made.generation = w.slots[slot].generation;
+    made.alive = true;
+    made.lastStepVelocity = made.velocity;
+    made.shape = shape.kind();
+    deriveFrom(kept, made);
+    w.slots[slot] = made;
+    w.count(slot, true);
 
-    if (slot < w.events.touching.size())
-        w.events.touching[slot] = 0; // the slot's last body's flags
     const BodyId id = w.idOf(slot);
     w.order.append(id);
     disturb(w, slot);
@@ -101,15 +64,8 @@ void World::destroyBody(BodyId id) {
     w.events.destroyedSincePublish = true;
     if (body.type == BodyType::Static)
         w.restingDirty = true;
+    w.count(id.index, false);
     body.alive = false;
-    if (!body.isBox())
-        --w.shapedBodies;
-    if (body.maySnap())
-        --w.snappingBodies;
-    if (body.surfaceVelocity != Vec2{})
-        --w.conveyors;
-    if (w.asGiven[id.index].slipsRoundCorners())
-        --w.cornerBodies;
     if (moveGenerationOn(body))
         (w.stepping ? w.pendingFree : w.freeSlots).push_back(id.index);
     w.order.remove(id.index);
@@ -126,24 +82,9 @@ std::size_t World::bodyCount() const {
 // --- Body getters and setters ----------------------------------------------------------
 
 BodyDef World::bodyDef(BodyId id) const {
-    const Body& b = lookUp(*state_, id, "bodyDef");
-    BodyDef def{.x = b.position.x,
-                .y = b.position.y,
-                .hw = b.half.x,
-                .hh = b.half.y,
-                .vx = b.velocity.x,
-                .vy = b.velocity.y};
-    forEachKeptSetting([&](auto given, auto kept) { def.*given = b.*kept; });
-    const Shape& shape = state_->shapes[id.index];
-    def.radius = shape.radius;
-    def.slope = shape.slope;
-    def.segment = shape.segment;
-    def.userData = state_->asGiven[id.index].userData;
-    def.floorAngle = state_->asGiven[id.index].floorAngle;
-    def.density = state_->asGiven[id.index].density;
-    def.cornerCorrection = state_->asGiven[id.index].cornerCorrection;
-    def.stepUp = state_->asGiven[id.index].stepUp;
-    return def;
+    const WorldState& w = *state_;
+    lookUp(w, id, "bodyDef");
+    return properties::definitionOf(placesOf(w, id.index));
 }
 
 BodyType World::type(BodyId id) const {
@@ -211,20 +152,19 @@ void World::setHalfExtents(BodyId id, Vec2 halfExtents) {
 }
 
 float World::bounce(BodyId id) const {
-    return lookUp(*state_, id, "bounce").bounce;
+    return getKept<float>(*state_, id, "bounce", properties::kBounce);
 }
 
 void World::setBounce(BodyId id, float bounce) {
-    setKept(*state_, id, "setBounce", "bounce", properties::kBounce, &Body::bounce, bounce);
+    setKept(*state_, id, "setBounce", "bounce", properties::kBounce, bounce);
 }
 
 float World::friction(BodyId id) const {
-    return lookUp(*state_, id, "friction").friction;
+    return getKept<float>(*state_, id, "friction", properties::kFriction);
 }
 
 void World::setFriction(BodyId id, float friction) {
-    setKept(*state_, id, "setFriction", "friction", properties::kFriction, &Body::friction,
-            friction);
+    setKept(*state_, id, "setFriction", "friction", properties::kFriction, friction);
 }
 
 float World::mass(BodyId id) const {
@@ -252,28 +192,27 @@ void World::setDensity(BodyId id, float density) {
 }
 
 float World::gravityScale(BodyId id) const {
-    return lookUp(*state_, id, "gravityScale").gravityScale;
+    return getKept<float>(*state_, id, "gravityScale", properties::kGravityScale);
 }
 
 void World::setGravityScale(BodyId id, float scale) {
-    setKept(*state_, id, "setGravityScale", "scale", properties::kGravityScale, &Body::gravityScale,
-            scale);
+    setKept(*state_, id, "setGravityScale", "scale", properties::kGravityScale, scale);
 }
 
 float World::damping(BodyId id) const {
-    return lookUp(*state_, id, "damping").damping;
+    return getKept<float>(*state_, id, "damping", properties::kDamping);
 }
 
 void World::setDamping(BodyId id, float damping) {
-    setKept(*state_, id, "setDamping", "damping", properties::kDamping, &Body::damping, damping);
+    setKept(*state_, id, "setDamping", "damping", properties::kDamping, damping);
 }
 
 bool World::isBullet(BodyId id) const {
-    return lookUp(*state_, id, "isBullet").bullet;
+    return getKept<bool>(*state_, id, "isBullet", properties::kBullet);
 }
 
 void World::setBullet(BodyId id, bool bullet) {
-    lookUpToChange(*state_, id, "setBullet").bullet = bullet;
+    setKept(*state_, id, "setBullet", "bullet", properties::kBullet, bullet, Disturbs::No);
 }
 
 bool World::isAwake(BodyId id) const {
@@ -286,22 +225,19 @@ void World::wake(BodyId id) {
 }
 
 Vec2 World::surfaceVelocity(BodyId id) const {
-    return lookUp(*state_, id, "surfaceVelocity").surfaceVelocity;
+    return getKept<Vec2>(*state_, id, "surfaceVelocity", properties::kSurfaceVelocity);
 }
 
 void World::setSurfaceVelocity(BodyId id, Vec2 velocity) {
-    Body& body = lookUpToChange(*state_, id, "setSurfaceVelocity");
+    const Body& body = lookUpToChange(*state_, id, "setSurfaceVelocity");
     requireFinite("setSurfaceVelocity", "velocity", velocity);
     if (velocity != Vec2{} && body.isDynamic())
         fail("setSurfaceVelocity", "a conveyor must be static or kinematic");
-    state_->conveyors +=
-        std::uint32_t(velocity != Vec2{}) - std::uint32_t(body.surfaceVelocity != Vec2{});
-    body.surfaceVelocity = velocity;
-    disturb(*state_, id.index);
+    setKept(*state_, id, "setSurfaceVelocity", "velocity", properties::kSurfaceVelocity, velocity);
 }
 
 Vec2 World::oneWay(BodyId id) const {
-    return lookUp(*state_, id, "oneWay").oneWay;
+    return getKept<Vec2>(*state_, id, "oneWay", properties::kOneWay);
 }
 
 void World::setOneWay(BodyId id, Vec2 normal) {
@@ -370,40 +306,35 @@ void World::applyImpulse(BodyId id, Vec2 impulse) {
 }
 
 std::uint32_t World::category(BodyId id) const {
-    return lookUp(*state_, id, "category").category;
+    return getKept<std::uint32_t>(*state_, id, "category", properties::kCategory);
 }
 
 void World::setCategory(BodyId id, std::uint32_t bits) {
-    lookUpToChange(*state_, id, "setCategory").category = bits;
-    disturb(*state_, id.index);
+    setKept(*state_, id, "setCategory", "bits", properties::kCategory, bits);
 }
 
 std::uint32_t World::mask(BodyId id) const {
-    return lookUp(*state_, id, "mask").mask;
+    return getKept<std::uint32_t>(*state_, id, "mask", properties::kMask);
 }
 
 void World::setMask(BodyId id, std::uint32_t bits) {
-    lookUpToChange(*state_, id, "setMask").mask = bits;
-    disturb(*state_, id.index);
+    setKept(*state_, id, "setMask", "bits", properties::kMask, bits);
 }
 
 bool World::isSensor(BodyId id) const {
-    return lookUp(*state_, id, "isSensor").sensor;
+    return getKept<bool>(*state_, id, "isSensor", properties::kSensor);
 }
 
 void World::setSensor(BodyId id, bool sensor) {
-    lookUpToChange(*state_, id, "setSensor").sensor = sensor;
-    disturb(*state_, id.index);
+    setKept(*state_, id, "setSensor", "sensor", properties::kSensor, sensor);
 }
 
 void* World::userData(BodyId id) const {
-    lookUp(*state_, id, "userData");
-    return state_->asGiven[id.index].userData;
+    return getKept<void*>(*state_, id, "userData", properties::kUserData);
 }
 
 void World::setUserData(BodyId id, void* data) {
-    lookUpToChange(*state_, id, "setUserData");
-    state_->asGiven[id.index].userData = data;
+    setKept(*state_, id, "setUserData", "data", properties::kUserData, data, Disturbs::No);
 }
 
 Vec2 World::separation(BodyId id) const {

@@ -10,86 +10,52 @@ namespace jostle {
 // --- Characters ---------------------------------------------------------------------------
 
 bool World::isCharacter(BodyId id) const {
-    return lookUp(*state_, id, "isCharacter").character;
+    return getKept<bool>(*state_, id, "isCharacter", properties::kCharacter);
 }
 
 void World::setCharacter(BodyId id, bool character) {
-    Body& b = lookUpToChange(*state_, id, "setCharacter");
-    const bool was = b.maySnap();
-    b.character = character;
-    state_->snappingBodies += std::uint32_t(b.maySnap()) - std::uint32_t(was);
-    disturb(*state_, id.index);
+    setKept(*state_, id, "setCharacter", "character", properties::kCharacter, character);
 }
 
 float World::wallFriction(BodyId id) const {
-    return lookUp(*state_, id, "wallFriction").wallFriction;
+    return getKept<float>(*state_, id, "wallFriction", properties::kWallFriction);
 }
 
 void World::setWallFriction(BodyId id, float friction) {
-    setKept(*state_, id, "setWallFriction", "friction", properties::kWallFriction,
-            &Body::wallFriction, friction);
+    setKept(*state_, id, "setWallFriction", "friction", properties::kWallFriction, friction);
 }
 
 float World::floorAngle(BodyId id) const {
-    lookUp(*state_, id, "floorAngle");
-    return state_->asGiven[id.index].floorAngle;
+    return getKept<float>(*state_, id, "floorAngle", properties::kFloorAngle);
 }
 
 void World::setFloorAngle(BodyId id, float degrees) {
-    Body& b = lookUpToChange(*state_, id, "setFloorAngle");
-    require("setFloorAngle", "degrees", properties::kFloorAngle.rule, degrees);
-    state_->asGiven[id.index].floorAngle = degrees;
-    b.floorCos = floorCosOf(degrees);
-    disturb(*state_, id.index);
+    setKept(*state_, id, "setFloorAngle", "degrees", properties::kFloorAngle, degrees);
 }
 
 float World::snapDown(BodyId id) const {
-    return lookUp(*state_, id, "snapDown").snapDown;
+    return getKept<float>(*state_, id, "snapDown", properties::kSnapDown);
 }
 
 void World::setSnapDown(BodyId id, float distance) {
-    const bool was = lookUpToChange(*state_, id, "setSnapDown").maySnap();
-    setKept(*state_, id, "setSnapDown", "distance", properties::kSnapDown, &Body::snapDown,
-            distance);
-    state_->snappingBodies += std::uint32_t(state_->slots[id.index].maySnap()) - std::uint32_t(was);
+    setKept(*state_, id, "setSnapDown", "distance", properties::kSnapDown, distance);
 }
-
-namespace {
-
-/// Sets a setting the corner stage reads (KeptAsGiven), keeping count of the bodies that
-/// slip round corners.
-void setCornerSetting(WorldState& w, BodyId id, const char* function, const char* what,
-                      const properties::Property& property, float KeptAsGiven::*member,
-                      float value) {
-    lookUpToChange(w, id, function);
-    require(function, what, property.rule, value);
-    KeptAsGiven& kept = w.asGiven[id.index];
-    const bool was = kept.slipsRoundCorners();
-    kept.*member = value;
-    w.cornerBodies += std::uint32_t(kept.slipsRoundCorners()) - std::uint32_t(was);
-    disturb(w, id.index);
-}
-
-} // namespace
 
 float World::cornerCorrection(BodyId id) const {
-    lookUp(*state_, id, "cornerCorrection");
-    return state_->asGiven[id.index].cornerCorrection;
+    return getKept<float>(*state_, id, "cornerCorrection", properties::kCornerCorrection);
 }
 
 void World::setCornerCorrection(BodyId id, float distance) {
-    setCornerSetting(*state_, id, "setCornerCorrection", "distance", properties::kCornerCorrection,
-                     &KeptAsGiven::cornerCorrection, distance);
+    setKept(*state_, id, "setCornerCorrection", "distance", properties::kCornerCorrection,
+            distance);
 }
 
 float World::stepUp(BodyId id) const {
-    lookUp(*state_, id, "stepUp");
-    return state_->asGiven[id.index].stepUp;
+    return getKept<float>(*state_, id, "stepUp", properties::kStepUp);
 }
 
 void World::setStepUp(BodyId id, float height) {
-    setCornerSetting(*state_, id, "setStepUp", "height", properties::kStepUp, &KeptAsGiven::stepUp,
-                     height);
+    setKept(*state_, id, "setStepUp", "height", properties::kStepUp, height);
 }
 
 float World::walkSpeed(BodyId id) const {
