@@ -2,6 +2,8 @@
 // C++ and scene files: tile (column, row) covers x + column × tile to x + (column + 1) ×
 // tile. So the string rows[1] of the definition is row 0.
 #include "binding.hpp"
+#include "body_properties.hpp"
+#include "definitions.hpp"
 #include "tile_rows.hpp"
 
 #include <cstdio>
@@ -41,19 +43,11 @@ void checkRows(lua_State* L, int rows, const char* where) {
     }
 }
 
-/// What newTileMap reads besides the rows: the scalar fields of TileMapDef, in a struct
-/// without a destructor (TileMapDef's vector of strings has one).
-struct MapSettings {
-    float x = 0.0f;
-    float y = 0.0f;
-    float tile = 0.0f;
-    float friction = 0.5f;
-    float bounce = 0.0f;
-    std::uint32_t category = 1;
-    std::uint32_t mask = 0xFFFFFFFF;
-    Vec2 oneWay{};
-    bool sensor = false;
-};
+using properties::kTileMapFields;
+
+/// What newTileMap reads besides the rows: the settings of TileMapDef, by its table, held
+/// apart from a TileMapDef, whose rows have a destructor (definitions.hpp).
+using MapSettings = Values<std::size(kTileMapFields)>;
 
 int worldNewTileMap(lua_State* L) {
     const char* where = "World:newTileMap";
@@ -61,23 +55,21 @@ int worldNewTileMap(lua_State* L) {
     requireChangeable(L, *handle.data, where);
     checkTable(L, 2, where, "def");
     const Fields fields(L, 2, where);
-    static constexpr const char* kNames[] = {"x",        "y",      "tile",     "rows",
-                                             "friction", "bounce", "category", "mask",
-                                             "oneWay",   "sensor", nullptr};
-    fields.allowOnly(kNames);
-    MapSettings settings;
-    fields.number("x", settings.x);
-    fields.number("y", settings.y);
-    if (!fields.number("tile", settings.tile))
-        raise(L, where, "missing field \"tile\"");
-    if (!(settings.tile > 0.0f))
-        fields.fail("tile", "must be > 0");
-    fields.number("friction", settings.friction);
-    fields.number("bounce", settings.bounce);
-    fields.bits("category", settings.category);
-    fields.bits("mask", settings.mask);
-    fields.vec2("oneWay", settings.oneWay);
-    fields.boolean("sensor", settings.sensor);
+    // The map's settings but a pointer (userData: a game keys its own table by the map),
+    // and its rows.
+    static constexpr auto kNames =
+        Names<std::size(kTileMapFields) + 1>().addAll(kTileMapFields).add("rows");
+    fields.allowOnly(kNames.data());
+    MapSettings settings = defaultsOf(kTileMapFields);
+    readValues(fields, settings, kTileMapFields,
+               [&](const auto& field, const properties::Value& value, bool given) {
+                   const char* name = field.property->name;
+                   if (!given && field.property->required)
+                       raise(L, where, "missing field \"%s\"", name);
+                   // A map's tile at once: a map of tiles of no size has no rows to check.
+                   if (field.property == &properties::kTile && !(std::get<float>(value) > 0.0f))
+                       fields.fail(name, "must be > 0");
+               });
     fields.push("rows");
     if (lua_isnil(L, -1))
         raise(L, where, "missing field \"rows\"");
@@ -91,15 +83,7 @@ int worldNewTileMap(lua_State* L) {
     TileMapId id;
     const bool ran = attempt(message, [&] {
         TileMapDef def;
-        def.x = settings.x;
-        def.y = settings.y;
-        def.tile = settings.tile;
-        def.friction = settings.friction;
-        def.bounce = settings.bounce;
-        def.category = settings.category;
-        def.mask = settings.mask;
-        def.oneWay = settings.oneWay;
-        def.sensor = settings.sensor;
+        setValues(def, settings, kTileMapFields);
         def.rows.reserve(rowCount);
         for (std::size_t i = 1; i <= rowCount; ++i) {
             // Raw reads of strings checked above: these calls neither allocate nor raise.
@@ -233,35 +217,10 @@ int mapGetDef(lua_State* L) {
     guard(L, where, [&] {
         const World& world = map.world->data->world;
         rows = tileMapRows(world, map.id);
-        const TileMapDef def = tileMapDef(world, map.id);
-        settings = {def.x,        def.y,    def.tile,   def.friction, def.bounce,
-                    def.category, def.mask, def.oneWay, def.sensor};
+        settings = valuesOf(tileMapDef(world, map.id), kTileMapFields);
     });
     lua_createtable(L, 0, 10);
-    const struct {
-        const char* name;
-        float value;
-    } numbers[] = {{"x", settings.x},
-                   {"y", settings.y},
-                   {"tile", settings.tile},
-                   {"friction", settings.friction},
-                   {"bounce", settings.bounce}};
-    for (const auto& number : numbers) {
-        lua_pushnumber(L, static_cast<lua_Number>(number.value));
-        lua_setfield(L, -2, number.name);
-    }
-    pushWhole(L, settings.category);
-    lua_setfield(L, -2, "category");
-    pushWhole(L, settings.mask);
-    lua_setfield(L, -2, "mask");
-    lua_createtable(L, 2, 0);
-    lua_pushnumber(L, static_cast<lua_Number>(settings.oneWay.x));
-    lua_rawseti(L, -2, 1);
-    lua_pushnumber(L, static_cast<lua_Number>(settings.oneWay.y));
-    lua_rawseti(L, -2, 2);
-    lua_setfield(L, -2, "oneWay");
-    lua_pushboolean(L, settings.sensor);
-    lua_setfield(L, -2, "sensor");
+    setValueFields(L, settings, kTileMapFields);
 
     // The rows, one string each, built with luaL_Buffer from tileOf: no C++ string
     // lives while Lua allocates.
