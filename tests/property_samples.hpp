@@ -1,10 +1,14 @@
-// For tests that walk the property tables of src/body_properties.hpp: a valid value of
-// each property that is not its default, what else a body needs to take it, and reading
-// and writing a field by its table entry.
+// For tests that walk the tables of src/body_properties.hpp and src/world_options.hpp: a
+// valid value of each property that is not its default, what else a body needs to take
+// it, reading and writing a field by its table entry, and every table by name.
 #pragma once
 
 #include "body_properties.hpp"
+#include "notation.hpp"
+#include "world_options.hpp"
 
+#include <cstdio>
+#include <string>
 #include <type_traits>
 #include <utility>
 #include <variant>
@@ -12,14 +16,20 @@
 
 namespace jostle::test_support {
 
-/// A value of `property` that a BodyDef or TileMapDef accepts and that is not its default.
+/// A value of `property` that its definition (BodyDef, TileMapDef, WorldDef and its
+/// options) accepts and that is not its default.
 inline properties::Value sampleOf(const properties::Property& property) {
     using properties::Rule;
     static int anchor; // something for userData to point to
+    const properties::Interval& range = property.range;
     auto sample = [&](auto byDefault) -> properties::Value {
         using T = decltype(byDefault);
-        if constexpr (std::is_same_v<T, float>) {
+        if constexpr (std::is_same_v<T, int>) {
+            return range.contains(byDefault + 1) ? byDefault + 1 : byDefault - 1;
+        } else if constexpr (std::is_same_v<T, float>) {
             switch (property.rule) {
+            case Rule::Interval:
+                return static_cast<float>((range.low + range.high) / 2);
             case Rule::Unit:
                 return 0.25f;
             case Rule::Size:
@@ -39,6 +49,10 @@ inline properties::Value sampleOf(const properties::Property& property) {
             return byDefault ^ 6u;
         } else if constexpr (std::is_same_v<T, BodyType>) {
             return BodyType::Kinematic;
+        } else if constexpr (std::is_same_v<T, Solver>) {
+            return Solver::Classic;
+        } else if constexpr (std::is_same_v<T, FrictionMix>) {
+            return FrictionMix::GeometricMean;
         } else {
             return static_cast<void*>(&anchor);
         }
@@ -78,6 +92,67 @@ void setValue(Def& def, const F& field, const properties::Value& value) {
             def.*member = std::get<T>(value);
         },
         field.member);
+}
+
+/// `value` as a scene file (Notation::Json) or Lua writes it: [0, -1] or {0, -1}, "kinematic";
+/// null (nil) for a pointer, which neither can hold.
+inline std::string literalOf(const properties::Value& value, Notation notation) {
+    const bool lua = notation == Notation::Lua;
+    auto literal = [&](auto v) -> std::string {
+        using T = decltype(v);
+        char text[64];
+        if constexpr (std::is_same_v<T, float>) {
+            std::snprintf(text, sizeof text, "%.9g", static_cast<double>(v));
+            return text;
+        } else if constexpr (std::is_same_v<T, Vec2>) {
+            std::snprintf(text, sizeof text, lua ? "{%.9g, %.9g}" : "[%.9g, %.9g]",
+                          static_cast<double>(v.x), static_cast<double>(v.y));
+            return text;
+        } else if constexpr (std::is_same_v<T, bool>) {
+            return v ? "true" : "false";
+        } else if constexpr (std::is_same_v<T, std::uint32_t> || std::is_same_v<T, int>) {
+            return std::to_string(v);
+        } else if constexpr (std::is_same_v<T, void*>) {
+            return lua ? "nil" : "null";
+        } else {
+            return std::string("\"") + toString(v) + "\""; // a name: BodyType, Solver, ...
+        }
+    };
+    return std::visit(literal, value);
+}
+
+/// The part of a WorldDef that a table of world_options.hpp describes: the WorldDef itself,
+/// its task system or one of its options.
+inline WorldDef& partOf(WorldDef& def, const properties::WorldField&) {
+    return def;
+}
+inline TaskSystem& partOf(WorldDef& def, const properties::TaskField&) {
+    return def.tasks;
+}
+inline ClassicOptions& partOf(WorldDef& def, const properties::ClassicField&) {
+    return def.classic;
+}
+inline PhysicalOptions& partOf(WorldDef& def, const properties::PhysicalField&) {
+    return def.physical;
+}
+
+/// Calls f(name, table) for every table of a world's settings: its own fields, its task
+/// system's and its options'; the name is the table's part of a WorldDef ("physical").
+template <class F> void forEachWorldTable(F&& f) {
+    f("world", properties::kWorldFields);
+    f("tasks", properties::kTaskFields);
+    f("classic", properties::kClassicFields);
+    f("physical", properties::kPhysicalFields);
+}
+
+/// Calls f(name, table) for every table of settings: a world's, a body's and a tile map's.
+/// A new table belongs here (or in forEachWorldTable), so that the tests that walk every
+/// row of every table (test_properties.cpp, test_scene.cpp, and through jostle-test-rows
+/// the Lua and JavaScript ones) walk it too.
+template <class F> void forEachTable(F&& f) {
+    forEachWorldTable(f);
+    f("body", properties::kBodyFields);
+    f("tileMap", properties::kTileMapFields);
 }
 
 } // namespace jostle::test_support

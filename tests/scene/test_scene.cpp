@@ -807,27 +807,7 @@ TEST(SceneTileMaps, SeveralMapsInFileOrder) {
 
 /// `value` as JSON; null for a pointer, which a file cannot hold.
 std::string jsonOf(const properties::Value& value) {
-    auto json = [](auto v) -> std::string {
-        using T = decltype(v);
-        char text[64];
-        if constexpr (std::is_same_v<T, float>) {
-            std::snprintf(text, sizeof text, "%.9g", static_cast<double>(v));
-            return text;
-        } else if constexpr (std::is_same_v<T, Vec2>) {
-            std::snprintf(text, sizeof text, "[%.9g, %.9g]", static_cast<double>(v.x),
-                          static_cast<double>(v.y));
-            return text;
-        } else if constexpr (std::is_same_v<T, bool>) {
-            return v ? "true" : "false";
-        } else if constexpr (std::is_same_v<T, std::uint32_t>) {
-            return std::to_string(v);
-        } else if constexpr (std::is_same_v<T, BodyType>) {
-            return std::string("\"") + toString(v) + "\"";
-        } else {
-            return "null";
-        }
-    };
-    return std::visit(json, value);
+    return test_support::literalOf(value, Notation::Json);
 }
 
 TEST(SceneProperties, EveryBodyPropertyAFileCanHoldIsRead) {
@@ -867,6 +847,27 @@ TEST(SceneProperties, EveryTileMapPropertyAFileCanHoldIsRead) {
         const Scene parsed = parseScene(scene);
         EXPECT_TRUE(valueOf(parsed.tileMaps.at(0), field) == sample) << name;
     }
+}
+
+// WorldDef's own fields at the top level, its options in "classic" and "physical"; its task
+// system is the game's to choose when it makes the world, not the scene's.
+TEST(SceneProperties, EveryWorldOptionAFileCanHoldIsRead) {
+    test_support::forEachWorldTable([](const std::string& table, const auto& fields) {
+        for (const auto& field : fields) {
+            const std::string name = field.property->name;
+            const properties::Value sample = sampleOf(*field.property);
+            const std::string value = "\"" + name + "\": " + jsonOf(sample);
+            const bool top = table == "world" || table == "tasks";
+            const std::string scene = withTop(top ? value : "\"" + table + "\": {" + value + "}");
+            if (table == "tasks") {
+                EXPECT_THAT(errorOf(scene), StartsWith("unknown field \"" + name + "\""));
+                continue;
+            }
+            WorldDef world = parseScene(scene).world;
+            EXPECT_TRUE(valueOf(test_support::partOf(world, field), field) == sample)
+                << table << "." << name;
+        }
+    });
 }
 
 TEST(SceneErrors, TileMaps) {

@@ -6,11 +6,14 @@
 // function and what the caller passed, not the scene the module wrapped it in, in
 // JavaScript's notation and counting; body numbers are given again after destroy, so that
 // a million bodies made and destroyed leave boxes() listing the two live ones, the body
-// numbers small and the module's heap as it was.
+// numbers small and the module's heap as it was; and every row of every table of settings
+// (src/body_properties.hpp, src/world_options.hpp, as jostle-test-rows lists them) reaches
+// the world from a definition.
 // jostle.version is the version of include/jostle/version.h, which CMake passes.
-//   node js_api.js <page dir> <version>
+//   node js_api.js <page dir> <version> <jostle-test-rows>
 "use strict";
 
+const {execFileSync} = require("node:child_process");
 const fs = require("node:fs");
 const path = require("node:path");
 
@@ -272,8 +275,73 @@ function conveyor(jostle) {
   world.destroy();
 }
 
+/// Every row of every table of settings, from a definition: JavaScript's definitions are
+/// scene files' (jostle.js writes them as JSON for the module's scene loader), so a row a
+/// file holds is taken, and a value of the wrong type for it is refused by its name: the
+/// loader reads it. What jostle.js gives back (a body's centre, velocity and size, by
+/// body() and boxes()) is the value given; it has no getter for the other rows. A row no
+/// file holds (a pointer, the task system's workers) is refused as an unknown field.
+function everyRow(jostle, rows) {
+  const refusal = (call) => {
+    try {
+      call();
+    } catch (e) {
+      return e.message;
+    }
+    return "";
+  };
+  const seen = new Set();
+  const givenBack = new Set();
+  const bodies = jostle.createWorld();
+  for (const row of rows) {
+    seen.add(row.table);
+    const what = `${row.table}.${row.name}`;
+    const wrong = typeof row.sample === "string" ? 1 : "x";
+    const def = (value) => ({...row.needs, [row.name]: value});
+    // How a value of the row reaches a world, and the place its messages name.
+    let make, place, fn = "createWorld";
+    if (row.table === "world" || row.table === "tasks") {
+      make = (value) => jostle.createWorld(def(value)).destroy();
+      place = row.name;
+    } else if (row.table === "classic" || row.table === "physical") {
+      make = (value) => jostle.createWorld({[row.table]: def(value)}).destroy();
+      place = `${row.table}.${row.name}`;
+    } else if (row.table === "tileMap") {
+      make = (value) => jostle.createWorld({tilemap: def(value)}).destroy();
+      place = `tilemap.${row.name}`;
+    } else {
+      make = (value) => {
+        const body = bodies.createBody(def(value));
+        const read = {...bodies.body(body), ...bodies.boxes().find((box) => box.body === body)};
+        if (row.name in read && value === row.sample) {
+          check(read[row.name] === value, `${what}: the world gives back ${read[row.name]} (${value})`);
+          givenBack.add(row.name);
+        }
+      };
+      place = row.name;
+      fn = "createBody";
+    }
+    if (!row.file) {
+      const message = refusal(() => make(row.pointer ? {} : row.sample));
+      const where = place.includes(".") ? `${place.slice(0, place.lastIndexOf("."))}: ` : "";
+      check(message.startsWith(`${fn}: ${where}unknown field "${row.name}"`),
+            `${what}, which no file holds, is refused: ${message}`);
+      continue;
+    }
+    const taken = refusal(() => make(row.sample));
+    check(taken === "", `${what} = ${JSON.stringify(row.sample)} is taken${taken ? `: ${taken}` : ""}`);
+    const message = refusal(() => make(wrong));
+    check(message.startsWith(`${fn}: ${place}: expected`), `${what} of the wrong type is refused by its name: ${message}`);
+  }
+  bodies.destroy();
+  check(["x", "y", "vx", "vy", "hw", "hh"].every((name) => givenBack.has(name)),
+        `the body rows jostle.js reads are given back: ${[...givenBack].join(", ")}`);
+  for (const table of ["world", "tasks", "classic", "physical", "body", "tileMap"])
+    check(seen.has(table), `jostle-test-rows lists the rows of ${table}`);
+}
+
 async function main() {
-  const [pageDir, version] = process.argv.slice(2);
+  const [pageDir, version, rowsProgram] = process.argv.slice(2);
   const Jostle = loadPageScripts(path.resolve(pageDir));
   const wasmBinary = fs.readFileSync(path.join(pageDir, "jostle-web.wasm"));
   const jostle = await Jostle.load({wasmBinary});
@@ -287,7 +355,10 @@ async function main() {
   }
   check(loadError === "TypeError: Jostle.load: options must be an object, got null",
         `Jostle.load(null) is refused: ${loadError}`);
-  for (const part of [argumentChecks, messages, numbersAfterDestroy, churn, conveyor]) {
+  const rows = execFileSync(rowsProgram, {encoding: "utf8"}).trim().split("\n").map((line) => JSON.parse(line));
+  const everyRowOf = (j) => everyRow(j, rows);
+  Object.defineProperty(everyRowOf, "name", {value: "everyRow"});
+  for (const part of [argumentChecks, messages, numbersAfterDestroy, churn, conveyor, everyRowOf]) {
     try {
       part(jostle);
     } catch (error) {
