@@ -8,6 +8,7 @@
 #include "world_options.hpp"
 
 #include <cstdio>
+#include <initializer_list>
 #include <string>
 #include <type_traits>
 #include <utility>
@@ -16,8 +17,17 @@
 
 namespace jostle::test_support {
 
+/// The first of `candidates` that is not `byDefault`.
+template <class T> T otherThan(T byDefault, std::initializer_list<T> candidates) {
+    for (const T& candidate : candidates)
+        if (!(candidate == byDefault))
+            return candidate;
+    return byDefault; // not reached: each list has two values
+}
+
 /// A value of `property` that its definition (BodyDef, TileMapDef, WorldDef and its
-/// options) accepts and that is not its default.
+/// options) accepts and that is not its default (Properties.EverySampleIsNotItsDefault),
+/// so that a row given back as its default fails the tests that walk the tables.
 inline properties::Value sampleOf(const properties::Property& property) {
     using properties::Rule;
     static int anchor; // something for userData to point to
@@ -27,32 +37,35 @@ inline properties::Value sampleOf(const properties::Property& property) {
         if constexpr (std::is_same_v<T, int>) {
             return range.contains(byDefault + 1) ? byDefault + 1 : byDefault - 1;
         } else if constexpr (std::is_same_v<T, float>) {
+            const auto middle = static_cast<float>((range.low + range.high) / 2);
             switch (property.rule) {
             case Rule::Interval:
-                return static_cast<float>((range.low + range.high) / 2);
+                return otherThan(byDefault, {middle, (static_cast<float>(range.low) + middle) / 2});
             case Rule::Unit:
-                return 0.25f;
+                return otherThan(byDefault, {0.25f, 0.75f});
             case Rule::Size:
-                return 2.5f;
+                return otherThan(byDefault, {2.5f, 1.5f});
             case Rule::MassOrZero:
-                return 3.0f;
+                return otherThan(byDefault, {3.0f, 2.0f});
             case Rule::NonNegative:
-                return 0.75f;
+                return otherThan(byDefault, {0.75f, 0.5f});
             default:
-                return 7.5f;
+                return otherThan(byDefault, {7.5f, 2.5f});
             }
         } else if constexpr (std::is_same_v<T, Vec2>) {
-            return property.rule == Rule::Corner ? Vec2{1.0f, -1.0f} : Vec2{0.0f, -1.0f};
+            return property.rule == Rule::Corner
+                       ? otherThan(byDefault, {{1.0f, -1.0f}, {-1.0f, 1.0f}})
+                       : otherThan(byDefault, {{0.0f, -1.0f}, {1.0f, 0.0f}});
         } else if constexpr (std::is_same_v<T, bool>) {
             return !byDefault;
         } else if constexpr (std::is_same_v<T, std::uint32_t>) {
             return byDefault ^ 6u;
         } else if constexpr (std::is_same_v<T, BodyType>) {
-            return BodyType::Kinematic;
+            return otherThan(byDefault, {BodyType::Kinematic, BodyType::Static});
         } else if constexpr (std::is_same_v<T, Solver>) {
-            return Solver::Classic;
+            return otherThan(byDefault, {Solver::Classic, Solver::Physical});
         } else if constexpr (std::is_same_v<T, FrictionMix>) {
-            return FrictionMix::GeometricMean;
+            return otherThan(byDefault, {FrictionMix::GeometricMean, FrictionMix::Min});
         } else {
             return static_cast<void*>(&anchor);
         }
