@@ -11,7 +11,10 @@
 #include "jostle/tilemap.hpp"
 #include "properties.hpp"
 
+#include <array>
+#include <cstddef>
 #include <cstdint>
+#include <iterator>
 #include <type_traits>
 #include <variant>
 
@@ -155,6 +158,30 @@ inline constexpr TileMapField kTileMapFields[] = {
     {kSensor, &TileMapDef::sensor, &jostle_tile_map_def::sensor},
     {kUserData, &TileMapDef::userData, &jostle_tile_map_def::user_data},
 };
+
+/// For each row of kTileMapFields, the row of kBodyFields of the same property, which a
+/// map's bodies take from the map (friction, oneWay, userData...), or nullptr: the tile,
+/// and x and y, the map's corner (its bodies' centres are worked out from the tiles).
+inline constexpr auto kMapToBodyFields = [] {
+    std::array<const BodyField*, std::size(kTileMapFields)> rows{};
+    for (std::size_t i = 0; i < rows.size(); ++i)
+        if (kTileMapFields[i].property != &kX && kTileMapFields[i].property != &kY)
+            rows[i] = find(kBodyFields, *kTileMapFields[i].property);
+    return rows;
+}();
+
+/// Gives `body` each setting of `map` that a map's bodies take from it (kMapToBodyFields).
+inline void shareWithBody(const TileMapDef& map, BodyDef& body) {
+    for (std::size_t i = 0; i < std::size(kTileMapFields); ++i)
+        if (const BodyField* row = kMapToBodyFields[i])
+            std::visit(
+                [&](auto from, auto to) {
+                    using From = std::remove_cvref_t<decltype(map.*from)>;
+                    if constexpr (std::is_same_v<From, std::remove_cvref_t<decltype(body.*to)>>)
+                        body.*to = map.*from;
+                },
+                kTileMapFields[i].member, row->member);
+}
 
 // --- A body's properties where a world keeps them ----------------------------------------
 

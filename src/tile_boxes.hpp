@@ -3,6 +3,7 @@
 // (tile_boxes.cpp); tilemap.cpp keeps them in step with the tiles.
 #pragma once
 
+#include "body_properties.hpp"
 #include "tile_chars.hpp"
 #include "tilemap.hpp"
 #include "world_access.hpp"
@@ -152,18 +153,13 @@ private:
         const double right = static_cast<double>(s.x) + toColumn * tile;
         const double top = static_cast<double>(s.y) + fromRow * tile;
         const double bottom = static_cast<double>(s.y) + toRow * tile;
-        return BodyDef{.type = BodyType::Static,
-                       .x = static_cast<float>((left + right) / 2),
-                       .y = static_cast<float>((top + bottom) / 2),
-                       .hw = static_cast<float>((right - left) / 2),
-                       .hh = static_cast<float>((bottom - top) / 2),
-                       .bounce = s.bounce,
-                       .friction = s.friction,
-                       .oneWay = s.oneWay,
-                       .category = s.category,
-                       .mask = s.mask,
-                       .sensor = s.sensor,
-                       .userData = s.userData};
+        BodyDef def{.type = BodyType::Static,
+                    .x = static_cast<float>((left + right) / 2),
+                    .y = static_cast<float>((top + bottom) / 2),
+                    .hw = static_cast<float>((right - left) / 2),
+                    .hh = static_cast<float>((bottom - top) / 2)};
+        properties::shareWithBody(s, def);
+        return def;
     }
 
     /// Lists `body` as the map's, created last; returns its ticket in the list.

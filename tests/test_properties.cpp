@@ -178,9 +178,16 @@ TEST(Properties, TheWorldKeepsEveryTileMapSetting) {
         TileMapDef def{.tile = 1, .rows = {"#"}};
         setValue(def, field, sampleOf(*field.property));
         ASSERT_FALSE(checkTileMapDef(def)) << name;
-        EXPECT_TRUE(valueOf(tileMapDef(world, createTileMap(world, def)), field) ==
-                    valueOf(def, field))
-            << name;
+        const TileMapId made = createTileMap(world, def);
+        EXPECT_TRUE(valueOf(tileMapDef(world, made), field) == valueOf(def, field)) << name;
+        // Its bodies take the settings a body has too, but the map's corner.
+        const properties::BodyField* bodyField = properties::find(kBodyFields, *field.property);
+        if (bodyField && field.property != &properties::kX && field.property != &properties::kY) {
+            ASSERT_EQ(tileMapBodies(world, made).size(), 1u) << name;
+            EXPECT_TRUE(valueOf(world.bodyDef(tileMapBodies(world, made)[0]), *bodyField) ==
+                        valueOf(def, field))
+                << name;
+        }
         // The C struct carries it to the world.
         jostle_tile_map_def c = jostle_default_tile_map_def();
         c_api::copyToC(def, c, kTileMapFields);
