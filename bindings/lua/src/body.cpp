@@ -192,7 +192,7 @@ int bodyGetType(lua_State* L) {
 int bodySetType(lua_State* L) {
     const char* where = "Body:setType";
     const BodyHandle& body = checkBody(L, 1, where);
-    const BodyType type = bodyTypeOf(checkOption(L, 2, where, "type", kTypeNames));
+    const BodyType type = valueAt<BodyType>(checkOption(L, 2, where, "type", kTypeNames));
     change(L, where, body, [&](World& w, BodyId id) { w.setType(id, type); });
     return 0;
 }

@@ -3,27 +3,6 @@
 
 namespace jostle::lua {
 
-// The names of each enum are in the order of its values: 0, 1, 2.
-BodyType bodyTypeOf(int option) {
-    return static_cast<BodyType>(option);
-}
-
-Solver solverOf(int option) {
-    return static_cast<Solver>(option);
-}
-
-FrictionMix frictionMixOf(int option) {
-    return static_cast<FrictionMix>(option);
-}
-
-bool readField(const Fields& fields, const properties::Property& property, BodyType& out) {
-    int option = 0;
-    if (!fields.option(property.name, option, kTypeNames))
-        return false;
-    out = bodyTypeOf(option);
-    return true;
-}
-
 bool readField(const Fields& fields, const properties::Property& property, float& out) {
     if (property.rule == properties::Rule::PositiveOrInfinity)
         return fields.numberOrInfinity(property.name, out);
@@ -48,29 +27,8 @@ bool readField(const Fields& fields, const properties::Property& property, int& 
                         static_cast<int>(range.high));
 }
 
-bool readField(const Fields& fields, const properties::Property& property, Solver& out) {
-    int option = 0;
-    if (!fields.option(property.name, option, kSolverNames))
-        return false;
-    out = solverOf(option);
-    return true;
-}
-
-bool readField(const Fields& fields, const properties::Property& property, FrictionMix& out) {
-    int option = 0;
-    if (!fields.option(property.name, option, kFrictionMixNames))
-        return false;
-    out = frictionMixOf(option);
-    return true;
-}
-
 bool readField(const Fields&, const properties::Property&, void*&) {
     return false;
-}
-
-bool pushField(lua_State* L, BodyType type) {
-    lua_pushstring(L, kTypeNames[static_cast<int>(type)]);
-    return true;
 }
 
 bool pushField(lua_State* L, float value) {
@@ -99,16 +57,6 @@ bool pushField(lua_State* L, std::uint32_t value) {
 
 bool pushField(lua_State* L, int value) {
     pushWhole(L, value);
-    return true;
-}
-
-bool pushField(lua_State* L, Solver solver) {
-    lua_pushstring(L, kSolverNames[static_cast<int>(solver)]);
-    return true;
-}
-
-bool pushField(lua_State* L, FrictionMix mix) {
-    lua_pushstring(L, kFrictionMixNames[static_cast<int>(mix)]);
     return true;
 }
 

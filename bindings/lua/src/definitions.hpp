@@ -10,6 +10,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <type_traits>
 #include <variant>
 
 namespace jostle::lua {
@@ -19,35 +20,57 @@ namespace jostle::lua {
 inline constexpr const char* kTypeNames[] = {"static", "kinematic", "dynamic", nullptr};
 inline constexpr const char* kSolverNames[] = {"classic", "physical", nullptr};
 inline constexpr const char* kFrictionMixNames[] = {"min", "geometricMean", nullptr};
-/// The value whose name is at `option` in its list.
-BodyType bodyTypeOf(int option);
-Solver solverOf(int option);
-FrictionMix frictionMixOf(int option);
+/// The names of an enum's values (kTypeNames...).
+template <class E> constexpr const char* const* namesOf();
+template <> constexpr const char* const* namesOf<BodyType>() {
+    return kTypeNames;
+}
+template <> constexpr const char* const* namesOf<Solver>() {
+    return kSolverNames;
+}
+template <> constexpr const char* const* namesOf<FrictionMix>() {
+    return kFrictionMixNames;
+}
+/// The value of an enum whose name is at `option` in namesOf<E>().
+template <class E> E valueAt(int option) {
+    return static_cast<E>(option);
+}
 
 /// Reads the field of `property` (by its name) into `out`: true if it is given. Raises if
 /// its value has the wrong type, or is a whole number outside the property's interval
 /// (Rule::Interval). A float takes math.huge where the rule allows no limit.
-bool readField(const Fields& fields, const properties::Property& property, BodyType& out);
 bool readField(const Fields& fields, const properties::Property& property, float& out);
 bool readField(const Fields& fields, const properties::Property& property, Vec2& out);
 bool readField(const Fields& fields, const properties::Property& property, bool& out);
 bool readField(const Fields& fields, const properties::Property& property, std::uint32_t& out);
 bool readField(const Fields& fields, const properties::Property& property, int& out);
-bool readField(const Fields& fields, const properties::Property& property, Solver& out);
-bool readField(const Fields& fields, const properties::Property& property, FrictionMix& out);
 /// A pointer (userData) is any Lua value, which the binding keeps itself: never read here.
 bool readField(const Fields& fields, const properties::Property& property, void*& out);
+/// An enum's value by its name (namesOf).
+template <class E>
+requires std::is_enum_v<E>
+bool readField(const Fields& fields, const properties::Property& property, E& out) {
+    int option = 0;
+    if (!fields.option(property.name, option, namesOf<E>()))
+        return false;
+    out = valueAt<E>(option);
+    return true;
+}
 
 /// Pushes a value as one Lua value; false (nothing pushed) for a pointer.
-bool pushField(lua_State* L, BodyType type);
 bool pushField(lua_State* L, float value);
 bool pushField(lua_State* L, Vec2 value);
 bool pushField(lua_State* L, bool value);
 bool pushField(lua_State* L, std::uint32_t value);
 bool pushField(lua_State* L, int value);
-bool pushField(lua_State* L, Solver solver);
-bool pushField(lua_State* L, FrictionMix mix);
 bool pushField(lua_State* L, void* pointer);
+/// An enum's value as its name (namesOf).
+template <class E>
+requires std::is_enum_v<E>
+bool pushField(lua_State* L, E value) {
+    lua_pushstring(L, namesOf<E>()[static_cast<int>(value)]);
+    return true;
+}
 
 /// True if a Lua table gives the property: all but a pointer, where only a body's is given
 /// (as any Lua value: World:newBody keeps it).

@@ -210,7 +210,7 @@ int worldGetSolver(lua_State* L) {
 int worldSetSolver(lua_State* L) {
     const char* where = "World:setSolver";
     WorldData& world = checkWorldToChange(L, 1, where);
-    const Solver solver = solverOf(checkOption(L, 2, where, "solver", kSolverNames));
+    const Solver solver = valueAt<Solver>(checkOption(L, 2, where, "solver", kSolverNames));
     guard(L, where, [&] { world.world.setSolver(solver); });
     return 0;
 }

@@ -47,6 +47,20 @@ local function getterOf(name)
   return "get" .. name:sub(1, 1):upper() .. name:sub(2)
 end
 
+-- The options of a model ("classic"): read by newWorld and by their setter
+-- (setClassicOptions), given back by their getter.
+local function options(group)
+  local getter = getterOf(group) .. "Options"
+  local setter = "s" .. getter:sub(2)
+  return function(row)
+    local world = jostle.newWorld({[group] = definition(row, row.sample)})
+    local other = jostle.newWorld()
+    other[setter](other, definition(row, row.sample))
+    expectSame(other[getter](other)[row.name], row.sample, setter .. ": " .. row.name)
+    return world[getter](world)[row.name]
+  end
+end
+
 -- What each table's rows are read into, and how the value comes back.
 local readBack = {
   world = function(row)
@@ -54,20 +68,8 @@ local readBack = {
     local got = {world[getterOf(row.name)](world)}
     return #got == 2 and got or got[1] -- gravity: x, y
   end,
-  classic = function(row)
-    local world = jostle.newWorld({classic = definition(row, row.sample)})
-    local other = jostle.newWorld()
-    other:setClassicOptions(definition(row, row.sample))
-    expectSame(other:getClassicOptions()[row.name], row.sample, "setClassicOptions: " .. row.name)
-    return world:getClassicOptions()[row.name]
-  end,
-  physical = function(row)
-    local world = jostle.newWorld({physical = definition(row, row.sample)})
-    local other = jostle.newWorld()
-    other:setPhysicalOptions(definition(row, row.sample))
-    expectSame(other:getPhysicalOptions()[row.name], row.sample, "setPhysicalOptions: " .. row.name)
-    return world:getPhysicalOptions()[row.name]
-  end,
+  classic = options("classic"),
+  physical = options("physical"),
   body = function(row, sample)
     return jostle.newWorld():newBody(definition(row, sample)):getDef()[row.name]
   end,
