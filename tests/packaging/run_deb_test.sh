@@ -41,8 +41,10 @@ c++ -std=c++20 "$source/tests/consumer/main.cpp" -o "$work/cxx_shared" \
 cc "$source/tests/c/consumer/main.c" -o "$work/c_static" $(pkg-config --cflags jostle) \
   -L"$libdir" -Wl,-Bstatic -ljostle -Wl,-Bdynamic -lstdc++ -lm -pthread
 # The shared library is the one the programs load.
-LD_LIBRARY_PATH=$libdir ldd "$work/c_shared" | grep -q "$libdir/libjostle.so.0.1" \
-  || { echo "c_shared does not load the package's libjostle.so.0.1"; exit 1; }
+# (ldd's output read whole: grep -q stopping early would break the pipe under pipefail.)
+loaded=$(LD_LIBRARY_PATH=$libdir ldd "$work/c_shared")
+[[ $loaded == *"$libdir/libjostle.so.0.1"* ]] \
+  || { echo "c_shared does not load the package's libjostle.so.0.1: $loaded"; exit 1; }
 LD_LIBRARY_PATH=$libdir "$work/c_shared"
 LD_LIBRARY_PATH=$libdir "$work/cxx_shared"
 "$work/c_static"
