@@ -1,16 +1,18 @@
 #!/usr/bin/env bash
 # The determinism tests on other CPUs: aarch64 and s390x (big-endian), built by Debian's
 # cross compilers and run under qemu-user; they must give the hashes recorded on x86-64
-# (tests/cross, docs/reliability.md). Part of scripts/test.sh.
+# (tests/cross, docs/reliability.md). About four minutes on two cores.
 #   scripts/cross.sh [ARCH...]       (default: aarch64 s390x)
-# An architecture whose compiler or qemu is missing is skipped with a message.
+# Installs the cross compilers and qemu-user (scripts/setup.sh) where it can; an
+# architecture whose compiler or qemu is still missing is skipped with a message.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+scripts/setup.sh g++-aarch64-linux-gnu g++-s390x-linux-gnu qemu-user >/dev/null || true
 arches=("$@")
 [ ${#arches[@]} -gt 0 ] || arches=(aarch64 s390x)
 for arch in "${arches[@]}"; do
   if ! command -v "$arch-linux-gnu-g++" >/dev/null || ! command -v "qemu-$arch" >/dev/null; then
-    echo "cross: $arch skipped: g++-$arch-linux-gnu or qemu-user missing (scripts/setup.sh installs them)"
+    echo "cross: $arch skipped: g++-$arch-linux-gnu or qemu-user missing"
     continue
   fi
   build=build-cross-$arch

@@ -8,7 +8,6 @@ packages=(
   cmake g++ make          # the build
   pkgconf                 # the installed package is tested through pkg-config too
   dpkg-dev lintian luarocks  # the Debian package and the rock (scripts/package.sh)
-  g++-aarch64-linux-gnu g++-s390x-linux-gnu qemu-user  # determinism on other CPUs (cross.sh)
   libgtest-dev libgmock-dev  # tests
   nlohmann-json3-dev      # scene files
   libcli11-dev            # the jostle program's command line
