@@ -17,7 +17,7 @@ for arch in "${arches[@]}"; do
   fi
   build=build-cross-$arch
   cmake -S tests/cross -B "$build" -DCMAKE_BUILD_TYPE=Release \
-    -DCMAKE_TOOLCHAIN_FILE="$PWD/cmake/toolchains/$arch-linux-gnu.cmake" >/dev/null
+    -DCMAKE_TOOLCHAIN_FILE="$PWD/cmake/toolchains/linux-gnu.cmake" -DJOSTLE_CROSS_CPU="$arch" >/dev/null
   cmake --build "$build" -j"$(nproc)" --target determinism_tests >/dev/null
   ctest --test-dir "$build" --output-on-failure
 done
