@@ -32,21 +32,19 @@ for f in "$libdir/libjostle.so.0.1" "$libdir/libjostle.a" "$libdir/pkgconfig/jos
 done
 
 export PKG_CONFIG_PATH=$libdir/pkgconfig
-# shellcheck disable=SC2046
-cc "$source/tests/c/consumer/main.c" -o "$work/c_shared" $(pkg-config --cflags --libs jostle)
-# shellcheck disable=SC2046
-c++ -std=c++20 "$source/tests/consumer/main.cpp" -o "$work/cxx_shared" \
-  $(pkg-config --cflags --libs jostle)
+# shellcheck source=../pkgconfig/consumers.sh
+source "$source/tests/pkgconfig/consumers.sh"
+build_pkgconfig_consumers "$source" "$work" cc c++ "" "" ""
 # shellcheck disable=SC2046
 cc "$source/tests/c/consumer/main.c" -o "$work/c_static" $(pkg-config --cflags jostle) \
   -L"$libdir" -Wl,-Bstatic -ljostle -Wl,-Bdynamic -lstdc++ -lm -pthread
-# The shared library is the one the programs load.
+# The shared library is the one the pkg-config programs load.
 # (ldd's output read whole: grep -q stopping early would break the pipe under pipefail.)
-loaded=$(LD_LIBRARY_PATH=$libdir ldd "$work/c_shared")
+loaded=$(LD_LIBRARY_PATH=$libdir ldd "$work/c_consumer")
 [[ $loaded == *"$libdir/libjostle.so.0.1"* ]] \
-  || { echo "c_shared does not load the package's libjostle.so.0.1: $loaded"; exit 1; }
-LD_LIBRARY_PATH=$libdir "$work/c_shared"
-LD_LIBRARY_PATH=$libdir "$work/cxx_shared"
+  || { echo "c_consumer does not load the package's libjostle.so.0.1: $loaded"; exit 1; }
+LD_LIBRARY_PATH=$libdir "$work/c_consumer"
+LD_LIBRARY_PATH=$libdir "$work/cxx_consumer"
 "$work/c_static"
 
 cmake -S "$source/tests/consumer" -B "$work/cmake_consumer" -DCMAKE_PREFIX_PATH="$root/usr" \

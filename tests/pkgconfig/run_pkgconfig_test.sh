@@ -12,15 +12,9 @@ cmake --install "$build" --prefix "$work/prefix" >/dev/null
 pc_dir=$(dirname "$(find "$work/prefix" -name jostle.pc | head -1)")
 export PKG_CONFIG_PATH=$pc_dir
 echo "pkg-config --modversion jostle: $(pkg-config --modversion jostle)"
-# A sanitized clang build's library needs the sanitizers' C++ runtime in a C link too.
-c_ldflags=$ldflags
-if [[ $ldflags == *-fsanitize* ]] && $cc --version | grep -q clang; then
-  c_ldflags="$ldflags -fsanitize-link-c++-runtime"
-fi
-# shellcheck disable=SC2046,SC2086
-$cc $cflags "$source/tests/c/consumer/main.c" -o "$work/c_consumer" $c_ldflags $(pkg-config --cflags --libs jostle)
-# shellcheck disable=SC2046,SC2086
-$cxx -std=c++20 $cxxflags "$source/tests/consumer/main.cpp" -o "$work/cxx_consumer" $ldflags $(pkg-config --cflags --libs jostle)
+# shellcheck source=consumers.sh
+source "$source/tests/pkgconfig/consumers.sh"
+build_pkgconfig_consumers "$source" "$work" "$cc" "$cxx" "$cflags" "$cxxflags" "$ldflags"
 # -ljostle is the shared library where there is one: the programs load it from the prefix.
 export LD_LIBRARY_PATH=$(dirname "$pc_dir")
 "$work/c_consumer"
