@@ -134,6 +134,13 @@ int worldGetVelocities(lua_State* L) {
                         [](const World& w, std::span<Vec2> out) { w.readVelocities(out); });
 }
 
+/// {hw1, hh1, hw2, hh2, ...}: the half extents of the bodies, in the same order.
+int worldGetHalfExtents(lua_State* L) {
+    const char* where = "World:getHalfExtents";
+    return pushBulkRead(L, checkWorldHandle(L, 1, where), 2, where,
+                        [](const World& w, std::span<Vec2> out) { w.readHalfExtents(out); });
+}
+
 #ifdef LUAJIT_VERSION
 // For LuaJIT's FFI: the array itself, as floats x1, y1, x2, y2, ..., and the number of
 // bodies; no call per body nor per value.
@@ -323,6 +330,7 @@ constexpr luaL_Reg kWorldMethods[] = {
     {"getBodyCount", worldGetBodyCount},
     {"getPositions", worldGetPositions},
     {"getVelocities", worldGetVelocities},
+    {"getHalfExtents", worldGetHalfExtents},
 #ifdef LUAJIT_VERSION
     {"getPositionsBuffer", worldGetPositionsBuffer},
     {"getVelocitiesBuffer", worldGetVelocitiesBuffer},

@@ -1,4 +1,4 @@
--- Reading a whole world at once: world:getPositions and getVelocities into a flat array,
+-- Reading a whole world at once: world:getPositions, getVelocities and getHalfExtents into a flat array,
 -- the FFI buffers of LuaJIT (getPositionsBuffer, getVelocitiesBuffer), and the fixed
 -- step's interpolated positions (clock:getDrawPosition, getDrawPositions).
 local jostle = require("jostle")
@@ -23,12 +23,14 @@ local function busyWorld()
   return world
 end
 
-test("getPositions: {x1, y1, x2, y2, ...} in the order of getBodies, as getPosition reads", function()
+test("getPositions, getVelocities, getHalfExtents: {x1, y1, ...} in the order of getBodies, as each body's getter reads", function()
   local world = busyWorld()
   local positions = world:getPositions()
   local velocities = world:getVelocities()
+  local halves = world:getHalfExtents()
   local bodies = world:getBodies()
   t.equal(#positions, 2 * #bodies, "two numbers a body")
+  t.equal(#halves, 2 * #bodies, "two numbers a body")
   t.equal(#velocities, 2 * #bodies, "two numbers a body")
   for i, body in ipairs(bodies) do
     local x, y = body:getPosition()
@@ -37,7 +39,13 @@ test("getPositions: {x1, y1, x2, y2, ...} in the order of getBodies, as getPosit
     local vx, vy = body:getVelocity()
     t.equal(velocities[2 * i - 1], vx, "vx of body " .. i)
     t.equal(velocities[2 * i], vy, "vy of body " .. i)
+    local hw, hh = body:getHalfExtents()
+    t.equal(halves[2 * i - 1], hw, "hw of body " .. i)
+    t.equal(halves[2 * i], hh, "hh of body " .. i)
   end
+  t.truthy(world:getHalfExtents(positions) == positions, "getHalfExtents(t) fills t too")
+  t.raises({"World:getHalfExtents", "t: expected a table, got number"}, world.getHalfExtents,
+    world, 1)
 end)
 
 test("getPositions(t) fills t and returns it; a shorter read clears the rest", function()
