@@ -20,17 +20,15 @@ math(EXPR jostle_month_index "${jostle_month} - 1")
 list(GET jostle_months ${jostle_month_index} jostle_month_name)
 set(JOSTLE_DEBIAN_DATE "${jostle_day} ${jostle_month_name} ${jostle_year} 00:00:00 +0000")
 # Who answers for the package: set it when publishing one.
-set(JOSTLE_MAINTAINER "jostle developers <jostle@example.org>" CACHE STRING "The Debian package's maintainer")
+set(JOSTLE_MAINTAINER "jostle developers <jostle@example.org>"
+    CACHE STRING "The Debian package's maintainer")
 
 set(jostle_doc_dir ${CMAKE_INSTALL_DATAROOTDIR}/doc/jostle)
 configure_file(${PROJECT_SOURCE_DIR}/cmake/debian/changelog.in
                ${PROJECT_BINARY_DIR}/debian/changelog @ONLY)
 execute_process(COMMAND gzip -9nf ${PROJECT_BINARY_DIR}/debian/changelog)
-install(FILES ${PROJECT_BINARY_DIR}/debian/changelog.gz DESTINATION ${jostle_doc_dir}
-       )
-install(FILES ${PROJECT_SOURCE_DIR}/cmake/debian/copyright DESTINATION ${jostle_doc_dir}
-       )
-install(FILES ${PROJECT_SOURCE_DIR}/README.md ${PROJECT_SOURCE_DIR}/CHANGELOG.md
+install(FILES ${PROJECT_BINARY_DIR}/debian/changelog.gz ${PROJECT_SOURCE_DIR}/cmake/debian/copyright
+              ${PROJECT_SOURCE_DIR}/README.md ${PROJECT_SOURCE_DIR}/CHANGELOG.md
         DESTINATION ${jostle_doc_dir})
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/docs/ DESTINATION ${jostle_doc_dir}/docs
         FILES_MATCHING PATTERN "*.md")
