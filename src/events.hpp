@@ -15,6 +15,9 @@
 namespace jostle {
 
 struct WorldState;
+namespace snapshot {
+struct Access;
+}
 
 /// A pair touching (or, for sensors, overlapping) at the end of a step.
 struct TouchRecord {
@@ -72,6 +75,7 @@ struct StepEvents {
     }
 
 private:
+    friend struct snapshot::Access; // saves and restores the last step's records
     std::vector<TouchRecord> contactsBefore_, sensorsBefore_;
     std::vector<TouchRecord> scratch_;
     Buckets buckets_;

@@ -13,6 +13,10 @@
 
 namespace jostle {
 
+namespace snapshot {
+struct Access;
+}
+
 /// A map's bodies in creation order (tileMapBodies), with appending and removing in O(1)
 /// whatever their number, as CreationOrder does for the world's: removing one leaves a
 /// gap (the null handle), found through the ticket its piece keeps, not by a search. The
@@ -62,6 +66,7 @@ public:
     std::uint64_t moved() const { return moved_; }
 
 private:
+    friend struct snapshot::Access; // saves and restores the list with its tickets
     /// Moves every body down over the gaps, in order, and notes where each went.
     void close() const {
         std::size_t kept = 0;

@@ -20,6 +20,8 @@
 #include "jostle/tasks.hpp"
 #include "jostle/visibility.h"
 
+#include <cstddef>
+#include <cstdint>
 #include <functional>
 #include <limits>
 #include <memory>
@@ -505,6 +507,36 @@ public:
 
     /// Installs the pre-solve callback (an empty function removes it).
     void setPreSolve(PreSolveFn callback);
+
+    // --- Snapshots: saving and restoring the whole world (docs/snapshots.md) -----------
+    //
+    // A snapshot holds everything that decides the world's future: every body with its
+    // settings and run-time state, the contact cache, the last step's touching pairs,
+    // crushes and sleeping islands, the tile maps, the settings and the handles' slots.
+    // Its bytes are the same on every machine and build (little-endian, versioned,
+    // checksummed): a world restored from it, anywhere, at any worker count, steps on bit
+    // for bit as the one it was taken from. What is not in it: userData, the pre-solve
+    // callback and the workers (the restoring world's own), and the last step's events
+    // (empty after a restore). All four throw jostle::Error from a callback during step()
+    // or move().
+
+    /// The length in bytes of a snapshot of the world as it is now.
+    std::size_t snapshotSize() const;
+    /// Writes a snapshot of the world into `out` and returns its length; allocates
+    /// nothing. Throws jostle::Error if `out` is shorter than snapshotSize().
+    std::size_t snapshot(std::span<std::byte> out) const;
+    /// A snapshot of the world, in a vector of its own.
+    std::vector<std::byte> snapshot() const;
+    /// Makes the world what it was when `snapshot` was taken, of this world or another.
+    /// Handles held then are valid again (a body destroyed since is back under its old
+    /// handle); bodies and tile maps created since are gone, their handles stale. A body
+    /// keeps its userData if its slot still holds it or held it last. Throws jostle::Error,
+    /// leaving the world exactly as it was, for bytes that are not a whole snapshot of
+    /// this format (truncated, corrupted, of another format version, or not a snapshot).
+    void restore(std::span<const std::byte> snapshot);
+    /// A 64-bit hash of exactly what a snapshot holds (its checksum, XXH64), computed
+    /// without writing one: equal on two peers whose worlds are the same, bit for bit.
+    std::uint64_t stateHash() const;
 
 private:
     friend struct WorldAccess; // the internals' way in (src/world_access.hpp)

@@ -13,6 +13,9 @@
 namespace jostle {
 
 struct StepContext;
+namespace snapshot {
+struct Access;
+}
 
 /// A contact as the next step finds it.
 struct CachedContact {
@@ -69,6 +72,7 @@ public:
     void endRebuild(TaskRunner& tasks);
 
 private:
+    friend struct snapshot::Access; // saves and restores the entries as they lie
     /// Runs longer than this are sorted and searched by halves.
     static constexpr std::uint32_t kLongRun = 16;
     struct Entry {

@@ -8,11 +8,13 @@ namespace jostle {
 
 namespace {
 
-/// Whether any kinematic body's velocity changed since the last step.
+/// Whether any kinematic body's velocity changed since the last step (a body destroyed
+/// since is not one: what its slot still holds is no body's).
 bool anyPlatformChanged(const WorldState& w) {
     for (std::uint32_t slot : w.movingSlots) {
         const Body& body = w.slots[slot];
-        if (body.type == BodyType::Kinematic && body.velocity != body.lastStepVelocity)
+        if (body.alive && body.type == BodyType::Kinematic &&
+            body.velocity != body.lastStepVelocity)
             return true;
     }
     return false;

@@ -1,0 +1,144 @@
+// The parts of a snapshot that lie inside classes (the contact cache, the last step's
+// records, a tile map's list of bodies): Access, their friend, saves and restores them as
+// they lie (archive.hpp's two directions, as in world_archive.cpp).
+#pragma once
+
+#include "../events.hpp"
+#include "../physical/contact_cache.hpp"
+#include "../tilemap.hpp"
+#include "../world_state.hpp"
+#include "values.hpp"
+
+#include <cmath>
+
+namespace jostle::snapshot {
+
+struct Access {
+    template <class Ar> static void contactCache(Ar& ar, ContactCache& cache, std::uint32_t slots) {
+        std::uint32_t keys = static_cast<std::uint32_t>(cache.runs_.keyCount());
+        ar.var(keys);
+        ar.check(keys <= slots, "the contact cache's slots");
+        std::uint32_t count = static_cast<std::uint32_t>(cache.entries_.size());
+        ar.count(count, 8);
+        if constexpr (Ar::kReading) {
+            cache.beginRebuild(keys);
+            cache.entries_.resize(count);
+        }
+        std::uint32_t a = 0;
+        for (std::uint32_t k = 0; k < count; ++k) {
+            ContactCache::Entry& entry = cache.entries_[k];
+            std::uint32_t step = 0;
+            if constexpr (!Ar::kReading) {
+                while (cache.runs_.end(a) <= k)
+                    ++a, ++step;
+            }
+            ar.var(step); // from the last entry's first slot to this one's
+            if constexpr (Ar::kReading) {
+                ar.check(step <= keys - a, "the contact cache's slots");
+                a += step;
+                ar.check(a < keys, "the contact cache's slots");
+                cache.runs_.count(a);
+            }
+            ar.var(entry.b);
+            ar.var(entry.rank);
+            ar.var(entry.contact.generationA);
+            ar.var(entry.contact.generationB);
+            normal(ar, entry.contact.normal);
+            ar.f32(entry.contact.normalImpulse);
+            ar.f32(entry.contact.tangentImpulse);
+            ar.check(std::isfinite(entry.contact.normalImpulse) &&
+                         std::isfinite(entry.contact.tangentImpulse),
+                     "a cached contact's impulses");
+        }
+        if constexpr (Ar::kReading) {
+            cache.runs_.endCounting();
+            for (std::uint32_t key = 0; key < keys; ++key) {
+                const std::uint32_t begin = cache.runs_.begin(key), end = cache.runs_.end(key);
+                for (std::uint32_t k = begin; k < end; ++k) {
+                    const ContactCache::Entry& e = cache.entries_[k];
+                    // A short run lies in rank order; a long one by the other slot, then rank.
+                    ar.check(end - begin > ContactCache::kLongRun
+                                 ? e.rank < end - begin &&
+                                       (k == begin || cache.entries_[k - 1].b < e.b ||
+                                        (cache.entries_[k - 1].b == e.b &&
+                                         cache.entries_[k - 1].rank < e.rank))
+                                 : e.rank == k - begin,
+                             "the contact cache's order");
+                }
+            }
+        }
+    }
+
+    template <class Ar>
+    static void records(Ar& ar, std::vector<TouchRecord>& list, std::uint32_t slots) {
+        std::uint32_t count = static_cast<std::uint32_t>(list.size());
+        ar.count(count, 8);
+        if constexpr (Ar::kReading)
+            list.resize(count);
+        for (std::uint32_t k = 0; k < count; ++k) {
+            TouchRecord& r = list[k];
+            ref(ar, r.a, slots);
+            ref(ar, r.b, slots);
+            normal(ar, r.normal);
+            ar.f32(r.approachSpeed);
+            ar.f32(r.impulse);
+            ar.check(std::isfinite(r.approachSpeed) && std::isfinite(r.impulse) &&
+                         (k == 0 || list[k - 1].key() <= r.key()),
+                     "the last step's touching pairs");
+        }
+    }
+
+    template <class Ar> static void events(Ar& ar, WorldState& w) {
+        const std::uint32_t slots = static_cast<std::uint32_t>(w.slots.size());
+        records(ar, w.events.contactsBefore_, slots);
+        records(ar, w.events.sensorsBefore_, slots);
+        std::uint32_t crushes = static_cast<std::uint32_t>(w.events.crushing.size());
+        ar.count(crushes, 6);
+        if constexpr (Ar::kReading)
+            w.events.crushing.resize(crushes);
+        for (CrushEvent& crush : w.events.crushing)
+            for (BodyId* id : {&crush.body, &crush.by, &crush.against})
+                handle(ar, *id, w.serial, slots);
+        std::uint32_t forces = static_cast<std::uint32_t>(w.forces.size());
+        ar.count(forces, 10);
+        if constexpr (Ar::kReading)
+            w.forces.resize(forces);
+        for (auto& [id, force] : w.forces) {
+            handle(ar, id, w.serial, slots);
+            ar.vec(force);
+            ar.check(isFinite(force), "a force");
+        }
+    }
+
+    template <class Ar>
+    static void listedBodies(Ar& ar, ListedBodies& list, std::uint32_t serial,
+                             std::uint32_t slots) {
+        const std::size_t live = list.live().size(); // closes the gaps
+        std::uint32_t count = static_cast<std::uint32_t>(live);
+        ar.count(count, 3);
+        std::uint32_t tickets = static_cast<std::uint32_t>(list.positions_.size());
+        ar.var(tickets);
+        if constexpr (Ar::kReading) {
+            ar.check(count <= tickets, "a tile map's bodies");
+            list.entries_.resize(count);
+            list.tickets_.resize(count);
+            list.positions_.assign(tickets, UINT32_MAX);
+        }
+        for (std::uint32_t k = 0; k < count; ++k) {
+            handle(ar, list.entries_[k], serial, slots);
+            ar.var(list.tickets_[k]);
+            if constexpr (Ar::kReading) {
+                const std::uint32_t ticket = list.tickets_[k];
+                ar.check(!list.entries_[k].isNull() && ticket < tickets &&
+                             list.positions_[ticket] == UINT32_MAX,
+                         "a tile map's bodies");
+                list.positions_[ticket] = k;
+            }
+        }
+        slotList(ar, list.freeTickets_, tickets, [&](std::uint32_t ticket) {
+            ar.check(list.positions_[ticket] == UINT32_MAX, "a tile map's free tickets");
+        });
+    }
+};
+
+} // namespace jostle::snapshot

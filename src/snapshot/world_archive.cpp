@@ -1,0 +1,291 @@
+// A world's payload, described once for both directions (archive.hpp): each archive
+// function below writes with a Writer and reads, checking, with a Reader. The sections
+// come in this order, each opened by its letter: W the settings, S the slots, B the
+// bodies, I the sleeping islands, C the contact cache, E the last step's records, M the
+// tile maps. docs/snapshots.md lists the fields.
+#include "world_archive.hpp"
+
+#include "../body_properties.hpp"
+#include "../physical/contact_cache.hpp"
+#include "../tile_chars.hpp"
+#include "../world_options.hpp"
+#include "../world_state.hpp"
+#include "access.hpp"
+#include "maps_archive.hpp"
+#include "values.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <iterator>
+#include <string>
+
+namespace jostle::snapshot {
+
+namespace {
+
+using properties::BodyField;
+using properties::kBodyFields;
+
+template <class Ar> void section(Ar& ar, char letter) {
+    std::uint8_t tag = static_cast<std::uint8_t>(letter);
+    ar.u8(tag);
+    ar.checkOr(tag == static_cast<std::uint8_t>(letter),
+               [&] { return std::string("section ") + letter + " is not where it belongs"; });
+}
+
+// --- W: the world's settings, from the tables of world_options.hpp ------------------------
+
+template <class Ar, class Def, class F, std::size_t N>
+void settings(Ar& ar, Def& def, const F (&fields)[N]) {
+    for (const F& field : fields)
+        std::visit([&](auto member) { value(ar, def.*member); }, field.member);
+}
+
+template <class Ar> void worldSettings(Ar& ar, WorldState& w) {
+    settings(ar, w.def, properties::kWorldFields);
+    settings(ar, w.def.classic, properties::kClassicFields);
+    settings(ar, w.def.physical, properties::kPhysicalFields);
+    if constexpr (Ar::kReading) {
+        const std::optional<FieldError> problem = checkWorldDef(w.def);
+        ar.checkOr(!problem, [&] { return "world." + problem->field + ": " + problem->problem; });
+    }
+    ar.vec(w.events.down);
+    ar.flag(w.events.destroyedSincePublish);
+    ar.var(w.bodiesCreated);
+}
+
+// --- S: the slots: generations, which hold a body, which are free, which moved ------------
+
+template <class Ar> void slotTable(Ar& ar, WorldState& w) {
+    std::uint32_t slotCount = static_cast<std::uint32_t>(w.slots.size());
+    ar.count(slotCount, 1);
+    if constexpr (Ar::kReading) {
+        w.slots.resize(slotCount);
+        w.created.resize(slotCount);
+        w.shapes.resize(slotCount);
+        w.asGiven.resize(slotCount);
+    }
+    for (Body& slot : w.slots) {
+        std::uint64_t word = std::uint64_t{slot.generation} << 1 | (slot.alive ? 1 : 0);
+        ar.var(word);
+        if constexpr (Ar::kReading) {
+            slot.generation = static_cast<std::uint32_t>(word >> 1);
+            slot.alive = (word & 1) != 0;
+            ar.check(slot.generation != 0 && word >> 1 <= UINT32_MAX, "a slot's generation");
+        }
+    }
+    std::vector<std::uint8_t> listed;
+    if constexpr (Ar::kReading)
+        listed.assign(slotCount, 0);
+    slotList(ar, w.freeSlots, slotCount, [&](std::uint32_t slot) {
+        ar.check(!w.slots[slot].alive && w.slots[slot].generation != UINT32_MAX && !listed[slot],
+                 "the free slots");
+        listed[slot] = 1;
+    });
+    slotList(ar, w.movingSlots, slotCount, [](std::uint32_t) {});
+    std::uint32_t flags = static_cast<std::uint32_t>(w.events.touching.size());
+    ar.count(flags, 1);
+    ar.check(flags <= slotCount, "the touching flags");
+    if constexpr (Ar::kReading)
+        w.events.touching.resize(flags);
+    for (std::uint8_t& bits : w.events.touching)
+        ar.u8(bits);
+}
+
+// --- B: the live bodies, in creation order ------------------------------------------------
+
+constexpr std::size_t kRows = std::size(kBodyFields);
+/// What steps and setters keep of a body beside its settings, after the rows' bits.
+constexpr float Body::*kRunTimeNumbers[] = {&Body::floorCos, &Body::sleepTime, &Body::walkSpeed,
+                                            &Body::dropThroughTime};
+constexpr Vec2 Body::*kRunTimeVectors[] = {&Body::separation, &Body::lastStepVelocity};
+static_assert(kRows + std::size(kRunTimeNumbers) + std::size(kRunTimeVectors) <= 64,
+              "a body's fields fit the 64 bits that say which are saved");
+
+/// Which of a body's fields differ from their defaults (by their bits): those are saved.
+std::uint64_t presentFields(properties::ConstPlaces places) {
+    std::uint64_t present = 0;
+    std::size_t bit = 0;
+    for (const BodyField& field : kBodyFields) {
+        field.visitStore([&](auto member, auto store) {
+            using T = std::remove_cvref_t<decltype(BodyDef{}.*member)>;
+            if constexpr (!std::is_pointer_v<T>)
+                if (!sameBits(at(places, store), std::get<T>(field.property->byDefault)))
+                    present |= std::uint64_t{1} << bit;
+        });
+        ++bit;
+    }
+    const Body fresh;
+    for (float Body::*number : kRunTimeNumbers)
+        present |= std::uint64_t{!sameBits(places.body.*number, fresh.*number)} << bit++;
+    for (Vec2 Body::*vector : kRunTimeVectors)
+        present |= std::uint64_t{!sameBits(places.body.*vector, fresh.*vector)} << bit++;
+    return present;
+}
+
+template <class Ar> void bodyFields(Ar& ar, properties::Places places, std::uint64_t present) {
+    std::size_t bit = 0;
+    for (const BodyField& field : kBodyFields) {
+        if (present >> bit++ & 1)
+            field.visitStore([&](auto, auto store) { value(ar, at(places, store)); });
+    }
+    for (float Body::*number : kRunTimeNumbers)
+        if (present >> bit++ & 1)
+            ar.f32(places.body.*number);
+    for (Vec2 Body::*vector : kRunTimeVectors)
+        if (present >> bit++ & 1)
+            ar.vec(places.body.*vector);
+    ar.check(present >> bit == 0, "a body's fields");
+}
+
+/// A body read back: its settings checked as createBody checks them, the rest in range.
+void checkBody(Reader& ar, const WorldState& w, std::uint32_t slot, std::size_t index) {
+    const properties::ConstPlaces places{w.slots[slot], w.asGiven[slot], w.shapes[slot]};
+    const std::optional<FieldError> problem = checkBodyDef(properties::definitionOf(places));
+    ar.checkOr(!problem, [&] {
+        return "bodies[" + std::to_string(index) + "]." + problem->field + ": " + problem->problem;
+    });
+    const Body& body = places.body;
+    bool finite = true;
+    for (float Body::*number : kRunTimeNumbers)
+        finite = finite && std::isfinite(body.*number);
+    for (Vec2 Body::*vector : kRunTimeVectors)
+        finite = finite && isFinite(body.*vector);
+    ar.checkOr(finite && body.sleepTime >= 0.0f && body.dropThroughTime >= 0.0f &&
+                   std::abs(body.floorCos) <= 1.0f,
+               [&] { return "bodies[" + std::to_string(index) + "]: its state is out of range"; });
+    ar.checkOr(!(w.def.solver == Solver::Classic && places.shape.kind() != ShapeKind::Box), [&] {
+        return "bodies[" + std::to_string(index) + "]: not a box in the classic model";
+    });
+}
+
+template <class Ar> void bodies(Ar& ar, WorldState& w) {
+    std::span<const BodyId> live = w.order.live();
+    std::uint32_t count = static_cast<std::uint32_t>(live.size());
+    ar.count(count, 4);
+    std::uint64_t lastCreated = 0;
+    std::vector<std::uint8_t> seen; // reading: the slots read so far
+    if constexpr (Ar::kReading)
+        seen.assign(w.slots.size(), 0);
+    for (std::uint32_t k = 0; k < count; ++k) {
+        std::uint32_t slot = 0;
+        if constexpr (!Ar::kReading)
+            slot = live[k].index;
+        ar.var(slot);
+        ar.check(slot < w.slots.size() && w.slots[slot].alive, "a body's slot");
+        if constexpr (Ar::kReading) {
+            ar.check(!seen[slot], "a body's slot is listed twice");
+            seen[slot] = 1;
+            const std::uint32_t generation = w.slots[slot].generation;
+            w.slots[slot] = Body{};
+            w.slots[slot].generation = generation;
+            w.slots[slot].alive = true;
+            // The fields left out are the defaults.
+            properties::keep(BodyDef{}, {w.slots[slot], w.asGiven[slot], w.shapes[slot]});
+        }
+        Body& body = w.slots[slot];
+        ar.var(w.created[slot]);
+        ar.check((k == 0 || w.created[slot] > lastCreated) && w.created[slot] < w.bodiesCreated,
+                 "the bodies' creation order");
+        lastCreated = w.created[slot];
+        const properties::Places places{body, w.asGiven[slot], w.shapes[slot]};
+        std::uint64_t present = 0;
+        if constexpr (!Ar::kReading)
+            present = presentFields({body, w.asGiven[slot], w.shapes[slot]});
+        ar.var(present);
+        ar.flag(body.asleep);
+        bodyFields(ar, places, present);
+        if (body.asleep)
+            ar.var(body.island);
+        if constexpr (Ar::kReading) {
+            checkBody(ar, w, slot, k);
+            body.shape = places.shape.kind();
+            body.updateMass(places.kept.density);
+            w.order.append(w.idOf(slot));
+            w.count(slot, true);
+        }
+    }
+    if constexpr (Ar::kReading) {
+        std::size_t alive = 0;
+        for (const Body& slot : w.slots)
+            alive += slot.alive ? 1 : 0;
+        ar.check(alive == w.order.size(), "a live slot has no body, or one has two");
+    }
+}
+
+// --- I: sleeping islands ------------------------------------------------------------------
+
+template <class Ar> void islands(Ar& ar, WorldState& w) {
+    std::uint32_t count = static_cast<std::uint32_t>(w.islands.size());
+    ar.count(count, 1);
+    if constexpr (Ar::kReading)
+        w.islands.resize(count);
+    for (std::vector<std::uint32_t>& island : w.islands)
+        slotList(ar, island, static_cast<std::uint32_t>(w.slots.size()), [&](std::uint32_t slot) {
+            ar.check(w.slots[slot].alive && w.slots[slot].asleep, "an island's bodies");
+        });
+    slotList(ar, w.freeIslands, count, [&](std::uint32_t island) {
+        ar.check(w.islands[island].empty(), "the free islands");
+    });
+    if constexpr (Ar::kReading)
+        for (BodyId id : w.order.live())
+            ar.check(!w.slots[id.index].asleep || w.slots[id.index].island < count,
+                     "a sleeping body's island");
+}
+
+} // namespace
+
+namespace {
+
+template <class Ar> void world(Ar& ar, WorldState& w) {
+    section(ar, 'W');
+    worldSettings(ar, w);
+    section(ar, 'S');
+    slotTable(ar, w);
+    section(ar, 'B');
+    bodies(ar, w);
+    section(ar, 'I');
+    islands(ar, w);
+    section(ar, 'C');
+    Access::contactCache(ar, w.contactCache, static_cast<std::uint32_t>(w.slots.size()));
+    section(ar, 'E');
+    Access::events(ar, w);
+    section(ar, 'M');
+    tileMaps(ar, w);
+}
+
+// A writer only reads the world: the one function serves both directions, hence non-const.
+WorldState& forWriting(const WorldState& w) {
+    return const_cast<WorldState&>(w);
+}
+
+} // namespace
+
+std::size_t payloadSize(const WorldState& w) {
+    CountingSink sink;
+    Writer<CountingSink> ar(sink);
+    world(ar, forWriting(w));
+    return sink.size;
+}
+
+void writePayload(const WorldState& w, std::uint8_t* out) {
+    BufferSink sink{out};
+    Writer<BufferSink> ar(sink);
+    world(ar, forWriting(w));
+}
+
+std::uint64_t payloadHash(const WorldState& w) {
+    HashingSink sink;
+    Writer<HashingSink> ar(sink);
+    world(ar, forWriting(w));
+    return sink.hash.digest();
+}
+
+void readPayload(std::span<const std::uint8_t> payload, WorldState& into, TaskRunner& tasks) {
+    (void)tasks;
+    Reader ar(payload);
+    world(ar, into);
+    ar.check(ar.left() == 0, "bytes after the end of the snapshot");
+}
+
+} // namespace jostle::snapshot

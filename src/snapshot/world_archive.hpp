@@ -1,0 +1,32 @@
+// What a snapshot holds of a world, and its bytes (docs/snapshots.md): the payload that
+// follows the header. world_archive.cpp describes it once, for writing and for reading.
+#pragma once
+
+#include "archive.hpp"
+
+#include <cstddef>
+#include <cstdint>
+#include <span>
+
+namespace jostle {
+struct WorldState;
+class TaskRunner;
+} // namespace jostle
+
+namespace jostle::snapshot {
+
+/// The format of the payload; what world_archive.cpp writes changing makes it the next.
+inline constexpr std::uint16_t kFormat = 1;
+
+/// The payload's length in bytes.
+std::size_t payloadSize(const WorldState& world);
+/// Writes the payload into `out`, payloadSize(world) bytes long.
+void writePayload(const WorldState& world, std::uint8_t* out);
+/// XXH64 of the payload, without writing it anywhere.
+std::uint64_t payloadHash(const WorldState& world);
+/// Reads a payload into `into`, a WorldState fresh from its constructor whose serial is
+/// the restoring world's; `tasks` sorts what is sorted. Throws Refused, leaving `into`
+/// to be thrown away, on anything that is not a payload this library wrote.
+void readPayload(std::span<const std::uint8_t> payload, WorldState& into, TaskRunner& tasks);
+
+} // namespace jostle::snapshot

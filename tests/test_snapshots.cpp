@@ -1,0 +1,304 @@
+// Snapshots (docs/snapshots.md): a world restored from one steps on bit for bit as the world
+// it was taken from, in place (rollback) or in another world, at another worker count;
+// handles are kept as they were; bad bytes are refused by name and change nothing.
+#include "busy_worlds.hpp"
+#include "jostle/tilemap.hpp"
+#include "jostle/world.hpp"
+#include "snapshot/xxhash64.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <string>
+#include <vector>
+
+namespace {
+
+using namespace jostle;
+using namespace jostle::testing;
+using Bytes = std::vector<std::byte>;
+
+constexpr float kDt = 1.0f / 60.0f;
+
+std::uint64_t checksumOf(const Bytes& snapshot) {
+    std::uint64_t v = 0;
+    for (int i = 7; i >= 0; --i)
+        v = v << 8 | std::to_integer<std::uint64_t>(snapshot[24 + static_cast<std::size_t>(i)]);
+    return v;
+}
+
+/// `ids` as handles of `world` (the same slots and generations, another world's serial).
+std::vector<BodyId> handlesIn(const World& world, std::vector<BodyId> ids) {
+    const std::uint32_t serial = world.bodies().empty() ? 0 : world.bodies()[0].world;
+    for (BodyId& id : ids)
+        id.world = serial;
+    return ids;
+}
+
+// --- The hash ---------------------------------------------------------------------------
+
+TEST(Snapshots, TheChecksumIsXxh64AsPublished) {
+    // XXH64 with seed 0 of "", "a", "abc" and the pangram, from xxHash's published values.
+    auto of = [](const std::string& s) {
+        return snapshot::xxHash64(reinterpret_cast<const std::uint8_t*>(s.data()), s.size());
+    };
+    EXPECT_EQ(of(""), 0xEF46DB3751D8E999ull);
+    EXPECT_EQ(of("a"), 0xD24EC4F1A98C6E5Bull);
+    EXPECT_EQ(of("abc"), 0x44BC2CF5AD770999ull);
+    EXPECT_EQ(of("The quick brown fox jumps over the lazy dog"), 0x0B242D361FDA71BCull);
+    // Fed a byte at a time, the same.
+    snapshot::XxHash64 pieces;
+    for (char c : std::string("The quick brown fox jumps over the lazy dog"))
+        pieces.update(reinterpret_cast<const std::uint8_t*>(&c), 1);
+    EXPECT_EQ(pieces.digest(), 0x0B242D361FDA71BCull);
+}
+
+// --- Round trips and rollback -------------------------------------------------------------
+
+TEST(Snapshots, ARestoredWorldSnapshotsToTheSameBytesAndHash) {
+    BusyWorld busy(Solver::Physical);
+    for (int step = 0; step < 400; ++step)
+        busy.step();
+    const Bytes saved = busy.world.snapshot();
+    EXPECT_EQ(saved.size(), busy.world.snapshotSize());
+    EXPECT_EQ(busy.world.stateHash(), checksumOf(saved));
+
+    World other;
+    other.restore(saved);
+    EXPECT_EQ(other.snapshot(), saved);
+    EXPECT_EQ(other.stateHash(), busy.world.stateHash());
+    EXPECT_EQ(other.bodyCount(), busy.world.bodyCount());
+}
+
+/// Steps `scene` `steps` steps, snapshots it, steps `steps` more; then restores the
+/// snapshot and the script's state and steps again: the world's states and the hashes
+/// of what it reported agree step for step.
+template <class Scene> void expectRollbackRepeats(Scene& scene, int before, int after) {
+    for (int step = 0; step < before; ++step)
+        scene.step();
+    const Bytes saved = scene.world.snapshot();
+    const auto script = scene.script();
+    const Hash hash = scene.hash;
+    std::vector<std::uint64_t> states;
+    for (int step = 0; step < after; ++step) {
+        scene.step();
+        states.push_back(scene.world.stateHash());
+    }
+    const std::uint64_t reported = scene.hash.value();
+
+    scene.world.restore(saved);
+    scene.setScript(script);
+    scene.hash = hash;
+    for (int step = 0; step < after; ++step) {
+        scene.step();
+        ASSERT_EQ(scene.world.stateHash(), states[static_cast<std::size_t>(step)])
+            << "step " << step << " after the restore";
+    }
+    EXPECT_EQ(scene.hash.value(), reported);
+}
+
+TEST(Snapshots, RolledBackThePhysicalBusyWorldRepeatsItself) {
+    BusyWorld busy(Solver::Physical);
+    expectRollbackRepeats(busy, 300, 300);
+}
+
+TEST(Snapshots, RolledBackTheClassicBusyWorldRepeatsItself) {
+    BusyWorld busy(Solver::Classic);
+    expectRollbackRepeats(busy, 300, 300);
+}
+
+TEST(Snapshots, RolledBackTheSlopesWorldRepeatsItself) {
+    SlopesWorld slopes;
+    expectRollbackRepeats(slopes, 300, 300);
+}
+
+TEST(Snapshots, RollbacksAtEveryPointOfABusyRunRepeatThemselves) {
+    // At every 7th step of 700, roll back 8 steps and step them again, as a rollback game
+    // does: the states agree with those of the first time through.
+    BusyWorld busy(Solver::Physical);
+    struct Saved {
+        Bytes bytes;
+        BusyWorld::Script script;
+        Hash hash;
+    };
+    std::vector<Saved> ring;
+    std::vector<std::uint64_t> states;
+    for (int step = 0; step < 700; ++step) {
+        ring.push_back({busy.world.snapshot(), busy.script(), busy.hash});
+        busy.step();
+        states.push_back(busy.world.stateHash());
+        if (step % 7 == 6 && step >= 8) {
+            const Saved& back = ring[ring.size() - 8];
+            busy.world.restore(back.bytes);
+            busy.setScript(back.script);
+            busy.hash = back.hash;
+            for (int k = step - 7; k <= step; ++k) {
+                busy.step();
+                ASSERT_EQ(busy.world.stateHash(), states[static_cast<std::size_t>(k)])
+                    << "step " << k << ", rolled back at step " << step;
+            }
+        }
+    }
+}
+
+TEST(Snapshots, ASnapshotAtOneWorkerContinuesTheSameAtFourInAnotherWorld) {
+    BusyWorld one(Solver::Physical);
+    BusyWorld four(Solver::Physical, {.workers = 4});
+    WorldAccess::state(four.world).tasks->setBlockSizeForTesting(7);
+    for (int step = 0; step < 200; ++step)
+        one.step();
+    four.world.restore(one.world.snapshot());
+    auto script = one.script();
+    script.rain = handlesIn(four.world, script.rain);
+    four.setScript(script);
+    four.hash = one.hash;
+    for (int step = 0; step < 300; ++step) {
+        one.step();
+        four.step();
+        ASSERT_EQ(one.world.stateHash(), four.world.stateHash()) << "step " << step;
+    }
+    EXPECT_EQ(one.hash.value(), four.hash.value());
+}
+
+// --- Handles ---------------------------------------------------------------------------------
+
+TEST(Snapshots, HandlesHeldAtTheSnapshotAreValidAgainAndLaterOnesStale) {
+    World world(WorldDef{.gravity = {0, 10}});
+    int tag = 7;
+    const BodyId kept = world.createBody({.x = 0, .hw = 1, .hh = 1, .userData = &tag});
+    const BodyId destroyedLater = world.createBody({.x = 5, .hw = 1, .hh = 1});
+    const Bytes saved = world.snapshot();
+
+    world.destroyBody(destroyedLater);
+    const BodyId createdLater = world.createBody({.x = 9, .hw = 1, .hh = 1});
+    world.step(kDt);
+    world.restore(saved);
+
+    EXPECT_TRUE(world.isValid(kept));
+    EXPECT_TRUE(world.isValid(destroyedLater));
+    EXPECT_FALSE(world.isValid(createdLater));
+    EXPECT_EQ(world.bodyCount(), 2u);
+    EXPECT_EQ(world.userData(kept), &tag); // the process's, kept by the slot that holds it
+    EXPECT_EQ(world.position(destroyedLater), (Vec2{5, 0}));
+    EXPECT_THROW(world.position(createdLater), Error);
+
+    // Done again, what was done since gives the same handles: rollback keeps them.
+    world.destroyBody(destroyedLater);
+    EXPECT_EQ(world.createBody({.x = 9, .hw = 1, .hh = 1}), createdLater);
+}
+
+TEST(Snapshots, TileMapsComeBackWithTheirTiles) {
+    World world(WorldDef{.gravity = {0, 10}});
+    const TileMapId map = createTileMap(world, {.tile = 1, .rows = {"#..#", "####"}});
+    const Bytes saved = world.snapshot();
+    setTile(world, map, 1, 0, true);
+    const TileMapId later = createTileMap(world, {.x = 10, .tile = 1, .rows = {"#"}});
+    world.restore(saved);
+    EXPECT_TRUE(world.isValid(map));
+    EXPECT_FALSE(world.isValid(later));
+    EXPECT_FALSE(isSolid(world, map, 1, 0));
+    EXPECT_EQ(world.snapshot(), saved);
+    for (BodyId body : tileMapBodies(world, map))
+        EXPECT_EQ(tileMapOf(world, body), map);
+}
+
+// --- Refusals ---------------------------------------------------------------------------------
+
+/// A world with a little of everything, for the refusals.
+World smallWorld() {
+    World world(WorldDef{.gravity = {0, 10}});
+    createTileMap(world, {.tile = 1, .rows = {"#./.#", "#####"}});
+    world.createBody({.x = 1.5f, .y = -2, .hw = 0.4f, .hh = 0.4f});
+    world.createBody({.x = 3.5f, .y = -2, .hw = 0.4f, .hh = 0.4f, .radius = 0.2f});
+    for (int step = 0; step < 30; ++step)
+        world.step(kDt);
+    return world;
+}
+
+std::string refusalOf(World& world, const Bytes& bytes) {
+    try {
+        world.restore(bytes);
+    } catch (const Error& e) {
+        return e.what();
+    }
+    return "";
+}
+
+TEST(Snapshots, BytesThatAreNotASnapshotAreRefusedByName) {
+    World world = smallWorld();
+    const Bytes saved = world.snapshot();
+    EXPECT_EQ(refusalOf(world, Bytes(10)), "restore: not a jostle snapshot");
+    Bytes other = saved;
+    other[8] = std::byte{2};
+    EXPECT_EQ(refusalOf(world, other), "restore: snapshot format 2, this library reads format 1");
+    Bytes cut(saved.begin(), saved.end() - 1);
+    EXPECT_EQ(refusalOf(world, cut), "restore: truncated snapshot: " + std::to_string(cut.size()) +
+                                         " bytes, its header says " + std::to_string(saved.size()));
+    Bytes flipped = saved;
+    flipped[saved.size() / 2] ^= std::byte{1};
+    EXPECT_EQ(refusalOf(world, flipped),
+              "restore: the snapshot is corrupted (its checksum does not match)");
+    Bytes small(3);
+    EXPECT_NE(refusalOf(world, small), "");
+    EXPECT_THROW((void)world.snapshot(std::span<std::byte>(small)), Error);
+    EXPECT_EQ(world.snapshot(), saved); // nothing changed
+}
+
+TEST(Snapshots, EveryPrefixAndEveryCorruptedByteIsRefusedAndChangesNothing) {
+    World world = smallWorld();
+    const Bytes saved = world.snapshot();
+    for (std::size_t n = 0; n < saved.size(); ++n)
+        ASSERT_NE(
+            refusalOf(world, Bytes(saved.begin(), saved.begin() + static_cast<std::ptrdiff_t>(n))),
+            "")
+            << n << " bytes";
+    // Past the checksum: each payload byte changed, the checksum made to match again. The
+    // reader refuses what it can tell is wrong; what it takes is a world it can step.
+    int refused = 0;
+    for (std::size_t at = 32; at < saved.size(); ++at)
+        for (int flip : {0x01, 0x80, 0xFF}) {
+            Bytes bad = saved;
+            bad[at] ^= static_cast<std::byte>(flip);
+            const std::uint64_t sum = snapshot::xxHash64(
+                reinterpret_cast<const std::uint8_t*>(bad.data()) + 32, bad.size() - 32);
+            for (int i = 0; i < 8; ++i)
+                bad[24 + static_cast<std::size_t>(i)] = static_cast<std::byte>(sum >> (8 * i));
+            World target = smallWorld();
+            const std::string refusal = refusalOf(target, bad);
+            if (refusal.empty()) {
+                for (int step = 0; step < 5; ++step)
+                    target.step(kDt);
+            } else {
+                ++refused;
+                ASSERT_EQ(refusal.rfind("restore: the snapshot is corrupted: ", 0), 0u) << refusal;
+                ASSERT_EQ(target.snapshot(), saved) << "refused, yet changed: " << refusal;
+            }
+        }
+    EXPECT_GT(refused, 0);
+}
+
+// --- Sizes ----------------------------------------------------------------------------------
+
+TEST(Snapshots, APileTakesAtMost128BytesABodyAnd32AContact) {
+    // A 40 × 25 pile on a floor: the issue's budget, counting only the pairs that touch
+    // (the cache holds those and the pairs about to).
+    World world(WorldDef{.gravity = {0, 600}});
+    world.createBody({.type = BodyType::Static, .y = 10, .hw = 500, .hh = 10});
+    for (int row = 0; row < 25; ++row)
+        for (int i = 0; i < 40; ++i)
+            world.createBody({.x = -200.0f + 10.0f * float(i),
+                              .y = -5.0f - 10.0f * float(row),
+                              .hw = 5,
+                              .hh = 5,
+                              .friction = 0.6f});
+    for (int step = 0; step < 30; ++step)
+        world.step(kDt);
+    std::size_t touching = 0;
+    for (BodyId id : world.bodies())
+        touching += world.contacts(id).size();
+    touching /= 2;
+    EXPECT_GT(touching, 1900u); // each box on two below, or on the floor
+    EXPECT_LE(world.snapshotSize(), 128u * 1000u + 32u * touching);
+}
+
+} // namespace
