@@ -53,7 +53,8 @@ std::span<const std::uint8_t> payloadOf(std::span<const std::byte> snapshot) {
              std::string(snapshot.size() - kHeaderSize < payload ? "truncated" : "too long") +
                  " snapshot: " + std::to_string(snapshot.size()) + " bytes, its header says " +
                  std::to_string(payload + kHeaderSize));
-    const std::span<const std::uint8_t> body{bytes + kHeaderSize, payload};
+    const std::span<const std::uint8_t> body{bytes + kHeaderSize,
+                                             static_cast<std::size_t>(payload)};
     if (snapshot::xxHash64(body.data(), body.size()) != getLE(bytes + 24, 8))
         fail("restore", "the snapshot is corrupted (its checksum does not match)");
     return body;

@@ -93,6 +93,7 @@
 #include "jostle/visibility.h"
 
 #include <stdbool.h>
+#include <stddef.h>
 #include <stdint.h>
 
 #ifdef __cplusplus
@@ -971,6 +972,31 @@ int jostle_tile_map_bodies(const jostle_world* world, jostle_tile_map_id map, jo
 /// The map that `body` is part of, or the null handle if none (not misuse; a stale body
 /// is).
 jostle_tile_map_id jostle_tile_map_of(const jostle_world* world, jostle_body_id body);
+
+// === Snapshots: saving and restoring a whole world (docs/snapshots.md, docs/rollback.md) ===
+//
+// A snapshot holds everything that decides a world's future, in bytes that are the same on
+// every machine: restored, the world steps on bit for bit as the one it was taken from.
+// userData, the pre-solve callback and the workers are the restoring world's own; the
+// last step's events are empty after a restore. All four are refused from a callback.
+
+/// The length in bytes of a snapshot of the world as it is now; 0 on misuse.
+size_t jostle_world_snapshot_size(const jostle_world* world);
+
+/// Writes a snapshot of the world into out[0 .. capacity) and returns its length; 0 on
+/// misuse, a capacity below jostle_world_snapshot_size() included ("jostle_world_snapshot:
+/// snapshot: the buffer holds 100 bytes, the snapshot needs 5032"). Allocates nothing.
+size_t jostle_world_snapshot(const jostle_world* world, void* out, size_t capacity);
+
+/// Makes the world what it was when `snapshot` (`size` bytes) was taken: handles held then
+/// are valid again, bodies and maps created since are gone. False, the world unchanged, for
+/// bytes that are not a whole snapshot of this format ("jostle_world_restore: restore:
+/// truncated snapshot: 120 bytes, its header says 5032").
+bool jostle_world_restore(jostle_world* world, const void* snapshot, size_t size);
+
+/// A 64-bit hash of exactly what a snapshot holds (its checksum), computed without writing
+/// one: peers compare it to find out that their worlds differ. 0 on misuse.
+uint64_t jostle_world_state_hash(const jostle_world* world);
 
 // === A fixed time step (docs/fixed-step.md) ================================================
 

@@ -68,7 +68,8 @@ void tileMap(Ar& ar, TileMapData& map, std::uint32_t serial, std::uint32_t slots
     whole(ar, map.rows, 1 << 30);
     const std::uint64_t tiles = std::uint64_t(map.columns) * std::uint64_t(map.rows);
     ar.check(tiles >= 1 && tiles <= kMaxSnapshotTiles, "a tile map's size");
-    runs(ar, map.tiles, tiles, [&](char& tile) {
+    const auto tileCount = static_cast<std::size_t>(tiles); // at most kMaxSnapshotTiles
+    runs(ar, map.tiles, tileCount, [&](char& tile) {
         std::uint8_t byte = static_cast<std::uint8_t>(tile);
         ar.u8(byte);
         tile = static_cast<char>(byte);
@@ -93,7 +94,7 @@ void tileMap(Ar& ar, TileMapData& map, std::uint32_t serial, std::uint32_t slots
         ar.var(box.ticket);
     }
     slotList(ar, map.freeBoxes, boxes, [](std::uint32_t) {});
-    runs(ar, map.boxAt, tiles, [&](std::int32_t& index) { pieceIndex(ar, index, boxes); });
+    runs(ar, map.boxAt, tileCount, [&](std::int32_t& index) { pieceIndex(ar, index, boxes); });
 
     std::uint32_t ramps = static_cast<std::uint32_t>(map.ramps.size());
     ar.count(ramps, 7);
@@ -109,7 +110,7 @@ void tileMap(Ar& ar, TileMapData& map, std::uint32_t serial, std::uint32_t slots
         ar.var(ramp.underTicket);
     }
     slotList(ar, map.freeRamps, ramps, [](std::uint32_t) {});
-    runs(ar, map.rampAt, tiles, [&](std::int32_t& index) { pieceIndex(ar, index, ramps); });
+    runs(ar, map.rampAt, tileCount, [&](std::int32_t& index) { pieceIndex(ar, index, ramps); });
     Access::listedBodies(ar, map.bodies, serial, slots);
 }
 

@@ -2240,8 +2240,68 @@ static void test_messages(void) {
     CHECK_NO_ERROR();
 }
 
+/* Rollback in C: a snapshot taken, a second of steps, the snapshot restored and the same
+ * second stepped again ends where the first did, bit for bit; a short buffer and bad bytes
+ * are refused by name. */
+static void test_snapshots(void) {
+    jostle_world_def world_def = jostle_default_world_def();
+    world_def.gravity = (jostle_vec2){0, 600};
+    jostle_world* world = jostle_world_create(&world_def);
+    jostle_body_def def = jostle_default_body_def();
+    def.type = JOSTLE_BODY_STATIC;
+    def.y = 10;
+    def.hw = 200;
+    def.hh = 10;
+    jostle_body_create(world, &def);
+    def.type = JOSTLE_BODY_DYNAMIC;
+    def.hw = def.hh = 5;
+    def.bounce = 0.5f;
+    jostle_body_id box = {0, 0, 0};
+    for (int i = 0; i < 5; ++i) {
+        def.x = (float)(i * 12 - 24);
+        def.y = (float)(-20 - i * 15);
+        box = jostle_body_create(world, &def);
+    }
+    for (int i = 0; i < 20; ++i)
+        jostle_world_step(world, 1.0f / 60.0f);
+
+    const size_t size = jostle_world_snapshot_size(world);
+    unsigned char* saved = malloc(size);
+    CHECK(jostle_world_snapshot(world, saved, size) == size, "a snapshot");
+    const uint64_t hash = jostle_world_state_hash(world);
+    for (int i = 0; i < 60; ++i)
+        jostle_world_step(world, 1.0f / 60.0f);
+    const jostle_vec2 first = jostle_body_get_position(world, box);
+    const uint64_t first_hash = jostle_world_state_hash(world);
+    CHECK(first_hash != hash, "a second later the world differs");
+
+    CHECK(jostle_world_restore(world, saved, size), "restore");
+    CHECK(jostle_world_state_hash(world) == hash, "restored, the hash of the snapshot");
+    int begins = -1;
+    jostle_world_contact_begins(world, &begins);
+    CHECK(begins == 0, "no events after a restore");
+    for (int i = 0; i < 60; ++i)
+        jostle_world_step(world, 1.0f / 60.0f);
+    const jostle_vec2 again = jostle_body_get_position(world, box);
+    CHECK(memcmp(&first, &again, sizeof first) == 0, "the same second, the same place");
+    CHECK(jostle_world_state_hash(world) == first_hash, "the same second, the same hash");
+    CHECK_NO_ERROR();
+
+    unsigned char small[16];
+    CHECK(jostle_world_snapshot(world, small, sizeof small) == 0, "too small a buffer");
+    CHECK_ERROR("jostle_world_snapshot", "the buffer holds 16 bytes");
+    CHECK(!jostle_world_restore(world, saved, size - 1), "a truncated snapshot");
+    CHECK_ERROR("jostle_world_restore", "truncated snapshot");
+    CHECK(!jostle_world_restore(world, small, 0), "no bytes");
+    CHECK_ERROR("jostle_world_restore", "not a jostle snapshot");
+    CHECK(jostle_world_state_hash(world) == first_hash, "refused, the world unchanged");
+    free(saved);
+    CHECK(jostle_world_destroy(world), "destroy");
+}
+
 int main(void) {
     test_defaults();
+    test_snapshots();
     test_free_fall();
     test_landing_and_contact_events();
     test_sensor_events();

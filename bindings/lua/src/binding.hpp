@@ -86,6 +86,8 @@ struct WorldData {
     MoveResult moved;
     MoveOutcome outcome;
     std::vector<ContactInfo> contacts;
+    /// The last world:snapshot()'s bytes, on their way into a Lua string.
+    std::vector<std::byte> snapshot;
     /// Positions or velocities on their way into a Lua table (pushVec2Array).
     std::vector<Vec2> vectors;
     /// What world:getPositionsBuffer and getVelocitiesBuffer hand to LuaJIT's FFI: kept
@@ -214,6 +216,10 @@ void registerTileMapMethods(lua_State* L, int worldMethods);
 void openTileMap(lua_State* L);
 /// Pushes the TileMap userdata of `id` (nil for the null handle); `env` as for pushBody.
 void pushTileMap(lua_State* L, int env, WorldHandle* world, TileMapId id);
+
+// --- snapshot.cpp ----------------------------------------------------------------------
+
+void registerSnapshotMethods(lua_State* L, int worldMethods);
 
 // --- fixed_step.cpp --------------------------------------------------------------------
 

@@ -485,6 +485,7 @@ void openWorld(lua_State* L) {
     registerEventMethods(L, methods);
     registerQueryMethods(L, methods);
     registerTileMapMethods(L, methods);
+    registerSnapshotMethods(L, methods);
     lua_setfield(L, -2, "__index");
     lua_pushcfunction(L, worldGc);
     lua_setfield(L, -2, "__gc");
