@@ -251,6 +251,8 @@ class JostleWorld {
     this.serial = 0; // the world's, which its handles carry
     this.free = new JostleFreeNumbers();
     this.numberOfSlot = [];
+    // The numbers' tables of each snapshot this world took, for its restore.
+    this.numbering = new WeakMap();
   }
 
   /// A body from a scene file's body object: {type, x, y, hw, hh, vx, vy, bounce, ...}.
@@ -329,6 +331,80 @@ class JostleWorld {
   setWalkSpeed(body, speed) { this.withBody("setWalkSpeed", "_jostle_body_set_walk_speed", body, {speed}); }
   /// Falls through one-way platforms for `seconds`.
   dropThrough(body, seconds) { this.withBody("dropThrough", "_jostle_body_drop_through", body, {seconds}); }
+
+  // --- Snapshots (docs/snapshots.md) -------------------------------------------------
+
+  /// A snapshot of the whole world: the bytes C and C++ write, in a Uint8Array of its own.
+  snapshot() {
+    const fn = "snapshot";
+    const world = this.live(fn);
+    const j = this.jostle, m = j.module;
+    const size = m._jostle_world_snapshot_size(world);
+    j.check(fn, size !== 0);
+    const at = j.bufferOf(size);
+    j.check(fn, m._jostle_world_snapshot(world, at, size) === size);
+    const bytes = m.HEAPU8.slice(at, at + size);
+    this.numbering.set(bytes, this.numbers());
+    return bytes;
+  }
+
+  /// Makes the world what it was when `bytes` were taken. Body numbers are as they were
+  /// then for a snapshot this world took; for one from elsewhere (a peer's), the live
+  /// bodies but tile maps' are numbered 0, 1, 2... in creation order.
+  restore(bytes) {
+    const fn = "restore";
+    if (!(bytes instanceof Uint8Array))
+      throw new TypeError(`${fn}: snapshot must be a Uint8Array (from snapshot()), got ${JostleArgs.describe(bytes)}`);
+    const world = this.live(fn);
+    const j = this.jostle, m = j.module;
+    const at = j.bufferOf(bytes.length);
+    m.HEAPU8.set(bytes, at);
+    j.check(fn, m._jostle_world_restore(world, at, bytes.length) !== 0);
+    const numbers = this.numbering.get(bytes);
+    if (numbers !== undefined) this.setNumbers(numbers);
+    else this.numberInCreationOrder();
+  }
+
+  /// A hash of exactly what a snapshot holds, as 16 hexadecimal digits: peers whose
+  /// worlds are the same, bit for bit, have the same.
+  stateHash() {
+    const fn = "stateHash";
+    const hash = this.jostle.text(this.jostle.module._jostle_web_state_hash(this.live(fn)));
+    this.jostle.check(fn, hash !== "");
+    return hash;
+  }
+
+  /// The body numbers' tables, copied.
+  numbers() {
+    return {slots: this.slots.slice(), generations: this.generations.slice(),
+            free: this.free.heap.slice(), numberOfSlot: this.numberOfSlot.slice()};
+  }
+
+  setNumbers(numbers) {
+    this.slots = numbers.slots.slice();
+    this.generations = numbers.generations.slice();
+    this.free.heap = numbers.free.slice();
+    this.numberOfSlot = numbers.numberOfSlot.slice();
+  }
+
+  numberInCreationOrder() {
+    const world = this.pointer, j = this.jostle, m = j.module;
+    const count = m._jostle_world_body_count(world);
+    const ids = j.bufferOf(12 * count + 12);
+    m._jostle_world_bodies(world, ids, count);
+    this.setNumbers({slots: [], generations: [], free: [], numberOfSlot: []});
+    for (let i = 0; i < count; i++) {
+      const handle = ids + 12 * i;
+      m._jostle_tile_map_of(ids + 12 * count, world, handle); // a jostle_tile_map_id
+      const words = m.HEAPU32;
+      if (words[(ids + 12 * count) / 4 + 1] !== 0) continue; // a tile map's
+      const body = this.slots.length;
+      this.slots[body] = words[handle / 4];
+      this.generations[body] = words[handle / 4 + 1];
+      this.serial = words[handle / 4 + 2];
+      this.numberOfSlot[this.slots[body]] = body;
+    }
+  }
 
   /// Frees the world; it may not be used after.
   destroy() {

@@ -19,7 +19,9 @@
 #include <emscripten/emscripten.h>
 #include <malloc.h>
 
+#include <cinttypes>
 #include <cstddef>
+#include <cstdio>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -149,6 +151,17 @@ EMSCRIPTEN_KEEPALIVE const char* jostle_web_last_error() {
     static char message[512];
     copyInNotation(jostle_last_error(), Notation::JavaScript, message, sizeof message);
     return message;
+}
+
+/// jostle_world_state_hash as 16 hexadecimal digits, as Lua has it: a JavaScript number
+/// cannot hold 64 bits, and this module is built without BigInt results. "" on misuse.
+EMSCRIPTEN_KEEPALIVE const char* jostle_web_state_hash(const jostle_world* world) {
+    static char text[17];
+    const std::uint64_t hash = jostle_world_state_hash(world);
+    if (hash == 0 && jostle_last_error()[0] != '\0')
+        return "";
+    std::snprintf(text, sizeof text, "%016" PRIx64, hash);
+    return text;
 }
 
 /// The bytes the module's heap has handed out and not taken back (mallinfo): for the

@@ -340,6 +340,47 @@ function everyRow(jostle, rows) {
     check(seen.has(table), `jostle-test-rows lists the rows of ${table}`);
 }
 
+/// Snapshots: a rolled-back world steps on as it did the first time (the same state hash,
+/// the same boxes), keeps the body numbers of its snapshot, and refuses what is not one.
+function snapshots(jostle) {
+  const world = jostle.createWorld({gravity: [0, 600]});
+  world.createBody({type: "static", x: 0, y: 10, hw: 200, hh: 10});
+  for (let i = 0; i < 6; i++) world.createBody({x: i * 11 - 30, y: -10 - 12 * i, hw: 5, hh: 5, bounce: 0.4});
+  for (let i = 0; i < 20; i++) world.step(1 / 60);
+  const saved = world.snapshot();
+  check(saved instanceof Uint8Array && String.fromCharCode(...saved.subarray(0, 8)) === "JSTLSNAP",
+        "snapshot() is a Uint8Array of a snapshot's bytes");
+  const hash = world.stateHash();
+  check(/^[0-9a-f]{16}$/.test(hash), `stateHash() is 16 hexadecimal digits: ${hash}`);
+  world.destroyBody(3);
+  const extra = world.createBody({x: 100, y: -40, hw: 3, hh: 3});
+  for (let i = 0; i < 60; i++) world.step(1 / 60);
+  const later = JSON.stringify(world.boxes()), laterHash = world.stateHash();
+
+  world.restore(saved);
+  check(world.stateHash() === hash, "restored: the snapshot's state hash");
+  check(world.boxes().length === 7 && world.boxes().some((b) => b.body === 3),
+        "body 3, destroyed since, is back under its number");
+  world.destroyBody(3);
+  check(world.createBody({x: 100, y: -40, hw: 3, hh: 3}) === extra, "the same calls give the same numbers");
+  for (let i = 0; i < 60; i++) world.step(1 / 60);
+  check(JSON.stringify(world.boxes()) === later && world.stateHash() === laterHash,
+        "rolled back and stepped again: the same boxes and state, bit for bit");
+
+  // Another world, from the bytes alone: numbered in creation order.
+  const other = jostle.createWorld({});
+  other.restore(saved);
+  check(other.stateHash() === hash && other.boxes().map((b) => b.body).join() === "0,1,2,3,4,5,6",
+        "restored in another world: the same state, bodies numbered in creation order");
+  refuses("restore('text')", () => world.restore("text"), "TypeError",
+          'restore: snapshot must be a Uint8Array (from snapshot()), got "text"');
+  refuses("restore(a cut snapshot)", () => world.restore(saved.subarray(0, 40)), "Error",
+          `restore: truncated snapshot: 40 bytes, its header says ${saved.length}`);
+  check(world.stateHash() === laterHash, "refused, the world is as it was");
+  world.destroy();
+  other.destroy();
+}
+
 async function main() {
   const [pageDir, version, rowsProgram] = process.argv.slice(2);
   const Jostle = loadPageScripts(path.resolve(pageDir));
@@ -358,7 +399,7 @@ async function main() {
   const rows = execFileSync(rowsProgram, {encoding: "utf8"}).trim().split("\n").map((line) => JSON.parse(line));
   const everyRowOf = (j) => everyRow(j, rows);
   Object.defineProperty(everyRowOf, "name", {value: "everyRow"});
-  for (const part of [argumentChecks, messages, numbersAfterDestroy, churn, conveyor, everyRowOf]) {
+  for (const part of [argumentChecks, messages, numbersAfterDestroy, churn, conveyor, snapshots, everyRowOf]) {
     try {
       part(jostle);
     } catch (error) {
