@@ -112,32 +112,44 @@ TEST(Snapshots, RolledBackTheSlopesWorldRepeatsItself) {
     expectRollbackRepeats(slopes, 300, 300);
 }
 
-TEST(Snapshots, RollbacksAtEveryPointOfABusyRunRepeatThemselves) {
-    // At every 7th step of 700, roll back 8 steps and step them again, as a rollback game
-    // does: the states agree with those of the first time through.
-    BusyWorld busy(Solver::Physical);
+/// The sync test of `jostle synctest`, over a scripted scene: after every step t >= k, roll
+/// back to the state after step t - k (the world, the script, the hash of what it
+/// reported) and step the k steps again: the state hash is the one of the first time.
+template <class Scene> void expectSyncTest(Scene& scene, int steps, int k) {
     struct Saved {
         Bytes bytes;
-        BusyWorld::Script script;
+        typename Scene::Script script;
         Hash hash;
     };
-    std::vector<Saved> ring;
-    std::vector<std::uint64_t> states;
-    for (int step = 0; step < 700; ++step) {
-        ring.push_back({busy.world.snapshot(), busy.script(), busy.hash});
-        busy.step();
-        states.push_back(busy.world.stateHash());
-        if (step % 7 == 6 && step >= 8) {
-            const Saved& back = ring[ring.size() - 8];
-            busy.world.restore(back.bytes);
-            busy.setScript(back.script);
-            busy.hash = back.hash;
-            for (int k = step - 7; k <= step; ++k) {
-                busy.step();
-                ASSERT_EQ(busy.world.stateHash(), states[static_cast<std::size_t>(k)])
-                    << "step " << k << ", rolled back at step " << step;
-            }
-        }
+    std::vector<Saved> saved{{scene.world.snapshot(), scene.script(), scene.hash}};
+    std::vector<std::uint64_t> states{scene.world.stateHash()};
+    for (int t = 1; t <= steps; ++t) {
+        scene.step();
+        saved.push_back({scene.world.snapshot(), scene.script(), scene.hash});
+        states.push_back(scene.world.stateHash());
+        if (t < k)
+            continue;
+        const Saved& back = saved[static_cast<std::size_t>(t - k)];
+        scene.world.restore(back.bytes);
+        scene.setScript(back.script);
+        scene.hash = back.hash;
+        for (int again = t - k + 1; again <= t; ++again)
+            scene.step();
+        ASSERT_EQ(scene.world.stateHash(), states[static_cast<std::size_t>(t)])
+            << "step " << t << ", rolled back " << k;
+        ASSERT_EQ(scene.hash.value(), saved[static_cast<std::size_t>(t)].hash.value())
+            << "what step " << t << " reported, rolled back " << k;
+    }
+}
+
+TEST(Snapshots, TheBusyWorldsPassTheSyncTestRolledBack1And2And8Steps) {
+    for (int k : {1, 2, 8}) {
+        BusyWorld physical(Solver::Physical);
+        expectSyncTest(physical, 300, k);
+        BusyWorld classic(Solver::Classic);
+        expectSyncTest(classic, 300, k);
+        SlopesWorld slopes;
+        expectSyncTest(slopes, 300, k);
     }
 }
 

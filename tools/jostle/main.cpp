@@ -3,15 +3,18 @@
 //     jostle run SCENE --steps N [--trace FILE|-] [--every K] [--solver MODEL]
 //     jostle render SCENE --out FILE.gif|FILE.png [--steps N] [--width W] [--height H]
 //                   [--every K] [--solver MODEL] [--legend]
+//     jostle synctest SCENE [--steps N] [--rollback K] [--workers W] [--solver MODEL]
 //
 // Exit status: 0 when all went well; 2 for bad input (options, scene file, a value the
-// world refuses); 1 when the output cannot be written or something unexpected fails.
+// world refuses); 1 when the output cannot be written, synctest finds a difference, or
+// something unexpected fails.
 // Progress of the steps on standard error when it is a terminal (progress.hpp).
 #include "errors.hpp"
 #include "load_scene.hpp"
 #include "progress.hpp"
 #include "render.hpp"
 #include "summary.hpp"
+#include "synctest.hpp"
 #include "trace.hpp"
 
 #include "jostle/scene.hpp"
@@ -284,6 +287,30 @@ int main(int argc, char** argv) {
                             "Draw a key to the colours in a band under the scene (the image "
                             "grows by its height)");
 
+    jostle::cli::SyncTestOptions syncOptions;
+    CLI::App* syncCommand = app.add_subcommand(
+        "synctest", "Roll a scene back at every step and step it again: the same bits, or the "
+                    "first step, body and field that differ (exit 1).");
+    syncCommand->add_option("scene", syncOptions.scene, "The scene file (docs/scene-format.md)")
+        ->required();
+    syncCommand->add_option("-n,--steps", syncOptions.steps, "How many steps to take, >= 1")
+        ->capture_default_str()
+        ->check(atLeast(1));
+    syncCommand
+        ->add_option("-k,--rollback", syncOptions.rollback,
+                     "How many steps each rollback goes back, 1 to 1000")
+        ->capture_default_str()
+        ->check(inRange(1, 1000));
+    syncCommand->add_option("--workers", syncOptions.workers, "Threads to step on, 1 to 64")
+        ->capture_default_str()
+        ->check(inRange(1, 64));
+    syncCommand
+        ->add_option("--nudge", syncOptions.nudge,
+                     "For testing the test: nudge a body by a bit when step S is stepped again")
+        ->type_name("S")
+        ->check(atLeast(1));
+    addSolverOption(*syncCommand, syncOptions.solver);
+
     const auto badUsage = [](const std::string& message, const char* command) {
         printError(message);
         std::fprintf(stderr, "Run '%s --help' for usage.\n", command);
@@ -300,11 +327,16 @@ int main(int argc, char** argv) {
             return app.exit(error);
         return badUsage(error.what(), runCommand->parsed()      ? "jostle run"
                                       : renderCommand->parsed() ? "jostle render"
+                                      : syncCommand->parsed()   ? "jostle synctest"
                                                                 : "jostle");
     }
 
-    const std::string& scenePath = renderCommand->parsed() ? renderOptions.scene : options.scene;
+    const std::string& scenePath = renderCommand->parsed() ? renderOptions.scene
+                                   : syncCommand->parsed() ? syncOptions.scene
+                                                           : options.scene;
     try {
+        if (syncCommand->parsed())
+            return jostle::cli::syncTest(syncOptions);
         return renderCommand->parsed() ? jostle::cli::render(renderOptions) : run(options);
     } catch (const jostle::SceneError& error) {
         printError(error.what()); // already names the file
