@@ -1,13 +1,19 @@
 #!/usr/bin/env bash
 # Sets everything up, builds the benchmarks (Release, with Box2D 2.4.1 and Chipmunk 7 from
 # Debian) and runs one: jostle beside both peers on every benchmark scene, or with `load`
-# first, scene files of a million bodies loaded (jostle-bench-load). The other arguments
+# first, scene files of a million bodies loaded (jostle-bench-load), or with `snapshots`
+# first, the size and speed of snapshots (jostle-bench-snapshots). The other arguments
 # go to the program (try --help, --quick, --scene pyramid_100, --markdown; load --bodies N).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/setup.sh libbox2d-dev libchipmunk-dev
 cmake -S . -B build-bench -DCMAKE_BUILD_TYPE=Release -DJOSTLE_WERROR=ON \
   -DJOSTLE_BUILD_BENCH=ON -DJOSTLE_BUILD_TESTS=OFF >/dev/null
+if [[ "${1:-}" == snapshots ]]; then
+  shift
+  cmake --build build-bench -j"$(nproc)" --target jostle_bench_snapshots
+  exec ./build-bench/jostle-bench-snapshots "$@"
+fi
 if [[ "${1:-}" == load ]]; then
   shift
   cmake --build build-bench -j"$(nproc)" --target jostle_bench_load

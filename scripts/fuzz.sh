@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Runs a fuzzer campaign and keeps what it found new in the repository's corpus:
 #
-#   scripts/fuzz.sh scene|api [SECONDS]     (default 600)
+#   scripts/fuzz.sh scene|api|restore [SECONDS]     (default 600)
 #
 # Sets up (scripts/setup.sh), builds the asan preset (clang, ASan + UBSan, libFuzzer),
 # then fuzzes in build-asan/fuzz-work/TARGET, starting from tests/fuzz/corpus/TARGET. The
@@ -18,9 +18,9 @@ cd "$(dirname "$0")/.."
 target=${1:-}
 seconds=${2:-600}
 case "$target" in
-scene | api) ;;
+scene | api | restore) ;;
 *)
-    echo "usage: scripts/fuzz.sh scene|api [SECONDS]" >&2
+    echo "usage: scripts/fuzz.sh scene|api|restore [SECONDS]" >&2
     exit 2
     ;;
 esac
@@ -38,9 +38,12 @@ seeds=("$corpus")
 if [ "$target" = scene ]; then
     options+=(-dict=tests/fuzz/scene.dict)
     seeds+=(examples/scenes)
-else
+elif [ "$target" = api ]; then
     # Programs need room: let inputs grow to the longest allowed from the start.
     options+=(-max_len=4096 -len_control=0)
+else
+    # Snapshots of busy worlds run to some kilobytes.
+    options+=(-max_len=32768 -len_control=0)
 fi
 
 executions=0

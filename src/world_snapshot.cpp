@@ -93,19 +93,22 @@ std::size_t World::snapshotSize() const {
 }
 
 std::size_t World::snapshot(std::span<std::byte> out) const {
-    const std::size_t size = snapshotSize();
-    if (out.size() < size)
-        fail("snapshot", "the buffer holds " + std::to_string(out.size()) +
-                             " bytes, the snapshot needs " + std::to_string(size));
+    requireBetweenSteps(*state_, "snapshot");
     auto* bytes = reinterpret_cast<std::uint8_t*>(out.data());
-    snapshot::writePayload(*state_, bytes + kHeaderSize);
+    const std::optional<std::size_t> payload =
+        out.size() < kHeaderSize
+            ? std::nullopt
+            : snapshot::writePayload(*state_, {bytes + kHeaderSize, out.size() - kHeaderSize});
+    if (!payload)
+        fail("snapshot", "the buffer holds " + std::to_string(out.size()) +
+                             " bytes, the snapshot needs " + std::to_string(snapshotSize()));
     std::memcpy(bytes, kMagic, sizeof kMagic);
     putLE(bytes + 8, snapshot::kFormat, 2);
     putLE(bytes + 10, kHeaderSize, 2);
     putLE(bytes + 12, kLibraryVersion, 4);
-    putLE(bytes + 16, size - kHeaderSize, 8);
-    putLE(bytes + 24, snapshot::xxHash64(bytes + kHeaderSize, size - kHeaderSize), 8);
-    return size;
+    putLE(bytes + 16, *payload, 8);
+    putLE(bytes + 24, snapshot::xxHash64(bytes + kHeaderSize, *payload), 8);
+    return kHeaderSize + *payload;
 }
 
 std::vector<std::byte> World::snapshot() const {

@@ -31,18 +31,40 @@ struct CountingSink {
     void put(const std::uint8_t*, std::size_t n) { size += n; }
 };
 
-/// Into a buffer known to be big enough (a counting pass said how big).
-struct BufferSink {
+/// Into the caller's buffer, as far as it goes: past its end, nothing more is written and
+/// `overflowed` says so.
+struct BoundedSink {
     std::uint8_t* at;
+    std::uint8_t* end;
+    bool overflowed = false;
     void put(const std::uint8_t* bytes, std::size_t n) {
+        if (overflowed || static_cast<std::size_t>(end - at) < n) {
+            overflowed = true;
+            return;
+        }
         std::memcpy(at, bytes, n);
         at += n;
     }
 };
 
+/// Into XXH64, a chunk at a time (hashing value by value would cost more than writing).
 struct HashingSink {
     XxHash64 hash;
-    void put(const std::uint8_t* bytes, std::size_t n) { hash.update(bytes, n); }
+    std::uint8_t chunk[1024];
+    std::size_t used = 0;
+    void put(const std::uint8_t* bytes, std::size_t n) {
+        if (used + n > sizeof chunk) {
+            hash.update(chunk, used);
+            used = 0;
+        }
+        std::memcpy(chunk + used, bytes, n); // n is at most 10: one value
+        used += n;
+    }
+    std::uint64_t digest() {
+        hash.update(chunk, used);
+        used = 0;
+        return hash.digest();
+    }
 };
 
 // --- Writer and Reader ------------------------------------------------------------------
@@ -63,6 +85,11 @@ public:
     void flag(const bool& v) { u8(static_cast<std::uint8_t>(v ? 1 : 0)); }
     template <class T> void var(const T& value) {
         std::uint64_t v = value;
+        if (v < 0x80) { // most numbers: one byte
+            const auto byte = static_cast<std::uint8_t>(v);
+            sink_.put(&byte, 1);
+            return;
+        }
         std::uint8_t bytes[10];
         std::size_t n = 0;
         do {

@@ -11,6 +11,7 @@
 #include "../world_options.hpp"
 #include "../world_state.hpp"
 #include "access.hpp"
+#include "body_codec.hpp"
 #include "maps_archive.hpp"
 #include "values.hpp"
 
@@ -22,9 +23,6 @@
 namespace jostle::snapshot {
 
 namespace {
-
-using properties::BodyField;
-using properties::kBodyFields;
 
 template <class Ar> void section(Ar& ar, char letter) {
     std::uint8_t tag = static_cast<std::uint8_t>(letter);
@@ -94,50 +92,6 @@ template <class Ar> void slotTable(Ar& ar, WorldState& w) {
 
 // --- B: the live bodies, in creation order ------------------------------------------------
 
-constexpr std::size_t kRows = std::size(kBodyFields);
-/// What steps and setters keep of a body beside its settings, after the rows' bits.
-constexpr float Body::*kRunTimeNumbers[] = {&Body::floorCos, &Body::sleepTime, &Body::walkSpeed,
-                                            &Body::dropThroughTime};
-constexpr Vec2 Body::*kRunTimeVectors[] = {&Body::separation, &Body::lastStepVelocity};
-static_assert(kRows + std::size(kRunTimeNumbers) + std::size(kRunTimeVectors) <= 64,
-              "a body's fields fit the 64 bits that say which are saved");
-
-/// Which of a body's fields differ from their defaults (by their bits): those are saved.
-std::uint64_t presentFields(properties::ConstPlaces places) {
-    std::uint64_t present = 0;
-    std::size_t bit = 0;
-    for (const BodyField& field : kBodyFields) {
-        field.visitStore([&](auto member, auto store) {
-            using T = std::remove_cvref_t<decltype(BodyDef{}.*member)>;
-            if constexpr (!std::is_pointer_v<T>)
-                if (!sameBits(at(places, store), std::get<T>(field.property->byDefault)))
-                    present |= std::uint64_t{1} << bit;
-        });
-        ++bit;
-    }
-    const Body fresh;
-    for (float Body::*number : kRunTimeNumbers)
-        present |= std::uint64_t{!sameBits(places.body.*number, fresh.*number)} << bit++;
-    for (Vec2 Body::*vector : kRunTimeVectors)
-        present |= std::uint64_t{!sameBits(places.body.*vector, fresh.*vector)} << bit++;
-    return present;
-}
-
-template <class Ar> void bodyFields(Ar& ar, properties::Places places, std::uint64_t present) {
-    std::size_t bit = 0;
-    for (const BodyField& field : kBodyFields) {
-        if (present >> bit++ & 1)
-            field.visitStore([&](auto, auto store) { value(ar, at(places, store)); });
-    }
-    for (float Body::*number : kRunTimeNumbers)
-        if (present >> bit++ & 1)
-            ar.f32(places.body.*number);
-    for (Vec2 Body::*vector : kRunTimeVectors)
-        if (present >> bit++ & 1)
-            ar.vec(places.body.*vector);
-    ar.check(present >> bit == 0, "a body's fields");
-}
-
 /// A body read back: its settings checked as createBody checks them, the rest in range.
 void checkBody(Reader& ar, const WorldState& w, std::uint32_t slot, std::size_t index) {
     const properties::ConstPlaces places{w.slots[slot], w.asGiven[slot], w.shapes[slot]};
@@ -189,12 +143,13 @@ template <class Ar> void bodies(Ar& ar, WorldState& w) {
                  "the bodies' creation order");
         lastCreated = w.created[slot];
         const properties::Places places{body, w.asGiven[slot], w.shapes[slot]};
+        const PlaceBytes bytes(places);
         std::uint64_t present = 0;
         if constexpr (!Ar::kReading)
-            present = presentFields({body, w.asGiven[slot], w.shapes[slot]});
+            present = presentFields(bytes);
         ar.var(present);
         ar.flag(body.asleep);
-        bodyFields(ar, places, present);
+        bodyFields(ar, bytes, present);
         if (body.asleep)
             ar.var(body.island);
         if constexpr (Ar::kReading) {
@@ -268,17 +223,20 @@ std::size_t payloadSize(const WorldState& w) {
     return sink.size;
 }
 
-void writePayload(const WorldState& w, std::uint8_t* out) {
-    BufferSink sink{out};
-    Writer<BufferSink> ar(sink);
+std::optional<std::size_t> writePayload(const WorldState& w, std::span<std::uint8_t> out) {
+    BoundedSink sink{out.data(), out.data() + out.size()};
+    Writer<BoundedSink> ar(sink);
     world(ar, forWriting(w));
+    if (sink.overflowed)
+        return std::nullopt;
+    return static_cast<std::size_t>(sink.at - out.data());
 }
 
 std::uint64_t payloadHash(const WorldState& w) {
     HashingSink sink;
     Writer<HashingSink> ar(sink);
     world(ar, forWriting(w));
-    return sink.hash.digest();
+    return sink.digest();
 }
 
 void readPayload(std::span<const std::uint8_t> payload, WorldState& into, TaskRunner& tasks) {

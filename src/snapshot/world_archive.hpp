@@ -6,6 +6,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <span>
 
 namespace jostle {
@@ -20,8 +21,8 @@ inline constexpr std::uint16_t kFormat = 1;
 
 /// The payload's length in bytes.
 std::size_t payloadSize(const WorldState& world);
-/// Writes the payload into `out`, payloadSize(world) bytes long.
-void writePayload(const WorldState& world, std::uint8_t* out);
+/// Writes the payload into `out` and returns its length, or nothing if `out` is too short.
+std::optional<std::size_t> writePayload(const WorldState& world, std::span<std::uint8_t> out);
 /// XXH64 of the payload, without writing it anywhere.
 std::uint64_t payloadHash(const WorldState& world);
 /// Reads a payload into `into`, a WorldState fresh from its constructor whose serial is

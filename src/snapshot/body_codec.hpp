@@ -1,0 +1,176 @@
+// How a snapshot saves a body's fields (section B, docs/snapshots.md): each row of
+// kBodyFields, then the run-time state steps and setters keep beside the settings, each
+// saved only when its bits differ from its default. The rows are turned once into plain
+// entries (where the field lies among a body's places, how it is encoded, its default's
+// bytes), so that saving a body is a loop over them, not a visit per row.
+#pragma once
+
+#include "../body_properties.hpp"
+#include "../body_state.hpp"
+#include "archive.hpp"
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <cstring>
+#include <iterator>
+#include <type_traits>
+
+namespace jostle::snapshot {
+
+/// Run-time state kept in Body beside the settings: saved after the rows of kBodyFields.
+/// (Mass is not: it is worked out again from the settings, as createBody does.)
+inline constexpr float Body::*kRunTimeNumbers[] = {&Body::floorCos, &Body::sleepTime,
+                                                   &Body::walkSpeed, &Body::dropThroughTime};
+inline constexpr Vec2 Body::*kRunTimeVectors[] = {&Body::separation, &Body::lastStepVelocity};
+
+inline constexpr std::size_t kBodyCodecs =
+    std::size(properties::kBodyFields) + std::size(kRunTimeNumbers) + std::size(kRunTimeVectors);
+static_assert(kBodyCodecs <= 64, "a body's fields fit the 64 bits that say which are saved");
+
+struct FieldCodec {
+    enum Kind : std::uint8_t { Skip, Flag, Byte, Number, Vector, Whole };
+    Kind kind = Skip;
+    std::uint8_t place = 0; ///< 0: Body, 1: KeptAsGiven, 2: Shape
+    std::uint16_t offset = 0;
+    std::uint8_t size = 0;
+    std::uint8_t byDefault[8] = {};
+};
+
+/// A body's places as bytes, in FieldCodec::place's order.
+struct PlaceBytes {
+    std::uint8_t* at[3];
+    explicit PlaceBytes(properties::Places places)
+        : at{reinterpret_cast<std::uint8_t*>(&places.body),
+             reinterpret_cast<std::uint8_t*>(&places.kept),
+             reinterpret_cast<std::uint8_t*>(&places.shape)} {}
+    std::uint8_t* of(const FieldCodec& codec) const { return at[codec.place] + codec.offset; }
+};
+
+namespace detail {
+
+template <class T>
+FieldCodec codecOf(const PlaceBytes& sample, const T& field, const T& byDefault) {
+    FieldCodec codec;
+    if constexpr (std::is_same_v<T, float>)
+        codec.kind = FieldCodec::Number;
+    else if constexpr (std::is_same_v<T, Vec2>)
+        codec.kind = FieldCodec::Vector;
+    else if constexpr (std::is_same_v<T, bool>)
+        codec.kind = FieldCodec::Flag;
+    else if constexpr (std::is_enum_v<T>)
+        codec.kind = FieldCodec::Byte;
+    else if constexpr (std::is_same_v<T, std::uint32_t>)
+        codec.kind = FieldCodec::Whole;
+    else
+        return codec; // userData: the program's, never saved
+    static_assert(sizeof(T) <= sizeof(FieldCodec::byDefault));
+    static_assert(sizeof(T) == 1 || !std::is_enum_v<T>, "enumerations are saved as a byte");
+    const auto* address = reinterpret_cast<const std::uint8_t*>(&field);
+    for (std::uint8_t place = 0; place < 3; ++place)
+        if (address >= sample.at[place] &&
+            address < sample.at[place] + (place == 0   ? sizeof(Body)
+                                          : place == 1 ? sizeof(KeptAsGiven)
+                                                       : sizeof(Shape))) {
+            codec.place = place;
+            codec.offset = static_cast<std::uint16_t>(address - sample.at[place]);
+        }
+    codec.size = sizeof(T);
+    std::memcpy(codec.byDefault, &byDefault, sizeof(T));
+    return codec;
+}
+
+inline std::array<FieldCodec, kBodyCodecs> makeBodyCodecs() {
+    Body body;
+    KeptAsGiven kept;
+    Shape shape;
+    const properties::Places places{body, kept, shape};
+    const PlaceBytes sample(places);
+    std::array<FieldCodec, kBodyCodecs> codecs{};
+    std::size_t i = 0;
+    for (const properties::BodyField& field : properties::kBodyFields) {
+        field.visitStore([&](auto member, auto store) {
+            using T = std::remove_cvref_t<decltype(BodyDef{}.*member)>;
+            codecs[i] =
+                codecOf<T>(sample, at(places, store), std::get<T>(field.property->byDefault));
+        });
+        ++i;
+    }
+    const Body fresh;
+    for (float Body::*number : kRunTimeNumbers)
+        codecs[i++] = codecOf<float>(sample, body.*number, fresh.*number);
+    for (Vec2 Body::*vector : kRunTimeVectors)
+        codecs[i++] = codecOf<Vec2>(sample, body.*vector, fresh.*vector);
+    return codecs;
+}
+
+} // namespace detail
+
+/// The codecs of a body's fields, in the order their bits and bytes are saved.
+inline const std::array<FieldCodec, kBodyCodecs>& bodyCodecs() {
+    static const std::array<FieldCodec, kBodyCodecs> codecs = detail::makeBodyCodecs();
+    return codecs;
+}
+
+/// Whether the field at `at` has its default's bytes (sizes 1, 4 and 8, compared whole).
+inline bool sameBytes(const std::uint8_t* at, const FieldCodec& codec) {
+    auto same = [&](auto word) {
+        decltype(word) other;
+        std::memcpy(&word, at, sizeof word);
+        std::memcpy(&other, codec.byDefault, sizeof other);
+        return word == other;
+    };
+    switch (codec.size) {
+    case 1:
+        return *at == codec.byDefault[0];
+    case 4:
+        return same(std::uint32_t{});
+    default:
+        return same(std::uint64_t{});
+    }
+}
+
+/// Which of a body's fields differ from their defaults, by their bits: those are saved.
+inline std::uint64_t presentFields(const PlaceBytes& body) {
+    std::uint64_t present = 0;
+    const auto& codecs = bodyCodecs();
+    for (std::size_t i = 0; i < kBodyCodecs; ++i) {
+        const FieldCodec& codec = codecs[i];
+        if (codec.kind != FieldCodec::Skip && !sameBytes(body.of(codec), codec))
+            present |= std::uint64_t{1} << i;
+    }
+    return present;
+}
+
+/// The fields `present` names, in order (archive.hpp's two directions).
+template <class Ar> void bodyFields(Ar& ar, const PlaceBytes& body, std::uint64_t present) {
+    ar.check(present >> kBodyCodecs == 0, "a body's fields");
+    const auto& codecs = bodyCodecs();
+    for (std::size_t i = 0; i < kBodyCodecs; ++i) {
+        if ((present >> i & 1) == 0)
+            continue;
+        std::uint8_t* at = body.of(codecs[i]);
+        switch (codecs[i].kind) {
+        case FieldCodec::Skip:
+            ar.check(false, "a body's fields"); // userData is never saved
+            break;
+        case FieldCodec::Flag:
+            ar.flag(*reinterpret_cast<bool*>(at));
+            break;
+        case FieldCodec::Byte:
+            ar.u8(*at);
+            break;
+        case FieldCodec::Number:
+            ar.f32(*reinterpret_cast<float*>(at));
+            break;
+        case FieldCodec::Vector:
+            ar.vec(*reinterpret_cast<Vec2*>(at));
+            break;
+        case FieldCodec::Whole:
+            ar.var(*reinterpret_cast<std::uint32_t*>(at));
+            break;
+        }
+    }
+}
+
+} // namespace jostle::snapshot
