@@ -255,5 +255,24 @@ TEST(FixedStep, DrawsEachBodyBetweenItsLastTwoSteps) {
     EXPECT_THROW(clock.drawPosition(world, box), Error);
 }
 
+TEST(FixedStep, ItsPendingTimeSavedAndPutBackGivesTheSameStepsToCome) {
+    // dt = 1/4 s is 250,000,000 ns; three frames of 1/8 s (floats that are exact) leave
+    // 375,000,000 - 250,000,000 ns pending: half a step.
+    FixedStep clock(0.25f), copy(0.25f);
+    for (int frame = 0; frame < 3; ++frame)
+        clock.advance(0.125f);
+    EXPECT_EQ(clock.pendingNanoseconds(), 125'000'000);
+    copy.setPendingNanoseconds(clock.pendingNanoseconds());
+    EXPECT_FLOAT_EQ(copy.alpha(), 0.5f);
+    for (float frame : {0.1f, 0.17f, 0.33f, 0.05f})
+        EXPECT_EQ(copy.advance(frame), clock.advance(frame)) << frame;
+    // Its range: from -dt/1000 (a step taken early) to just under dt less that tolerance.
+    EXPECT_NO_THROW(copy.setPendingNanoseconds(-250'000));
+    EXPECT_NO_THROW(copy.setPendingNanoseconds(249'749'999));
+    EXPECT_THROW(copy.setPendingNanoseconds(249'750'000), Error);
+    EXPECT_THROW(copy.setPendingNanoseconds(-250'001), Error);
+    EXPECT_EQ(copy.pendingNanoseconds(), 249'749'999); // refused: unchanged
+}
+
 } // namespace
 } // namespace jostle

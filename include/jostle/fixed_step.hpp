@@ -23,6 +23,7 @@
 #include <cmath>
 #include <cstdint>
 #include <span>
+#include <string>
 #include <vector>
 
 namespace jostle {
@@ -156,6 +157,22 @@ public:
 
     float dt() const { return dt_; }
     int maxStepsPerFrame() const { return maxSteps_; }
+
+    /// The time left over, not yet stepped, in whole nanoseconds: all a clock carries from
+    /// frame to frame. Saved beside a world's snapshot (docs/rollback.md), it lets a saved
+    /// game or a replay resume with the same steps to come. From a little below 0 (a step
+    /// taken early, within the tolerance of advance()) to just under a step.
+    std::int64_t pendingNanoseconds() const { return accumulated_; }
+    /// Puts back what pendingNanoseconds() gave, of a clock with the same dt. Throws
+    /// jostle::Error, changing nothing, for a value no such clock can have.
+    void setPendingNanoseconds(std::int64_t nanoseconds) {
+        if (nanoseconds < -toleranceTicks_ || nanoseconds >= dtTicks_ - toleranceTicks_)
+            throw Error("FixedStep::setPendingNanoseconds: nanoseconds must be from " +
+                        std::to_string(-toleranceTicks_) + " to " +
+                        std::to_string(dtTicks_ - toleranceTicks_ - 1) + " for a dt of " +
+                        std::to_string(dtTicks_) + " ns");
+        accumulated_ = nanoseconds;
+    }
 
     /// Forgets the time left over and the dropped time, as a new FixedStep would: for
     /// after a pause or a level load, so the first frame does not catch up with them.

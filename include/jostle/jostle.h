@@ -1049,6 +1049,14 @@ int jostle_fixed_step_max_steps_per_frame(const jostle_fixed_step* clock);
 /// Forgets the time left over and the dropped time (after a pause or a level load).
 bool jostle_fixed_step_reset(jostle_fixed_step* clock);
 
+/// The time left over, not yet stepped, in whole nanoseconds: all the clock carries from
+/// frame to frame, to save beside a world's snapshot (docs/rollback.md). 0 on misuse.
+int64_t jostle_fixed_step_pending_nanoseconds(const jostle_fixed_step* clock);
+
+/// Puts back what jostle_fixed_step_pending_nanoseconds gave, of a clock with the same dt;
+/// false, changing nothing, for a value no such clock can have.
+bool jostle_fixed_step_set_pending_nanoseconds(jostle_fixed_step* clock, int64_t nanoseconds);
+
 JOSTLE_EXPORT_END
 #ifdef __cplusplus
 } // extern "C"

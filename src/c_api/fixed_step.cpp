@@ -91,4 +91,16 @@ bool jostle_fixed_step_reset(jostle_fixed_step* clock) {
     });
 }
 
+int64_t jostle_fixed_step_pending_nanoseconds(const jostle_fixed_step* clock) {
+    return guard(__func__, std::int64_t{0},
+                 [&] { return clockOf(clock).clock.pendingNanoseconds(); });
+}
+
+bool jostle_fixed_step_set_pending_nanoseconds(jostle_fixed_step* clock, int64_t nanoseconds) {
+    return guard(__func__, false, [&] {
+        clockOf(clock).clock.setPendingNanoseconds(nanoseconds);
+        return true;
+    });
+}
+
 } // extern "C"

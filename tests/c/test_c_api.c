@@ -2297,6 +2297,19 @@ static void test_snapshots(void) {
     CHECK(jostle_world_state_hash(world) == first_hash, "refused, the world unchanged");
     free(saved);
     CHECK(jostle_world_destroy(world), "destroy");
+
+    /* A clock's pending time, saved and put back: 1/8 s of a 1/4 s step is 125,000,000 ns. */
+    jostle_fixed_step* clock = jostle_fixed_step_create(0.25f, 8);
+    jostle_fixed_step* copy = jostle_fixed_step_create(0.25f, 8);
+    jostle_fixed_step_advance(clock, 0.125f);
+    CHECK(jostle_fixed_step_pending_nanoseconds(clock) == 125000000, "pending time");
+    CHECK(jostle_fixed_step_set_pending_nanoseconds(copy, 125000000), "put back");
+    CHECK(jostle_fixed_step_advance(copy, 0.2f) == jostle_fixed_step_advance(clock, 0.2f),
+          "the same steps to come");
+    CHECK(!jostle_fixed_step_set_pending_nanoseconds(copy, 250000000), "a whole step pending");
+    CHECK_ERROR("jostle_fixed_step_set_pending_nanoseconds", "nanoseconds must be from");
+    jostle_fixed_step_destroy(clock);
+    jostle_fixed_step_destroy(copy);
 }
 
 int main(void) {

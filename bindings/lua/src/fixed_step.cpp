@@ -113,6 +113,21 @@ int clockReset(lua_State* L) {
     return 0;
 }
 
+int clockGetPendingNanoseconds(lua_State* L) {
+    pushWhole(L, checkClock(L, "FixedStep:getPendingNanoseconds").pendingNanoseconds());
+    return 1;
+}
+
+int clockSetPendingNanoseconds(lua_State* L) {
+    const char* where = "FixedStep:setPendingNanoseconds";
+    FixedStep& clock = checkClock(L, where);
+    // The clock says its own range; whole numbers beyond a double's exact ones are refused.
+    const std::int64_t nanoseconds =
+        checkWhole(L, 2, where, "nanoseconds", -(std::int64_t{1} << 53), std::int64_t{1} << 53);
+    guard(L, where, [&] { clock.setPendingNanoseconds(nanoseconds); });
+    return 0;
+}
+
 /// FixedStep lives in the userdata itself; its buffers go with it.
 int clockGc(lua_State* L) {
     static_cast<FixedStep*>(lua_touserdata(L, 1))->~FixedStep();
@@ -133,6 +148,8 @@ constexpr luaL_Reg kClockMethods[] = {
     {"getDt", clockGetDt},
     {"getMaxStepsPerFrame", clockGetMaxStepsPerFrame},
     {"reset", clockReset},
+    {"getPendingNanoseconds", clockGetPendingNanoseconds},
+    {"setPendingNanoseconds", clockSetPendingNanoseconds},
     {"getDrawPosition", clockGetDrawPosition},
     {"getDrawPositions", clockGetDrawPositions},
     {"rememberPositions", clockRememberPositions},

@@ -69,4 +69,16 @@ test("an error in a step stops update and comes out of it", function()
   t.truthy(tostring(clock):find("jostle.FixedStep", 1, true), "tostring")
 end)
 
+test("the pending time, saved and put back, gives the same steps to come", function()
+  local clock, copy = jostle.newFixedStep(0.25), jostle.newFixedStep(0.25)
+  for _ = 1, 3 do clock:advance(0.125) end
+  t.equal(clock:getPendingNanoseconds(), 125000000, "three frames of 1/8 s, a step of 1/4 s")
+  copy:setPendingNanoseconds(clock:getPendingNanoseconds())
+  for _, frame in ipairs({0.1, 0.17, 0.33, 0.05}) do
+    t.equal(copy:advance(frame), clock:advance(frame), "frame " .. frame)
+  end
+  t.raises({"FixedStep:setPendingNanoseconds", "nanoseconds must be from -250000 to 249749999"},
+           copy.setPendingNanoseconds, copy, 250000000)
+end)
+
 return t.run(tests)
