@@ -47,6 +47,8 @@
 //               is not sped up into it; it pushes through its floor's friction, as hard
 //               as its feet grip (it pushed anything at its walk speed: issue 29). The
 //               busy world's hashes unchanged.
+//   2026-11-27  the snapshot hashes (kSnapshotAt200, kStateAt500) first recorded (issue 31):
+//               they change when snapshot format 1's bytes or the busy world's physics do.
 
 #include "busy_worlds.hpp"
 #include "jostle/query.hpp"
@@ -306,6 +308,36 @@ TEST(Determinism, ClassicModelGivesTheRecordedHash) {
     EXPECT_GT(run.bodies, 150u);
     EXPECT_GT(run.contactBegins, 2000u);
     EXPECT_EQ(run.hash, kClassicHash);
+}
+
+// A snapshot (docs/snapshots.md) of the busy world after 200 steps is the same bytes on every
+// machine: its state hash, the XXH64 of those bytes, is recorded. Restored into another
+// world, which its script follows, it steps on to the same state as the world it was taken
+// from, whose state after 500 steps is recorded too. scripts/cross.sh runs this on aarch64
+// and s390x (big-endian), the web build in Node: the bytes written there are the bytes
+// written here, and what is restored there continues as here.
+constexpr std::uint64_t kSnapshotAt200 = 15299329859132177977ULL;
+constexpr std::uint64_t kStateAt500 = 8903169815470822942ULL;
+
+TEST(Determinism, ASnapshotIsTheSameBytesEverywhereAndContinuesToTheRecordedHash) {
+    BusyWorld taken(Solver::Physical);
+    for (int step = 0; step < 200; ++step)
+        taken.step();
+    EXPECT_EQ(taken.world.stateHash(), kSnapshotAt200);
+
+    BusyWorld restored(Solver::Physical);
+    restored.world.restore(taken.world.snapshot());
+    BusyWorld::Script script = taken.script();
+    const std::uint32_t serial = restored.world.bodies()[0].world;
+    for (BodyId& id : script.rain)
+        id.world = serial;
+    restored.setScript(script);
+    for (int step = 200; step < 500; ++step) {
+        taken.step();
+        restored.step();
+    }
+    EXPECT_EQ(restored.world.stateHash(), taken.world.stateHash());
+    EXPECT_EQ(restored.world.stateHash(), kStateAt500);
 }
 
 } // namespace
