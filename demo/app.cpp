@@ -328,6 +328,7 @@ void printReport(State& state) {
                     static_cast<double>(velocity.y));
         std::printf("player_floor %d\n", world.touching(player).floor ? 1 : 0);
     }
+    current.report();
     std::printf("dragging %d\n", state.drag.holding() ? 1 : 0);
     if (state.drag.holding()) {
         const Vec2 held = state.drag.heldPosition();

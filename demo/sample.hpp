@@ -56,6 +56,8 @@ public:
     virtual bool usesLetterKeys() const { return false; }
     /// The character the keys steer, in the first pane's world (null if there is none).
     virtual BodyId player() const { return {}; }
+    /// Facts of its own for --report, printed as `name value` lines on standard output.
+    virtual void report() const {}
 
     std::vector<Pane>& panes() { return panes_; }
 

@@ -142,9 +142,22 @@ near player_y "$(awk -v x="$(value player_x)" 'BEGIN { print 440 + (x - 7 - 470)
   "its left corner on the ramp down: snapped to it"
 expect player_floor 1 "on the ground going down"
 
-# --- Keys 1 to 7 switch samples.
-names=(tutorial platformer pyramid rain bullets crates slopes)
-for key in 1 2 3 4 5 6 7; do
+# --- Rollback (sample 8): each peer hears the other's keys 6 frames late and rolls back when
+# they are not what it guessed (the last heard, with no jump). Peer B hears yours: Right
+# down, Right up, Left down, Left up and two jumps are 6 rollbacks. Peer A hears the
+# script's (left below phase 110 of 240, right from 120 to 229, a jump at 45 every 90): by
+# frame 393 it changed at frames 0, 110, 120, 230, 240, 350, 360 and jumped at 45, 135,
+# 225, 315: 11 rollbacks. The states of the last frame both know agree.
+run --sample 8 --frames 400 --input "30 key-down Right; 100 key-up Right; 120 key-press Space; 150 key-down Left; 250 key-up Left; 260 key-press Space"
+expect sample rollback "sample 8"
+expect confirmed_frame 392 "the last frame both peers know is 400 - 6 - 2"
+expect peers_agree 1 "both peers' confirmed states are the same, bit for bit"
+expect rollbacks_a 11 "peer A rolled back for each change of the script's keys"
+expect rollbacks_b 6 "peer B rolled back for each change of yours"
+
+# --- Keys 1 to 8 switch samples.
+names=(tutorial platformer pyramid rain bullets crates slopes rollback)
+for key in 1 2 3 4 5 6 7 8; do
   run --sample 3 --frames 3 --input "2 key-press $key"
   expect sample "${names[key - 1]}" "key $key"
 done

@@ -147,7 +147,7 @@ async function gameApi(page) {
   check(result.boxes === 2, "world.boxes() lists the floor and the crate");
 }
 
-/// Keys 1 to 7 switch sample; a scene file loads into a pane of its own, and a bad one
+/// Keys 1 to 8 switch sample; a scene file loads into a pane of its own, and a bad one
 /// is refused with the loader's message, the current sample left as it was.
 async function samplesAndScenes(page) {
   const name = "jostlePage.state.page.currentName()";
