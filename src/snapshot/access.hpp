@@ -39,13 +39,16 @@ struct Access {
                 ar.check(a < keys, "the contact cache's slots");
                 cache.runs_.count(a);
             }
-            ar.var(entry.b);
-            ar.var(entry.rank);
-            ar.var(entry.contact.generationA);
-            ar.var(entry.contact.generationB);
-            normal(ar, entry.contact.normal);
-            ar.f32(entry.contact.normalImpulse);
-            ar.f32(entry.contact.tangentImpulse);
+            // At most 5 + 5 + 5 + 5 + 9 + 8 bytes.
+            ar.template record<48>([&](auto& out) {
+                out.var(entry.b);
+                out.var(entry.rank);
+                out.var(entry.contact.generationA);
+                out.var(entry.contact.generationB);
+                normal(out, entry.contact.normal);
+                out.f32(entry.contact.normalImpulse);
+                out.f32(entry.contact.tangentImpulse);
+            });
             ar.check(std::isfinite(entry.contact.normalImpulse) &&
                          std::isfinite(entry.contact.tangentImpulse),
                      "a cached contact's impulses");
@@ -77,11 +80,13 @@ struct Access {
             list.resize(count);
         for (std::uint32_t k = 0; k < count; ++k) {
             TouchRecord& r = list[k];
-            ref(ar, r.a, slots);
-            ref(ar, r.b, slots);
-            normal(ar, r.normal);
-            ar.f32(r.approachSpeed);
-            ar.f32(r.impulse);
+            ar.template record<48>([&](auto& out) { // at most 4 × 5 + 9 + 8 bytes
+                ref(out, r.a, slots);
+                ref(out, r.b, slots);
+                normal(out, r.normal);
+                out.f32(r.approachSpeed);
+                out.f32(r.impulse);
+            });
             ar.check(std::isfinite(r.approachSpeed) && std::isfinite(r.impulse) &&
                          (k == 0 || list[k - 1].key() <= r.key()),
                      "the last step's touching pairs");

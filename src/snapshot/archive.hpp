@@ -15,6 +15,7 @@
 #include <cstdint>
 #include <cstring>
 #include <span>
+#include <stdexcept>
 #include <string>
 
 namespace jostle::snapshot {
@@ -67,6 +68,18 @@ struct HashingSink {
     }
 };
 
+/// A record's bytes on their way to the sink, in the writer's own memory (Writer::record).
+template <std::size_t Bound> struct RecordSink {
+    std::uint8_t bytes[Bound];
+    std::size_t size = 0;
+    void put(const std::uint8_t* from, std::size_t n) {
+        if (size + n > Bound) // a record's bound is its longest encoding: never
+            throw std::logic_error("snapshot: a record is longer than its bound");
+        std::memcpy(bytes + size, from, n);
+        size += n;
+    }
+};
+
 // --- Writer and Reader ------------------------------------------------------------------
 
 template <class Sink> class Writer {
@@ -103,6 +116,15 @@ public:
     }
     /// A count of what follows, each at least `minBytes` long (Reader checks there is room).
     template <class T> void count(const T& n, std::size_t /*minBytes*/) { var(n); }
+    /// Calls fill(ar) with a writer of its own, whose bytes (`Bound` at most) go to the sink
+    /// at once: the loops over many small records (bodies, contacts) write a record at a
+    /// time, not a value at a time. A reader calls fill(*this).
+    template <std::size_t Bound, class Fill> void record(Fill&& fill) {
+        RecordSink<Bound> local;
+        Writer<RecordSink<Bound>> ar(local);
+        fill(ar);
+        sink_.put(local.bytes, local.size);
+    }
     /// A condition the reader checks: a writer's values meet it by construction.
     void check(bool, const char*) {}
     template <class Describe> void checkOr(bool, Describe&&) {}
@@ -156,6 +178,7 @@ public:
         check(std::uint64_t(n) <= left() / (minBytes == 0 ? 1 : minBytes),
               "a count is larger than the bytes that follow");
     }
+    template <std::size_t Bound, class Fill> void record(Fill&& fill) { fill(*this); }
     void check(bool ok, const char* what) {
         if (!ok)
             throw Refused{what};

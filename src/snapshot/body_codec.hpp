@@ -106,6 +106,23 @@ inline std::array<FieldCodec, kBodyCodecs> makeBodyCodecs() {
 
 } // namespace detail
 
+/// A body made from the default BodyDef, where a world keeps it: what a restored body's
+/// fields are before those its snapshot holds are read.
+struct DefaultPlaces {
+    Body body;
+    KeptAsGiven kept;
+    Shape shape;
+};
+
+inline const DefaultPlaces& defaultPlaces() {
+    static const DefaultPlaces defaults = [] {
+        DefaultPlaces made;
+        properties::keep(BodyDef{}, {made.body, made.kept, made.shape});
+        return made;
+    }();
+    return defaults;
+}
+
 /// The codecs of a body's fields, in the order their bits and bytes are saved.
 inline const std::array<FieldCodec, kBodyCodecs>& bodyCodecs() {
     static const std::array<FieldCodec, kBodyCodecs> codecs = detail::makeBodyCodecs();

@@ -130,28 +130,32 @@ template <class Ar> void bodies(Ar& ar, WorldState& w) {
         if constexpr (Ar::kReading) {
             ar.check(!seen[slot], "a body's slot is listed twice");
             seen[slot] = 1;
+            // The fields left out are the defaults.
+            const DefaultPlaces& defaults = defaultPlaces();
             const std::uint32_t generation = w.slots[slot].generation;
-            w.slots[slot] = Body{};
+            w.slots[slot] = defaults.body;
             w.slots[slot].generation = generation;
             w.slots[slot].alive = true;
-            // The fields left out are the defaults.
-            properties::keep(BodyDef{}, {w.slots[slot], w.asGiven[slot], w.shapes[slot]});
+            w.asGiven[slot] = defaults.kept;
+            w.shapes[slot] = defaults.shape;
         }
         Body& body = w.slots[slot];
-        ar.var(w.created[slot]);
+        const properties::Places places{body, w.asGiven[slot], w.shapes[slot]};
+        const PlaceBytes bytes(places);
+        ar.template record<256>([&](auto& out) { // its longest: some 170 bytes
+            out.var(w.created[slot]);
+            std::uint64_t present = 0;
+            if constexpr (!Ar::kReading)
+                present = presentFields(bytes);
+            out.var(present);
+            out.flag(body.asleep);
+            bodyFields(out, bytes, present);
+            if (body.asleep)
+                out.var(body.island);
+        });
         ar.check((k == 0 || w.created[slot] > lastCreated) && w.created[slot] < w.bodiesCreated,
                  "the bodies' creation order");
         lastCreated = w.created[slot];
-        const properties::Places places{body, w.asGiven[slot], w.shapes[slot]};
-        const PlaceBytes bytes(places);
-        std::uint64_t present = 0;
-        if constexpr (!Ar::kReading)
-            present = presentFields(bytes);
-        ar.var(present);
-        ar.flag(body.asleep);
-        bodyFields(ar, bytes, present);
-        if (body.asleep)
-            ar.var(body.island);
         if constexpr (Ar::kReading) {
             checkBody(ar, w, slot, k);
             body.shape = places.shape.kind();

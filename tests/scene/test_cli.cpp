@@ -579,14 +579,14 @@ TEST_F(Cli, AnUnknownCommandIsNamed) {
     const std::string usage = "Run 'jostle --help' for usage.\n";
     const Result walk = run("walk --steps 1");
     EXPECT_EQ(walk.status, 2);
-    EXPECT_EQ(walk.err, "jostle: error: unknown command 'walk' (commands: run, render)\n" + usage);
+    EXPECT_EQ(walk.err, "jostle: error: unknown command 'walk' (commands: run, render, synctest)\n" + usage);
     const Result option = run("--colour run");
     EXPECT_EQ(option.status, 2);
     EXPECT_EQ(option.err,
-              "jostle: error: unknown option '--colour' (commands: run, render)\n" + usage);
+              "jostle: error: unknown option '--colour' (commands: run, render, synctest)\n" + usage);
     const Result none = run("");
     EXPECT_EQ(none.status, 2);
-    EXPECT_EQ(none.err, "jostle: error: a command is required (commands: run, render)\n" + usage);
+    EXPECT_EQ(none.err, "jostle: error: a command is required (commands: run, render, synctest)\n" + usage);
     EXPECT_EQ(none.out, "");
 }
 
