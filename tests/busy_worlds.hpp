@@ -69,6 +69,18 @@ void hashStep(const World& world, Hash& hash) {
         hash.add(e.by);
 }
 
+/// Destroys a body of `rain` that `random` picks, and forgets it.
+inline void destroyOne(World& world, std::vector<BodyId>& rain, Lcg& random) {
+    const std::size_t victim = random.next() % rain.size();
+    world.destroyBody(rain[victim]);
+    rain.erase(rain.begin() + static_cast<std::ptrdiff_t>(victim));
+}
+
+/// Turns a lift round: its vertical velocity reversed.
+inline void turnRound(World& world, BodyId lift) {
+    world.setVelocity(lift, {0, -world.velocity(lift).y});
+}
+
 // A container with a pyramid, a tile floor with a one-way ledge, a lift, a sensor and
 // boxes of every kind raining in, some destroyed as they go, tiles dug and filled,
 // queries asked: most of what the library does, a step at a time.
@@ -122,13 +134,10 @@ public:
                 box.vy = 1500.0f;
             rain_.push_back(world.createBody(box));
         }
-        if (steps_ % 7 == 0 && rain_.size() > 150) {
-            const std::size_t victim = random_.next() % rain_.size();
-            world.destroyBody(rain_[victim]);
-            rain_.erase(rain_.begin() + static_cast<std::ptrdiff_t>(victim));
-        }
+        if (steps_ % 7 == 0 && rain_.size() > 150)
+            destroyOne(world, rain_, random_);
         if (steps_ % 120 == 60)
-            world.setVelocity(lift_, {0, -world.velocity(lift_).y});
+            turnRound(world, lift_);
         if (steps_ % 250 == 125) {
             const int column = 1 + static_cast<int>(random_.next() % 38);
             setTile(world, floor_, column, 2, !isSolid(world, floor_, column, 2));
@@ -246,13 +255,10 @@ public:
                                              .friction = random.range(0, 1),
                                              .radius = random.range(0, std::min(hw, hh))}));
         }
-        if (step % 5 == 0 && rain.size() > 80) {
-            const std::size_t victim = random.next() % rain.size();
-            world.destroyBody(rain[victim]);
-            rain.erase(rain.begin() + static_cast<std::ptrdiff_t>(victim));
-        }
+        if (step % 5 == 0 && rain.size() > 80)
+            destroyOne(world, rain, random);
         if (step % 120 == 60)
-            world.setVelocity(lift_, {0, -world.velocity(lift_).y});
+            turnRound(world, lift_);
         if (step % 240 == 0)
             world.setWalkSpeed(hero_, step % 480 == 0 ? 90.0f : -90.0f);
         world.step(1.0f / 60.0f);

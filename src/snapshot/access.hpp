@@ -97,22 +97,15 @@ struct Access {
         const std::uint32_t slots = static_cast<std::uint32_t>(w.slots.size());
         records(ar, w.events.contactsBefore_, slots);
         records(ar, w.events.sensorsBefore_, slots);
-        std::uint32_t crushes = static_cast<std::uint32_t>(w.events.crushing.size());
-        ar.count(crushes, 6);
-        if constexpr (Ar::kReading)
-            w.events.crushing.resize(crushes);
-        for (CrushEvent& crush : w.events.crushing)
+        sequence(ar, w.events.crushing, 6, [&](CrushEvent& crush) {
             for (BodyId* id : {&crush.body, &crush.by, &crush.against})
                 handle(ar, *id, w.serial, slots);
-        std::uint32_t forces = static_cast<std::uint32_t>(w.forces.size());
-        ar.count(forces, 10);
-        if constexpr (Ar::kReading)
-            w.forces.resize(forces);
-        for (auto& [id, force] : w.forces) {
-            handle(ar, id, w.serial, slots);
-            ar.vec(force);
-            ar.check(isFinite(force), "a force");
-        }
+        });
+        sequence(ar, w.forces, 10, [&](std::pair<BodyId, Vec2>& applied) {
+            handle(ar, applied.first, w.serial, slots);
+            ar.vec(applied.second);
+            ar.check(isFinite(applied.second), "a force");
+        });
     }
 
     template <class Ar>

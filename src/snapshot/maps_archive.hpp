@@ -81,26 +81,19 @@ void tileMap(Ar& ar, TileMapData& map, std::uint32_t serial, std::uint32_t slots
                        [](char tile) { return std::uint8_t(tile == '#' ? 1 : 0); });
     }
 
-    std::uint32_t boxes = static_cast<std::uint32_t>(map.boxes.size());
-    ar.count(boxes, 6);
-    if constexpr (Ar::kReading)
-        map.boxes.resize(boxes);
-    for (TileBox& box : map.boxes) {
+    sequence(ar, map.boxes, 6, [&](TileBox& box) {
         whole(ar, box.column, map.columns - 1);
         whole(ar, box.row, map.rows - 1);
         whole(ar, box.columns, map.columns - box.column);
         whole(ar, box.rows, map.rows - box.row);
         handle(ar, box.body, serial, slots);
         ar.var(box.ticket);
-    }
+    });
+    const auto boxes = static_cast<std::uint32_t>(map.boxes.size());
     slotList(ar, map.freeBoxes, boxes, [](std::uint32_t) {});
     runs(ar, map.boxAt, tileCount, [&](std::int32_t& index) { pieceIndex(ar, index, boxes); });
 
-    std::uint32_t ramps = static_cast<std::uint32_t>(map.ramps.size());
-    ar.count(ramps, 7);
-    if constexpr (Ar::kReading)
-        map.ramps.resize(ramps);
-    for (RampPiece& ramp : map.ramps) {
+    sequence(ar, map.ramps, 7, [&](RampPiece& ramp) {
         whole(ar, ramp.column, map.columns - 1);
         whole(ar, ramp.row, map.rows - 1);
         whole(ar, ramp.columns, std::min(2, map.columns - ramp.column));
@@ -108,7 +101,8 @@ void tileMap(Ar& ar, TileMapData& map, std::uint32_t serial, std::uint32_t slots
         handle(ar, ramp.under, serial, slots);
         ar.var(ramp.rampTicket);
         ar.var(ramp.underTicket);
-    }
+    });
+    const auto ramps = static_cast<std::uint32_t>(map.ramps.size());
     slotList(ar, map.freeRamps, ramps, [](std::uint32_t) {});
     runs(ar, map.rampAt, tileCount, [&](std::int32_t& index) { pieceIndex(ar, index, ramps); });
     Access::listedBodies(ar, map.bodies, serial, slots);

@@ -54,6 +54,18 @@ void value(Ar& ar, E& v) {
 /// Pointers (userData) belong to the process: never saved.
 template <class Ar> void value(Ar&, void*&) {}
 
+/// A list: its count, then each item by each(item), at least `minBytes` long (a reader
+/// checks the count against the bytes left before it makes room).
+template <class Ar, class T, class Each>
+void sequence(Ar& ar, std::vector<T>& items, std::size_t minBytes, Each&& each) {
+    std::uint32_t count = static_cast<std::uint32_t>(items.size());
+    ar.count(count, minBytes);
+    if constexpr (Ar::kReading)
+        items.resize(count);
+    for (T& item : items)
+        each(item);
+}
+
 /// A list of numbers below `limit` (slots, islands, tickets, pieces) in its order;
 /// `check(n)` is called on each number read.
 template <class Ar, class N, class Check>
