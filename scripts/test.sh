@@ -3,8 +3,8 @@
 # (g++), then the same tests built by clang with AddressSanitizer and
 # UndefinedBehaviorSanitizer (the asan preset in CMakePresets.json), where the fuzzers
 # also run for a short while, then the tests of worlds stepped on several threads under
-# ThreadSanitizer (the tsan preset). Any sanitizer report fails its test. The determinism
-# tests on aarch64 and s390x are scripts/cross.sh, apart (they would take it past 15 minutes).
+# ThreadSanitizer (the tsan preset). Any sanitizer report fails its test. Last, the
+# determinism tests built for aarch64 and s390x and run under qemu-user (scripts/cross.sh).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/setup.sh
@@ -18,3 +18,5 @@ ctest --preset asan -j"$(nproc)"
 cmake --preset tsan >/dev/null
 cmake --build --preset tsan -j"$(nproc)"
 ctest --preset tsan -j"$(nproc)"
+
+scripts/cross.sh
