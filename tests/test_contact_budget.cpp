@@ -1,7 +1,7 @@
 // The contact budget (PhysicalOptions::maxContactsPerBody, docs/physical-model.md): boxes
 // piled at one spot keep a bounded number of contacts, a crowd never crowds out the floor,
 // and a sane scene leaves nothing out. (A step's memory for such a pile:
-// test_pile_memory.cpp.)
+// test_allocations.cpp.)
 #include "jostle/world.hpp"
 
 #include <gtest/gtest.h>

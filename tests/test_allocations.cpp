@@ -1,7 +1,9 @@
-// A pile of boxes at one spot keeps a step's memory linear in bodies × maxContactsPerBody
-// (issue 28: 10,000 boxes took 459 MB in their first step, the pair search keeping every
-// overlapping pair before the budget applied). Its own program: it counts every byte the
-// process allocates, through operator new.
+// What the library allocates, counted through operator new (its own program: every byte and
+// every call the process makes is counted). A pile of boxes at one spot keeps a step's
+// memory linear in bodies × maxContactsPerBody (issue 28: 10,000 boxes took 459 MB in their
+// first step, the pair search keeping every overlapping pair before the budget applied). A
+// snapshot into a buffer big enough, and a state hash, allocate nothing (issue 31).
+#include "jostle/tilemap.hpp"
 #include "jostle/world.hpp"
 
 #include <gtest/gtest.h>
@@ -9,10 +11,12 @@
 #include <atomic>
 #include <cstdlib>
 #include <new>
+#include <vector>
 
 namespace {
 
 std::atomic<std::size_t> allocated{0};
+std::atomic<std::size_t> calls{0};
 std::atomic<std::size_t> peak{0};
 
 void* track(std::size_t size) {
@@ -21,6 +25,7 @@ void* track(std::size_t size) {
     if (block == nullptr)
         throw std::bad_alloc();
     *static_cast<std::size_t*>(block) = size;
+    calls.fetch_add(1);
     const std::size_t now = allocated.fetch_add(size) + size;
     std::size_t seen = peak.load();
     while (now > seen && !peak.compare_exchange_weak(seen, now)) {
@@ -85,6 +90,26 @@ TEST(PileMemory, AStepHoldsMemoryLinearInBodiesAndTheContactBudget) {
         const std::size_t used = peakOfAPileStep(kBoxes, workers);
         EXPECT_LT(used, bound) << workers << " workers: " << used / 1'000'000 << " MB";
     }
+}
+
+TEST(Snapshots, ASnapshotIntoABufferBigEnoughAndAStateHashAllocateNothing) {
+    World world(WorldDef{.gravity = {0, 600}});
+    createTileMap(world, {.tile = 10, .rows = {"#..../##", "########"}});
+    for (int i = 0; i < 40; ++i)
+        world.createBody({.x = 15.0f + 2.0f * float(i % 10),
+                          .y = -10.0f - 10.0f * float(i / 10),
+                          .hw = 4,
+                          .hh = 4,
+                          .radius = i % 3 == 0 ? 2.0f : 0.0f});
+    for (int step = 0; step < 60; ++step)
+        world.step(1.0f / 60.0f);
+    std::vector<std::byte> buffer(world.snapshotSize() + 100);
+    const std::size_t before = calls.load();
+    const std::size_t written = world.snapshot(buffer);
+    const std::uint64_t hash = world.stateHash();
+    EXPECT_EQ(calls.load(), before) << "allocations during snapshot() and stateHash()";
+    EXPECT_GT(written, 0u);
+    EXPECT_NE(hash, 0u);
 }
 
 } // namespace
