@@ -142,14 +142,22 @@ template <class Scene> void expectSyncTest(Scene& scene, int steps, int k) {
     }
 }
 
+// Steps of the sync tests: fewer under a sanitizer, which looks for faults, not for other
+// numbers (JOSTLE_TESTS_FEWER_SAMPLES).
+#if JOSTLE_TESTS_FEWER_SAMPLES
+constexpr int kSyncSteps = 120;
+#else
+constexpr int kSyncSteps = 300;
+#endif
+
 TEST(Snapshots, TheBusyWorldsPassTheSyncTestRolledBack1And2And8Steps) {
     for (int k : {1, 2, 8}) {
         BusyWorld physical(Solver::Physical);
-        expectSyncTest(physical, 300, k);
+        expectSyncTest(physical, kSyncSteps, k);
         BusyWorld classic(Solver::Classic);
-        expectSyncTest(classic, 300, k);
+        expectSyncTest(classic, kSyncSteps, k);
         SlopesWorld slopes;
-        expectSyncTest(slopes, 300, k);
+        expectSyncTest(slopes, kSyncSteps, k);
     }
 }
 
