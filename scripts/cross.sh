@@ -18,28 +18,30 @@ for arch in "${arches[@]}"; do
     continue
   fi
   # -O1: the bits are the same at every level (-ffp-contract=off), and it compiles faster
-  # than qemu runs -O3's fewer instructions.
+  # than qemu runs -O3's fewer instructions; a unity build, three times faster still.
   cmake -S tests/cross -B "build-cross-$arch" -DCMAKE_BUILD_TYPE=Release \
     -DCMAKE_CXX_FLAGS_RELEASE="-O1 -DNDEBUG" -DCMAKE_C_FLAGS_RELEASE="-O1 -DNDEBUG" \
+    -DJOSTLE_UNITY_LIBRARY=ON \
     -DCMAKE_TOOLCHAIN_FILE="$PWD/cmake/toolchains/linux-gnu.cmake" -DJOSTLE_CROSS_CPU="$arch" >/dev/null
   ready+=("$arch")
 done
 [ ${#ready[@]} -gt 0 ] || exit 0
 
-# The CPUs side by side, the cores shared between them: a build and a run under qemu are
-# mostly one thread's work at a time, so two side by side take half as long.
+# The CPUs side by side, the cores shared between them: first the builds, then the tests
+# (two shards a CPU), all at once.
 jobs=$(( $(nproc) / ${#ready[@]} ))
 [ "$jobs" -ge 1 ] || jobs=1
-pids=()
-for arch in "${ready[@]}"; do
-  build=build-cross-$arch
-  (cmake --build "$build" -j"$jobs" --target determinism_tests >/dev/null &&
-     ctest --test-dir "$build" --output-on-failure) >"$build/cross.log" 2>&1 &
-  pids+=($!)
-done
-status=0
-for i in "${!ready[@]}"; do
-  wait "${pids[$i]}" || status=1
-  cat "build-cross-${ready[$i]}/cross.log"
-done
-exit $status
+side_by_side() { # COMMAND... with ARCH in it replaced by each CPU's name
+  local pids=() status=0
+  for arch in "${ready[@]}"; do
+    "${@//ARCH/$arch}" >"build-cross-$arch/cross.log" 2>&1 &
+    pids+=($!)
+  done
+  for i in "${!ready[@]}"; do
+    wait "${pids[$i]}" || status=1
+    cat "build-cross-${ready[$i]}/cross.log"
+  done
+  return $status
+}
+side_by_side cmake --build build-cross-ARCH -j"$jobs" --target determinism_tests
+side_by_side ctest --test-dir build-cross-ARCH --output-on-failure -j2

@@ -7,8 +7,6 @@ namespace jostle {
 
 namespace {
 
-constexpr float kInfinity = std::numeric_limits<float>::infinity();
-
 /// A point moving from the origin by `motion` through a box given relative to where it
 /// starts (the slab method): per axis, when it enters the slab between that axis's two
 /// faces (-infinity along an axis it does not move along), and when it first leaves one.

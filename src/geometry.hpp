@@ -13,9 +13,13 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <optional>
 
 namespace jostle {
+
+/// Where a sweep that never meets anything enters or leaves: at no time.
+inline constexpr float kInfinity = std::numeric_limits<float>::infinity();
 
 /// An axis-aligned box given by its corners, min <= max: a body's box, a region a query
 /// or a sweep looks at, a cell's contents.

@@ -10,8 +10,6 @@ namespace jostle {
 
 namespace {
 
-constexpr float kInfinity = std::numeric_limits<float>::infinity();
-
 const Outline::Edge& edgeOf(const Outline& o, int k) {
     return o.edges[std::size_t(k)];
 }
@@ -49,7 +47,7 @@ bool throughCircle(Vec2 start, Vec2 motion, float radius, float& first, float& s
 }
 
 /// A line through an outline: when it is inside, and where it comes in.
-struct Crossing {
+struct OutlineCrossing {
     float enter; ///< may be < 0: the line was inside before the start
     float leave;
     int edge;     ///< the edge it comes in through
@@ -90,8 +88,8 @@ bool roundedCornerAt(const CastOutline& cast, bool skinned, int k, Vec2 p, Vec2&
 /// then, where the line comes in or goes out past the end of an edge at a rounded corner,
 /// the circle around that corner: a line that enters the grown polygon there and misses
 /// the circle misses the region.
-std::optional<Crossing> crossOutline(const CastOutline& cast, bool skinned, Vec2 start, Vec2 motion,
-                                     float slack = 0.0f) {
+std::optional<OutlineCrossing> crossOutline(const CastOutline& cast, bool skinned, Vec2 start,
+                                            Vec2 motion, float slack = 0.0f) {
     const Outline& o = cast.outline;
     float enter = -kInfinity, leave = kInfinity;
     int in = -1, out = -1;
@@ -123,7 +121,7 @@ std::optional<Crossing> crossOutline(const CastOutline& cast, bool skinned, Vec2
     };
     if (in < 0 || out < 0 || misses(enter, leave))
         return std::nullopt;
-    Crossing crossing{enter, leave, in, false, {}, edgeOf(o, in).normal};
+    OutlineCrossing crossing{enter, leave, in, false, {}, edgeOf(o, in).normal};
     Vec2 corner;
     float radius = 0.0f, first = 0.0f, second = 0.0f;
     if (roundedCornerAt(cast, skinned, in, start + motion * enter, corner, radius)) {
@@ -152,7 +150,7 @@ std::optional<Crossing> crossOutline(const CastOutline& cast, bool skinned, Vec2
 
 /// The value of dot(offset, normal) at which the mover touches the outline where the
 /// crossing comes in (without skin).
-float touchingExtent(const CastOutline& cast, const Crossing& crossing) {
+float touchingExtent(const CastOutline& cast, const OutlineCrossing& crossing) {
     const Outline& o = cast.outline;
     if (crossing.rounded)
         return dot(crossing.corner, crossing.normal) + o.radius;
@@ -160,14 +158,14 @@ float touchingExtent(const CastOutline& cast, const Crossing& crossing) {
 }
 
 /// ShapeHit::axis of a crossing met at a time > 0.
-Axis axisOf(const Crossing& crossing) {
+Axis axisOf(const OutlineCrossing& crossing) {
     const Vec2 n = crossing.normal;
     if (crossing.rounded || (n.x != 0.0f && n.y != 0.0f))
         return kAlongSlope;
     return n.x != 0.0f ? kAlongX : kAlongY;
 }
 
-ShapeHit hitOf(const CastOutline& cast, const Crossing& crossing, float time) {
+ShapeHit hitOf(const CastOutline& cast, const OutlineCrossing& crossing, float time) {
     return {
         {time, crossing.normal, axisOf(crossing)}, crossing.normal, touchingExtent(cast, crossing)};
 }
@@ -222,7 +220,7 @@ CastOutline castOutlineOf(Vec2 moverHalf, float moverRadius, Vec2 half, const Sh
 }
 
 std::optional<ShapeHit> sweepShape(const CastOutline& cast, Vec2 offset, Vec2 motion) {
-    const std::optional<Crossing> deep = crossOutline(cast, true, offset, motion);
+    const std::optional<OutlineCrossing> deep = crossOutline(cast, true, offset, motion);
     if (!deep || !(deep->enter < deep->leave) || deep->enter < 0.0f || deep->enter > 1.0f ||
         !stops(cast, deep->edge))
         return std::nullopt;
@@ -233,8 +231,8 @@ std::optional<ShapeHit> castShape(const CastOutline& cast, Vec2 offset, Vec2 mot
     if (motion.x == 0.0f && motion.y == 0.0f)
         return std::nullopt;
     // Deeper than the skin (the outline shrunk by it), and touching (the outline as it is).
-    const std::optional<Crossing> deep = crossOutline(cast, true, offset, motion);
-    const std::optional<Crossing> touch = crossOutline(cast, false, offset, motion);
+    const std::optional<OutlineCrossing> deep = crossOutline(cast, true, offset, motion);
+    const std::optional<OutlineCrossing> touch = crossOutline(cast, false, offset, motion);
     if (!deep || !touch)
         return std::nullopt;
     // Never deeper than the skin; or already that deep at the start (inside, free to
@@ -262,7 +260,7 @@ std::optional<ShapeHit> rayShape(Vec2 from, Vec2 delta, Vec2 half, const Shape& 
     const CastOutline cast = castOutlineOf({}, 0.0f, half, shape, kAllFaces, 0.0f);
     // A ray that grazes a corner touches it: rounding must not make it miss (a few float
     // steps of the fractions).
-    const std::optional<Crossing> crossing = crossOutline(cast, false, from, delta, 1e-6f);
+    const std::optional<OutlineCrossing> crossing = crossOutline(cast, false, from, delta, 1e-6f);
     // leave <= 0: the ray starts on the shape's far side, heading away.
     if (!crossing || crossing->enter > 1.0f || crossing->leave <= 0.0f)
         return std::nullopt;
