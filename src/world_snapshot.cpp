@@ -124,7 +124,7 @@ void World::restore(std::span<const std::byte> bytes) {
     auto restored = std::make_unique<WorldState>();
     restored->serial = w.serial;
     try {
-        snapshot::readPayload(payload, *restored, *w.tasks);
+        snapshot::readPayload(payload, *restored);
     } catch (const snapshot::Refused& refused) {
         fail("restore", "the snapshot is corrupted: " + refused.what);
     }

@@ -243,8 +243,7 @@ std::uint64_t payloadHash(const WorldState& w) {
     return sink.digest();
 }
 
-void readPayload(std::span<const std::uint8_t> payload, WorldState& into, TaskRunner& tasks) {
-    (void)tasks;
+void readPayload(std::span<const std::uint8_t> payload, WorldState& into) {
     Reader ar(payload);
     world(ar, into);
     ar.check(ar.left() == 0, "bytes after the end of the snapshot");

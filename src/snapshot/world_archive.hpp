@@ -11,7 +11,6 @@
 
 namespace jostle {
 struct WorldState;
-class TaskRunner;
 } // namespace jostle
 
 namespace jostle::snapshot {
@@ -26,8 +25,9 @@ std::optional<std::size_t> writePayload(const WorldState& world, std::span<std::
 /// XXH64 of the payload, without writing it anywhere.
 std::uint64_t payloadHash(const WorldState& world);
 /// Reads a payload into `into`, a WorldState fresh from its constructor whose serial is
-/// the restoring world's; `tasks` sorts what is sorted. Throws Refused, leaving `into`
-/// to be thrown away, on anything that is not a payload this library wrote.
-void readPayload(std::span<const std::uint8_t> payload, WorldState& into, TaskRunner& tasks);
+/// the restoring world's (the contact cache comes back as it lay: nothing to sort). Throws
+/// Refused, leaving `into` to be thrown away, on anything that is not a payload this
+/// library wrote.
+void readPayload(std::span<const std::uint8_t> payload, WorldState& into);
 
 } // namespace jostle::snapshot
