@@ -309,6 +309,15 @@ std::string refusalOf(World& world, const Bytes& bytes) {
     return "";
 }
 
+/// `bytes` with its payload's checksum made to match again.
+Bytes withChecksum(Bytes bytes) {
+    const std::uint64_t sum = snapshot::xxHash64(
+        reinterpret_cast<const std::uint8_t*>(bytes.data()) + 32, bytes.size() - 32);
+    for (int i = 0; i < 8; ++i)
+        bytes[24 + static_cast<std::size_t>(i)] = static_cast<std::byte>(sum >> (8 * i));
+    return bytes;
+}
+
 TEST(Snapshots, BytesThatAreNotASnapshotAreRefusedByName) {
     World world = smallWorld();
     const Bytes saved = world.snapshot();
@@ -344,12 +353,8 @@ TEST(Snapshots, EveryPrefixAndEveryCorruptedByteIsRefusedAndChangesNothing) {
         for (int flip : {0x01, 0x80, 0xFF}) {
             Bytes bad = saved;
             bad[at] ^= static_cast<std::byte>(flip);
-            const std::uint64_t sum = snapshot::xxHash64(
-                reinterpret_cast<const std::uint8_t*>(bad.data()) + 32, bad.size() - 32);
-            for (int i = 0; i < 8; ++i)
-                bad[24 + static_cast<std::size_t>(i)] = static_cast<std::byte>(sum >> (8 * i));
             World target = smallWorld();
-            const std::string refusal = refusalOf(target, bad);
+            const std::string refusal = refusalOf(target, withChecksum(bad));
             if (refusal.empty()) {
                 for (int step = 0; step < 5; ++step)
                     target.step(kDt);
@@ -360,6 +365,50 @@ TEST(Snapshots, EveryPrefixAndEveryCorruptedByteIsRefusedAndChangesNothing) {
             }
         }
     EXPECT_GT(refused, 0);
+}
+
+// fuzz_restore's first campaign found a snapshot whose sleeping body was listed in no
+// island: waking its island left it asleep, and the pair search went round forever.
+TEST(Snapshots, FuzzTimeout_ASleeperMissingFromItsIslandIsRefused) {
+    // Two boxes asleep on floors far apart: two islands of one body each, saved as
+    // 'I', 2 islands, [1 body: slot 1], [1 body: slot 3], no free island, then 'C'.
+    World world(WorldDef{.gravity = {0, 600}});
+    for (float x : {0.0f, 1000.0f}) {
+        world.createBody({.type = BodyType::Static, .x = x, .y = 10, .hw = 50, .hh = 10});
+        world.createBody({.x = x, .y = -5, .hw = 5, .hh = 5});
+    }
+    for (int step = 0; step < 240; ++step)
+        world.step(kDt);
+    ASSERT_FALSE(world.isAwake(world.bodies()[1]));
+    ASSERT_FALSE(world.isAwake(world.bodies()[3]));
+    const Bytes saved = world.snapshot();
+    const std::vector<int> islands{'I', 2, 1, -1, 1, -1, 0, 'C'};
+    std::size_t at = 32;
+    auto matches = [&](std::size_t k) {
+        for (std::size_t i = 0; i < islands.size(); ++i)
+            if (islands[i] >= 0 && std::to_integer<int>(saved[k + i]) != islands[i])
+                return false;
+        return true;
+    };
+    while (at + islands.size() <= saved.size() && !matches(at))
+        ++at;
+    ASSERT_LE(at + islands.size(), saved.size()) << "the islands' section not found";
+    const std::byte first = saved[at + 3], second = saved[at + 5];
+    ASSERT_NE(first, second);
+
+    Bytes swapped = saved; // each body listed in the other's island
+    swapped[at + 3] = second;
+    swapped[at + 5] = first;
+    Bytes missing = saved; // one body listed twice, the other in no island
+    missing[at + 5] = first;
+    for (const Bytes& bad : {withChecksum(swapped), withChecksum(missing)}) {
+        World target = smallWorld();
+        const Bytes before = target.snapshot();
+        EXPECT_EQ(refusalOf(target, bad), "restore: the snapshot is corrupted: an island's bodies");
+        EXPECT_EQ(target.snapshot(), before);
+    }
+    World again = smallWorld();
+    EXPECT_EQ(refusalOf(again, withChecksum(saved)), "");
 }
 
 // --- Sizes ----------------------------------------------------------------------------------

@@ -17,8 +17,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <iterator>
 #include <string>
+#include <vector>
 
 namespace jostle::snapshot {
 
@@ -179,17 +181,26 @@ template <class Ar> void islands(Ar& ar, WorldState& w) {
     ar.count(count, 1);
     if constexpr (Ar::kReading)
         w.islands.resize(count);
-    for (std::vector<std::uint32_t>& island : w.islands)
-        slotList(ar, island, static_cast<std::uint32_t>(w.slots.size()), [&](std::uint32_t slot) {
-            ar.check(w.slots[slot].alive && w.slots[slot].asleep, "an island's bodies");
-        });
+    // Each sleeping body is listed once, in the island it names: waking an island must
+    // wake every body that names it (the pair search goes round until nobody sleeps in
+    // its way).
+    std::vector<std::uint8_t> listed(Ar::kReading ? w.slots.size() : 0);
+    for (std::uint32_t i = 0; i < count; ++i)
+        slotList(ar, w.islands[i], static_cast<std::uint32_t>(w.slots.size()),
+                 [&](std::uint32_t slot) {
+                     const Body& body = w.slots[slot];
+                     ar.check(body.alive && body.asleep && body.island == i && !listed[slot],
+                              "an island's bodies");
+                     listed[slot] = 1;
+                 });
+    std::vector<std::uint8_t> free(Ar::kReading ? count : 0);
     slotList(ar, w.freeIslands, count, [&](std::uint32_t island) {
-        ar.check(w.islands[island].empty(), "the free islands");
+        ar.check(w.islands[island].empty() && !free[island], "the free islands");
+        free[island] = 1;
     });
     if constexpr (Ar::kReading)
         for (BodyId id : w.order.live())
-            ar.check(!w.slots[id.index].asleep || w.slots[id.index].island < count,
-                     "a sleeping body's island");
+            ar.check(!w.slots[id.index].asleep || listed[id.index], "a sleeping body's island");
 }
 
 } // namespace
