@@ -58,6 +58,11 @@ Scene parseScene(std::string_view json);
 /// the path (also when the file cannot be read, or is too large).
 Scene loadScene(const std::string& path);
 
+/// A body's definition as a scene file's body object, `{"type": "dynamic", "x": 0, ...}`:
+/// every field a file holds (all but userData), mass or density as the body uses them (mass
+/// if it is > 0, else density). Read back in a scene's "bodies", it gives `def` again.
+std::string bodyToJson(const BodyDef& def);
+
 /// Creates the scene's bodies in `world`, in file order; returns their handles.
 std::vector<BodyId> addBodies(World& world, const Scene& scene);
 

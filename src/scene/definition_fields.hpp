@@ -87,6 +87,38 @@ void readField(Def& def, const F& field, const Json& value, const std::string& p
         field.member);
 }
 
+// The same values written as a file holds them.
+inline Json fileValue(BodyType type) {
+    return toString(type);
+}
+inline Json fileValue(Vec2 v) {
+    return Json::array({v.x, v.y});
+}
+inline Json fileValue(Solver solver) {
+    return toString(solver);
+}
+inline Json fileValue(FrictionMix mix) {
+    return toString(mix);
+}
+template <class T>
+requires std::is_arithmetic_v<T>
+inline Json fileValue(T value) {
+    return value;
+}
+
+/// Writes each field of `def` that a file can give, by its name, as a file holds it.
+template <class Def, class F, std::size_t N> Json fileFields(const Def& def, const F (&fields)[N]) {
+    Json out = Json::object();
+    for (const F& field : fields)
+        std::visit(
+            [&](auto member) {
+                if constexpr (requires { fileValue(def.*member); })
+                    out[field.property->name] = fileValue(def.*member);
+            },
+            field.member);
+    return out;
+}
+
 constexpr std::size_t kNone = std::numeric_limits<std::size_t>::max();
 
 /// The index in `fields` of the field a file calls `name`, or kNone.

@@ -1,7 +1,8 @@
 // Scene files: JSON text in, a checked jostle::Scene out (docs/scene-format.md); scenes
-// added to worlds. The reader is scene_reader.cpp.
+// added to worlds; a body written back. The reader is scene_reader.cpp.
 #include "jostle/scene.hpp"
 
+#include "definition_fields.hpp"
 #include "json.hpp"
 #include "model_rules.hpp"
 #include "scene_reader.hpp"
@@ -52,6 +53,12 @@ Scene loadScene(const std::string& path) {
     } catch (const std::bad_alloc&) {
         throw SceneError(path + ": cannot load: out of memory");
     }
+}
+
+std::string bodyToJson(const BodyDef& def) {
+    json::Json fields = scene_file::fileFields(def, properties::kBodyFields);
+    fields.erase(def.mass > 0.0f ? properties::kDensity.name : properties::kMass.name);
+    return fields.dump();
 }
 
 std::vector<BodyId> addBodies(World& world, const Scene& scene) {

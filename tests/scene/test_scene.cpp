@@ -27,6 +27,7 @@ using test_support::sampleNeeds;
 using test_support::sampleOf;
 using test_support::valueOf;
 using ::testing::HasSubstr;
+using ::testing::Not;
 using ::testing::StartsWith;
 
 /// The message of the SceneError that parsing `json` throws ("" if it throws none).
@@ -830,6 +831,31 @@ TEST(SceneProperties, EveryBodyPropertyAFileCanHoldIsRead) {
         const Scene parsed = parseScene(scene);
         EXPECT_TRUE(valueOf(parsed.bodies.at(0).def, field) == sample) << name;
     }
+}
+
+TEST(SceneProperties, BodyToJsonWritesEveryPropertyAFileCanHoldAndReadsBackTheSame) {
+    for (const auto& field : properties::kBodyFields) {
+        const properties::Value sample = sampleOf(*field.property);
+        if (std::holds_alternative<void*>(sample))
+            continue;
+        BodyDef def{.hw = 1, .hh = 1};
+        test_support::setValue(def, field, sample);
+        for (const auto& [property, value] : sampleNeeds(*field.property))
+            test_support::setValue(def, *properties::find(properties::kBodyFields, *property),
+                                   value);
+        const std::string json = bodyToJson(def);
+        const Scene parsed = parseScene(withBodies(json));
+        for (const auto& each : properties::kBodyFields) {
+            if (std::holds_alternative<void*>(sampleOf(*each.property)))
+                continue;
+            EXPECT_TRUE(valueOf(parsed.bodies.at(0).def, each) == valueOf(def, each))
+                << field.property->name << ": " << each.property->name << " in " << json;
+        }
+    }
+    // A dense body has density and no mass; a body of a given mass, mass and no density.
+    EXPECT_THAT(bodyToJson({.hw = 1, .hh = 1, .density = 2}), HasSubstr("\"density\":2"));
+    EXPECT_THAT(bodyToJson({.hw = 1, .hh = 1, .density = 2}), Not(HasSubstr("mass")));
+    EXPECT_THAT(bodyToJson({.hw = 1, .hh = 1, .mass = 3}), Not(HasSubstr("density")));
 }
 
 TEST(SceneProperties, EveryTileMapPropertyAFileCanHoldIsRead) {

@@ -324,6 +324,18 @@ class JostleWorld {
                        wallLeft: bytes[out + 18] !== 0, wallRight: bytes[out + 19] !== 0}};
   }
 
+  /// A body's definition as a scene file's body object: its type, centre, size,
+  /// velocity and every setting as it is now ({type, x, y, hw, hh, vx, vy, bounce, ...};
+  /// mass or density, the one in use), ready to change and give to createBody.
+  bodyDef(body) {
+    const fn = "bodyDef";
+    JostleArgs.body(fn, body);
+    const world = this.live(fn), j = this.jostle;
+    const text = j.module._jostle_web_body_def(world, this.handle(fn, body));
+    j.check(fn, text !== 0);
+    return JSON.parse(j.text(text));
+  }
+
   setVelocity(body, vx, vy) { this.withBody("setVelocity", "_jostle_body_set_velocity", body, {vx, vy}); }
   setPosition(body, x, y) { this.withBody("setPosition", "_jostle_body_set_position", body, {x, y}); }
   applyImpulse(body, ix, iy) { this.withBody("applyImpulse", "_jostle_body_apply_impulse", body, {ix, iy}); }

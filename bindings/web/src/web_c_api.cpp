@@ -145,6 +145,19 @@ EMSCRIPTEN_KEEPALIVE const jostle_body_def* jostle_web_read_body(const jostle_wo
     });
 }
 
+/// A body's definition (jostle_body_get_def) as a scene file's body object (bodyToJson),
+/// kept by the module until the next call; or NULL, jostle_body_get_def's message recorded.
+EMSCRIPTEN_KEEPALIVE const char* jostle_web_body_def(const jostle_world* world, jostle_body_id id) {
+    static std::string text;
+    const jostle_body_def c = jostle_body_get_def(world, id);
+    if (c.internal_cookie != kCookie) // misuse, reported by jostle_body_get_def
+        return nullptr;
+    return guard<const char*>(__func__, nullptr, [&] {
+        text = bodyToJson(fromC<BodyDef>(c, properties::kBodyFields));
+        return text.c_str();
+    });
+}
+
 /// jostle_last_error() in JavaScript's notation (src/notation.hpp): vectors as arrays,
 /// [0, -1]; a definition's field as the object holds it, character: true. The same words.
 EMSCRIPTEN_KEEPALIVE const char* jostle_web_last_error() {
