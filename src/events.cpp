@@ -96,7 +96,7 @@ void recordSensor(WorldState& world, std::uint32_t sensor, std::uint32_t visitor
     world.events.sensorsNow.push_back({world.refOf(sensor), world.refOf(visitor), {}, 0.0f});
 }
 
-void StepEvents::beginStep(const WorldState& world) {
+void StepEvents::clearStepLists() {
     begins.clear();
     ends.clear();
     sensorBegins.clear();
@@ -105,6 +105,10 @@ void StepEvents::beginStep(const WorldState& world) {
     crushEnds.clear();
     contactsNow.clear();
     sensorsNow.clear();
+}
+
+void StepEvents::beginStep(const WorldState& world) {
+    clearStepLists();
     touching.resize(world.slots.size(), 0);
 
     // "Down" is where gravity pulls; with none, the screen's down (y grows downward).
@@ -178,16 +182,9 @@ void StepEvents::indexTouches() const {
 }
 
 void StepEvents::clear() {
-    begins.clear();
-    ends.clear();
-    sensorBegins.clear();
-    sensorEnds.clear();
-    crushBegins.clear();
-    crushEnds.clear();
+    clearStepLists();
     crushing.clear();
     touching.clear();
-    contactsNow.clear();
-    sensorsNow.clear();
     contactsBefore_.clear();
     sensorsBefore_.clear();
     destroyedSincePublish = false;

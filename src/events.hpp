@@ -75,6 +75,8 @@ struct StepEvents {
     }
 
 private:
+    /// Empties the outputs and this step's lists (beginStep and clear).
+    void clearStepLists();
     friend struct snapshot::Access; // saves and restores the last step's records
     std::vector<TouchRecord> contactsBefore_, sensorsBefore_;
     std::vector<TouchRecord> scratch_;
