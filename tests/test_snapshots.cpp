@@ -4,6 +4,7 @@
 #include "busy_worlds.hpp"
 #include "jostle/tilemap.hpp"
 #include "jostle/world.hpp"
+#include "snapshot/access.hpp"
 #include "snapshot/xxhash64.hpp"
 
 #include <gtest/gtest.h>
@@ -409,6 +410,29 @@ TEST(Snapshots, FuzzTimeout_ASleeperMissingFromItsIslandIsRefused) {
     }
     World again = smallWorld();
     EXPECT_EQ(refusalOf(again, withChecksum(saved)), "");
+}
+
+/// What reading a tile map's list of bodies from `bytes` refuses ("" if nothing).
+std::string listRefusal(const std::vector<std::uint8_t>& bytes) {
+    ListedBodies list;
+    snapshot::Reader reader(bytes);
+    try {
+        snapshot::Access::listedBodies(reader, list, 1, 10);
+    } catch (const snapshot::Refused& refused) {
+        return refused.what;
+    }
+    return "";
+}
+
+// fuzz_restore's second campaign: a map's list of bodies claimed 2^32 - 1 tickets, and
+// the reader made room for them (16 GB) before reading any.
+TEST(Snapshots, FuzzOutOfMemory_TicketsBeyondTheBytesThatFollowAreRefused) {
+    // No bodies; tickets 0xFFFFFFFF (LEB128); no free tickets.
+    EXPECT_EQ(listRefusal({0, 0xFF, 0xFF, 0xFF, 0xFF, 0x0F, 0}), "a tile map's bodies");
+    // Every ticket must be a body's or free: two tickets, one listed free.
+    EXPECT_EQ(listRefusal({0, 2, 1, 0}), "a tile map's free tickets");
+    EXPECT_EQ(listRefusal({0, 2, 2, 0, 0}), "a tile map's free tickets"); // free twice
+    EXPECT_EQ(listRefusal({0, 2, 2, 1, 0}), "");
 }
 
 // --- Sizes ----------------------------------------------------------------------------------

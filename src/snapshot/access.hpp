@@ -117,7 +117,8 @@ struct Access {
         std::uint32_t tickets = static_cast<std::uint32_t>(list.positions_.size());
         ar.var(tickets);
         if constexpr (Ar::kReading) {
-            ar.check(count <= tickets, "a tile map's bodies");
+            // Each ticket is a body's or free, and each free one takes a byte of its list.
+            ar.check(count <= tickets && tickets - count <= ar.left(), "a tile map's bodies");
             list.entries_.resize(count);
             list.tickets_.resize(count);
             list.positions_.assign(tickets, UINT32_MAX);
@@ -135,7 +136,13 @@ struct Access {
         }
         slotList(ar, list.freeTickets_, tickets, [&](std::uint32_t ticket) {
             ar.check(list.positions_[ticket] == UINT32_MAX, "a tile map's free tickets");
+            list.positions_[ticket] = UINT32_MAX - 1; // listed: once only
         });
+        if constexpr (Ar::kReading) {
+            ar.check(tickets == count + list.freeTickets_.size(), "a tile map's free tickets");
+            for (std::uint32_t ticket : list.freeTickets_)
+                list.positions_[ticket] = UINT32_MAX;
+        }
     }
 };
 

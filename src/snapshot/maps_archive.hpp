@@ -15,8 +15,8 @@
 
 namespace jostle::snapshot {
 
-/// The most tiles a map in a snapshot may have: what a reader allocates for a map is
-/// bounded by it (2^26, a map of 8,192 × 8,192).
+/// The most tiles the maps of a snapshot may have together: what a reader allocates for
+/// maps is bounded by it (2^26, one map of 8,192 × 8,192).
 inline constexpr std::uint64_t kMaxSnapshotTiles = std::uint64_t{1} << 26;
 
 /// `items` as runs of equal values: the count, then (value, run length) pairs.
@@ -54,8 +54,10 @@ template <class Ar> void whole(Ar& ar, int& v, int limit) {
     v = static_cast<int>(u);
 }
 
+/// One live map; `tilesLeft`: how many tiles the maps read after the last may still have.
 template <class Ar>
-void tileMap(Ar& ar, TileMapData& map, std::uint32_t serial, std::uint32_t slots) {
+void tileMap(Ar& ar, TileMapData& map, std::uint32_t serial, std::uint32_t slots,
+             std::uint64_t& tilesLeft) {
     for (const properties::TileMapField& field : properties::kTileMapFields)
         std::visit([&](auto member) { value(ar, map.settings.*member); }, field.member);
     if constexpr (Ar::kReading) {
@@ -67,7 +69,8 @@ void tileMap(Ar& ar, TileMapData& map, std::uint32_t serial, std::uint32_t slots
     whole(ar, map.columns, 1 << 30);
     whole(ar, map.rows, 1 << 30);
     const std::uint64_t tiles = std::uint64_t(map.columns) * std::uint64_t(map.rows);
-    ar.check(tiles >= 1 && tiles <= kMaxSnapshotTiles, "a tile map's size");
+    ar.check(tiles >= 1 && tiles <= tilesLeft, "a tile map's size");
+    tilesLeft -= tiles;
     const auto tileCount = static_cast<std::size_t>(tiles); // at most kMaxSnapshotTiles
     runs(ar, map.tiles, tileCount, [&](char& tile) {
         std::uint8_t byte = static_cast<std::uint8_t>(tile);
@@ -138,6 +141,7 @@ template <class Ar> void tileMaps(Ar& ar, WorldState& w) {
     ar.count(count, 1);
     if constexpr (Ar::kReading)
         maps.maps.resize(count);
+    std::uint64_t tilesLeft = kMaxSnapshotTiles;
     for (TileMapData& map : maps.maps) {
         std::uint64_t word = std::uint64_t{map.generation} << 1 | (map.alive ? 1 : 0);
         ar.var(word);
@@ -148,7 +152,7 @@ template <class Ar> void tileMaps(Ar& ar, WorldState& w) {
         }
         if (map.alive) {
             std::lock_guard<std::mutex> lock(maps.listLock);
-            tileMap(ar, map, w.serial, slots);
+            tileMap(ar, map, w.serial, slots, tilesLeft);
         }
     }
     slotList(ar, maps.freeMaps, count,
