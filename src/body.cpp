@@ -62,10 +62,12 @@ bool isValidSlope(Vec2 corner) {
 
 std::optional<FieldError> checkBodyDef(const BodyDef& def) {
     using namespace properties;
-    if (auto problem = formProblem(def, kBodyFields))
-        return problem;
-    if (auto problem = ruleProblem(def, kBodyFields))
-        return problem;
+    if (!allPass<kBodyFields>(def)) {
+        if (auto problem = formProblem(def, kBodyFields))
+            return problem;
+        if (auto problem = ruleProblem(def, kBodyFields))
+            return problem;
+    }
     if (def.type == BodyType::Static && (def.vx != 0.0f || def.vy != 0.0f))
         return FieldError{def.vx != 0.0f ? "vx" : "vy",
                           "a static body cannot move (make it kinematic)"};

@@ -357,6 +357,33 @@ std::optional<FieldError> ruleProblem(const Def& def, const F (&fields)[N]) {
     return std::nullopt;
 }
 
+/// True if value `I` of `def` by table `Fields` has a form jostle holds and passes its rule.
+/// The table is a constant, so each row's member and rule are known where this is compiled.
+template <const auto& Fields, std::size_t I, class Def> bool passes(const Def& def) {
+    constexpr auto member = std::get<Fields[I].member.index()>(Fields[I].member);
+    constexpr const Property& property = *Fields[I].property;
+    const auto value = def.*member;
+    if (formProblem(value) != nullptr)
+        return false;
+    if constexpr (std::is_same_v<decltype(value), const float> && property.rule != Rule::Interval) {
+        constexpr std::array<NumberCheck, kMaxSteps> steps = stepsOf(property.rule);
+        for (NumberCheck check : steps) // known here: each call is inlined
+            if (check != nullptr && check(value) != nullptr)
+                return false;
+        return true;
+    } else {
+        return problemOf(property, value) == nullptr;
+    }
+}
+
+/// True if formProblem and ruleProblem find nothing in `def`: the quick test of a
+/// definition, row after row with no look-ups, before the walks that say what fails first.
+template <const auto& Fields, class Def> bool allPass(const Def& def) {
+    return [&]<std::size_t... I>(std::index_sequence<I...>) {
+        return (passes<Fields, I>(def) && ...);
+    }(std::make_index_sequence<std::size(Fields)>{});
+}
+
 /// True if every field of `defaults` (a default-made Def) holds its property's default.
 template <class Def, class F, std::size_t N>
 constexpr bool defaultsAgree(const Def& defaults, const F (&fields)[N]) {

@@ -160,6 +160,10 @@ public:
         v = b != 0;
     }
     template <class T> void var(T& value) {
+        if (at_ != end_ && *at_ < 0x80) { // most numbers: one byte
+            value = static_cast<T>(*at_++);
+            return;
+        }
         std::uint64_t v = 0;
         for (int shift = 0;; shift += 7) {
             check(shift < 64, "a number is longer than 10 bytes");
@@ -180,8 +184,8 @@ public:
     }
     template <std::size_t Bound, class Fill> void record(Fill&& fill) { fill(*this); }
     void check(bool ok, const char* what) {
-        if (!ok)
-            throw Refused{what};
+        if (!ok) [[unlikely]]
+            refuse(what);
     }
     template <class Describe> void checkOr(bool ok, Describe&& describe) {
         if (!ok)
@@ -190,6 +194,9 @@ public:
     std::size_t left() const { return static_cast<std::size_t>(end_ - at_); }
 
 private:
+    [[noreturn]] [[gnu::cold]] [[gnu::noinline]] static void refuse(const char* what) {
+        throw Refused{what};
+    }
     std::uint64_t fixed(int n) {
         check(left() >= static_cast<std::size_t>(n), "truncated");
         std::uint64_t v = 0;
