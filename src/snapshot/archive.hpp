@@ -17,6 +17,7 @@
 #include <span>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 
 namespace jostle::snapshot {
 
@@ -26,10 +27,23 @@ struct Refused {
 };
 
 // --- Sinks: where a Writer's bytes go -----------------------------------------------------
+//
+// A sink takes bytes one at a time (put), and gives a record room for `n` bytes at once
+// (room(n): where to write them, then advance(k) for the k written), so that the loops over
+// many small records (bodies, contacts) write straight into their place.
+
+/// Straight into memory that has room: a record's bytes.
+struct PointerSink {
+    std::uint8_t* at;
+    void put(std::uint8_t byte) { *at++ = byte; }
+};
 
 struct CountingSink {
     std::size_t size = 0;
-    void put(const std::uint8_t*, std::size_t n) { size += n; }
+    std::uint8_t scratch[256];
+    void put(std::uint8_t) { ++size; }
+    std::uint8_t* room(std::size_t) { return scratch; }
+    void advance(std::size_t n) { size += n; }
 };
 
 /// Into the caller's buffer, as far as it goes: past its end, nothing more is written and
@@ -38,45 +52,45 @@ struct BoundedSink {
     std::uint8_t* at;
     std::uint8_t* end;
     bool overflowed = false;
-    void put(const std::uint8_t* bytes, std::size_t n) {
-        if (overflowed || static_cast<std::size_t>(end - at) < n) {
+    void put(std::uint8_t byte) {
+        if (at == end) {
             overflowed = true;
             return;
         }
-        std::memcpy(at, bytes, n);
-        at += n;
+        *at++ = byte;
     }
+    /// Null near the end: the record then goes byte by byte, each put checked.
+    std::uint8_t* room(std::size_t n) {
+        return static_cast<std::size_t>(end - at) >= n ? at : nullptr;
+    }
+    void advance(std::size_t n) { at += n; }
 };
 
 /// Into XXH64, a chunk at a time (hashing value by value would cost more than writing).
 struct HashingSink {
     XxHash64 hash;
-    std::uint8_t chunk[1024];
+    std::uint8_t chunk[4096];
     std::size_t used = 0;
-    void put(const std::uint8_t* bytes, std::size_t n) {
-        if (used + n > sizeof chunk) {
-            hash.update(chunk, used);
-            used = 0;
-        }
-        std::memcpy(chunk + used, bytes, n); // n is at most 10: one value
-        used += n;
+    void put(std::uint8_t byte) {
+        if (used == sizeof chunk)
+            flush();
+        chunk[used++] = byte;
     }
+    std::uint8_t* room(std::size_t n) {
+        if (used + n > sizeof chunk)
+            flush();
+        return chunk + used; // n is a record's bound, far below the chunk's size
+    }
+    void advance(std::size_t n) { used += n; }
     std::uint64_t digest() {
-        hash.update(chunk, used);
-        used = 0;
+        flush();
         return hash.digest();
     }
-};
 
-/// A record's bytes on their way to the sink, in the writer's own memory (Writer::record).
-template <std::size_t Bound> struct RecordSink {
-    std::uint8_t bytes[Bound];
-    std::size_t size = 0;
-    void put(const std::uint8_t* from, std::size_t n) {
-        if (size + n > Bound) // a record's bound is its longest encoding: never
-            throw std::logic_error("snapshot: a record is longer than its bound");
-        std::memcpy(bytes + size, from, n);
-        size += n;
+private:
+    void flush() {
+        hash.update(chunk, used);
+        used = 0;
     }
 };
 
@@ -87,7 +101,7 @@ public:
     static constexpr bool kReading = false;
     explicit Writer(Sink& sink) : sink_(sink) {}
 
-    void u8(const std::uint8_t& v) { sink_.put(&v, 1); }
+    void u8(const std::uint8_t& v) { sink_.put(v); }
     void u32(const std::uint32_t& v) { fixed(v, 4); }
     void u64(const std::uint64_t& v) { fixed(v, 8); }
     void f32(const float& v) { u32(std::bit_cast<std::uint32_t>(v)); }
@@ -98,32 +112,31 @@ public:
     void flag(const bool& v) { u8(static_cast<std::uint8_t>(v ? 1 : 0)); }
     template <class T> void var(const T& value) {
         std::uint64_t v = value;
-        if (v < 0x80) { // most numbers: one byte
-            const auto byte = static_cast<std::uint8_t>(v);
-            sink_.put(&byte, 1);
-            return;
-        }
-        std::uint8_t bytes[10];
-        std::size_t n = 0;
-        do {
-            bytes[n] = static_cast<std::uint8_t>(v & 0x7F);
+        while (v >= 0x80) {
+            sink_.put(static_cast<std::uint8_t>(v | 0x80));
             v >>= 7;
-            if (v != 0)
-                bytes[n] |= 0x80;
-            ++n;
-        } while (v != 0);
-        sink_.put(bytes, n);
+        }
+        sink_.put(static_cast<std::uint8_t>(v));
     }
     /// A count of what follows, each at least `minBytes` long (Reader checks there is room).
     template <class T> void count(const T& n, std::size_t /*minBytes*/) { var(n); }
-    /// Calls fill(ar) with a writer of its own, whose bytes (`Bound` at most) go to the sink
-    /// at once: the loops over many small records (bodies, contacts) write a record at a
-    /// time, not a value at a time. A reader calls fill(*this).
+    /// Calls fill(ar) with a writer straight into the sink's room for `Bound` bytes, the
+    /// record's longest encoding: the loops over many small records (bodies, contacts)
+    /// write without a check a byte. A reader calls fill(*this).
     template <std::size_t Bound, class Fill> void record(Fill&& fill) {
-        RecordSink<Bound> local;
-        Writer<RecordSink<Bound>> ar(local);
-        fill(ar);
-        sink_.put(local.bytes, local.size);
+        if constexpr (std::is_same_v<Sink, PointerSink>) {
+            fill(*this);
+        } else if (std::uint8_t* at = sink_.room(Bound)) {
+            PointerSink local{at};
+            Writer<PointerSink> ar(local);
+            fill(ar);
+            const auto written = static_cast<std::size_t>(local.at - at);
+            if (written > Bound) // a record's bound is its longest encoding: never
+                throw std::logic_error("snapshot: a record is longer than its bound");
+            sink_.advance(written);
+        } else {
+            fill(*this);
+        }
     }
     /// A condition the reader checks: a writer's values meet it by construction.
     void check(bool, const char*) {}
@@ -131,10 +144,8 @@ public:
 
 private:
     void fixed(std::uint64_t v, int n) {
-        std::uint8_t bytes[8];
         for (int i = 0; i < n; ++i)
-            bytes[i] = static_cast<std::uint8_t>(v >> (8 * i));
-        sink_.put(bytes, static_cast<std::size_t>(n));
+            sink_.put(static_cast<std::uint8_t>(v >> (8 * i)));
     }
     Sink& sink_;
 };
