@@ -3,6 +3,7 @@
 #include "events.hpp"
 
 #include "counting_sort.hpp"
+#include "ground.hpp"
 #include "record_touch.hpp"
 #include "world_state.hpp"
 
@@ -111,9 +112,7 @@ void StepEvents::beginStep(const WorldState& world) {
     clearStepLists();
     touching.resize(world.slots.size(), 0);
 
-    // "Down" is where gravity pulls; with none, the screen's down (y grows downward).
-    const Vec2 g = world.def.gravity;
-    down = g == Vec2{} ? Vec2{0.0f, 1.0f} : g * (1.0f / length(g));
+    down = downOf(world.def.gravity);
     // Awake dynamic bodies are evaluated afresh; the others keep their flags.
     for (BodyId id : world.order.live()) {
         const Body& body = world.slots[id.index];

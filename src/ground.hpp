@@ -7,6 +7,8 @@
 #include "handles.hpp"
 #include "jostle/body.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 
 namespace jostle {
@@ -20,6 +22,19 @@ enum TouchingBit : std::uint8_t {
     kWallLeft = 4,
     kWallRight = 8,
 };
+
+/// Where gravity pulls, as a unit vector; with no gravity, the screen's down (y grows
+/// downward). A gravity too weak for its length to be a float (1e-39) is scaled up first.
+inline Vec2 downOf(Vec2 gravity) {
+    if (gravity == Vec2{})
+        return {0.0f, 1.0f};
+    const float inverse = 1.0f / length(gravity);
+    if (std::isfinite(inverse))
+        return gravity * inverse;
+    const float largest = std::max(std::abs(gravity.x), std::abs(gravity.y));
+    const Vec2 scaled{gravity.x / largest, gravity.y / largest};
+    return scaled * (1.0f / length(scaled));
+}
 
 /// What a surface that pushes a body along `push` is to it, with gravity along `down`
 /// (both unit): a floor pushes against gravity, at least `floorCos` of it (Body::floorCos:

@@ -186,5 +186,24 @@ TEST(FloorAngle, ItIsCheckedAndKept) {
     EXPECT_EQ(checkBodyDef({.hw = 1, .hh = 1, .snapDown = -1})->field, "snapDown");
 }
 
+// fuzz_restore found a world whose gravity (1.5612e-39, 0) was too weak for its length to
+// be a float: "down" came out NaN, and so did a character snapping down to its floor.
+TEST(Down, FuzzNaN_GravityTooWeakForItsLengthStillPointsWhereItPulls) {
+    World world(WorldDef{.gravity = {1.5612e-39f, 0}}); // down is +x: the block is a floor
+    world.createBody({.type = BodyType::Static, .x = 2, .hw = 1, .hh = 5});
+    const BodyId player = world.createBody(
+        {.hw = 0.5f, .hh = 0.5f, .vx = 5, .character = true, .snapDown = 1, .radius = 0.25f});
+    bool floor = false, wall = false;
+    for (int step = 0; step < 30; ++step) {
+        world.step(kDt);
+        ASSERT_TRUE(std::isfinite(world.position(player).x)) << "step " << step;
+        ASSERT_TRUE(std::isfinite(world.position(player).y)) << "step " << step;
+        floor = floor || world.touching(player).floor;
+        wall = wall || world.touching(player).wallRight || world.touching(player).wallLeft;
+    }
+    EXPECT_TRUE(floor); // it ran into the block along +x, where gravity pulls: a floor
+    EXPECT_FALSE(wall);
+}
+
 } // namespace
 } // namespace jostle

@@ -50,6 +50,8 @@ template <class Ar> void worldSettings(Ar& ar, WorldState& w) {
         ar.checkOr(!problem, [&] { return "world." + problem->field + ": " + problem->problem; });
     }
     ar.vec(w.events.down);
+    ar.check(isFinite(w.events.down) && std::abs(dot(w.events.down, w.events.down) - 1.0f) <= 1e-5f,
+             "the world's down");
     ar.flag(w.events.destroyedSincePublish);
     ar.var(w.bodiesCreated);
 }
