@@ -2,7 +2,8 @@
 # Sets everything up, builds the benchmarks (Release, with Box2D 2.4.1 and Chipmunk 7 from
 # Debian) and runs one: jostle beside both peers on every benchmark scene, or with `load`
 # first, scene files of a million bodies loaded (jostle-bench-load), or with `snapshots`
-# first, the size and speed of snapshots (jostle-bench-snapshots). The other arguments
+# first, the size and speed of snapshots (jostle-bench-snapshots), or with `dispatch`
+# first, what handing a loop to the workers costs (jostle-bench-dispatch). The other arguments
 # go to the program (try --help, --quick, --scene pyramid_100, --markdown; load --bodies N).
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -13,6 +14,11 @@ if [[ "${1:-}" == snapshots ]]; then
   shift
   cmake --build build-bench -j"$(nproc)" --target jostle_bench_snapshots
   exec ./build-bench/jostle-bench-snapshots "$@"
+fi
+if [[ "${1:-}" == dispatch ]]; then
+  shift
+  cmake --build build-bench -j"$(nproc)" --target jostle_bench_dispatch
+  exec ./build-bench/jostle-bench-dispatch "$@"
 fi
 if [[ "${1:-}" == load ]]; then
   shift

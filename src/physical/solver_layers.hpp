@@ -14,6 +14,8 @@ struct StepContext;
 
 /// Contacts per block of a layer.
 inline constexpr std::uint32_t kContactsPerBlock = 256;
+/// The blocks a layer must hold on average for the passes to run in layers (measured).
+inline constexpr std::uint32_t kBlocksPerLayer = 8;
 
 struct SolverLayers {
     bool active = false;                ///< false: the passes run in contact order
