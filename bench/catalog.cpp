@@ -88,8 +88,7 @@ std::vector<Case> stressCases() {
     // boxes resting on one long floor and on 312 floor pieces: a floor that touches
     // thousands of bodies costs what its pieces cost.
     return {makeCase("pile", 10000, 0, 10), makeCase("pile", 50000, 0, 3),
-            makeCase("long_floor", 10000, 60, 240),
-            makeCase("tiled_floor", 10000, 60, 240)};
+            makeCase("long_floor", 10000, 60, 240), makeCase("tiled_floor", 10000, 60, 240)};
 }
 
 std::vector<Case> selectCases(std::string_view name, bool quick) {

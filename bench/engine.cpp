@@ -1,6 +1,10 @@
 // Dispatch from an engine's kind to its builder.
 #include "engine.hpp"
 
+#ifndef JOSTLE_BENCH_HAS_BOX2D3
+#define JOSTLE_BENCH_HAS_BOX2D3 0
+#endif
+
 namespace jostle::bench {
 
 std::string_view name(EngineKind kind) {
@@ -13,12 +17,19 @@ std::string_view name(EngineKind kind) {
         return "box2d";
     case EngineKind::Chipmunk:
         return "chipmunk";
+    case EngineKind::Box2D3:
+        return "box2d3";
     }
     return "?";
 }
 
 bool takesWorkers(EngineKind kind) {
-    return kind == EngineKind::Jostle || kind == EngineKind::JostleSleeping;
+    return kind == EngineKind::Jostle || kind == EngineKind::JostleSleeping ||
+           kind == EngineKind::Box2D3;
+}
+
+bool box2d3Built() {
+    return JOSTLE_BENCH_HAS_BOX2D3 != 0;
 }
 
 std::unique_ptr<Engine> makeEngine(EngineKind kind, const Scene& scene, int workers) {
@@ -31,6 +42,12 @@ std::unique_ptr<Engine> makeEngine(EngineKind kind, const Scene& scene, int work
         return makeBox2D(scene);
     case EngineKind::Chipmunk:
         return makeChipmunk(scene);
+    case EngineKind::Box2D3:
+#if JOSTLE_BENCH_HAS_BOX2D3
+        return makeBox2D3(scene, workers);
+#else
+        break;
+#endif
     }
     return nullptr;
 }

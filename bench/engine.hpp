@@ -1,6 +1,7 @@
 // bench/engine.hpp: one scene built in one physics engine, stepped and read back.
 //
-// The three engines (jostle, Box2D 2.4.1, Chipmunk 7) hide behind this small interface so
+// The engines (jostle, Box2D 2.4.1, Chipmunk 7, and Box2D v3 where it was built) hide
+// behind this small interface so
 // that the timing, the memory count and the quality figures are the same code for all of
 // them. The virtual call costs once per step, nothing per body.
 #pragma once
@@ -34,13 +35,18 @@ enum class EngineKind {
     JostleSleeping, ///< sleeping on: what a game gets by default
     Box2D,
     Chipmunk,
+    Box2D3, ///< Box2D v3, when CMake was given one (-DJOSTLE_BENCH_BOX2D3=<prefix>)
 };
 
-/// The name printed in tables and CSV files: "jostle", "jostle+sleep", "box2d", "chipmunk".
+/// Whether this build has Box2D v3 (box2d3Built: configured with JOSTLE_BENCH_BOX2D3).
+bool box2d3Built();
+
+/// The name printed in tables and CSV files: "jostle", "jostle+sleep", "box2d", "chipmunk",
+/// "box2d3".
 std::string_view name(EngineKind kind);
 
-/// Whether the engine steps on several threads when asked: jostle only (the peers' Debian
-/// builds step on one).
+/// Whether the engine steps on several threads when asked: jostle, and Box2D v3 with its
+/// own scheduler (the Debian builds of Box2D 2.4.1 and Chipmunk step on one).
 bool takesWorkers(EngineKind kind);
 
 /// Builds `scene` in the engine, on `workers` threads if it takesWorkers. An engine
@@ -51,10 +57,12 @@ std::unique_ptr<Engine> makeEngine(EngineKind kind, const Scene& scene, int work
 std::unique_ptr<Engine> makeJostle(const Scene& scene, bool sleeping, int workers);
 std::unique_ptr<Engine> makeBox2D(const Scene& scene);
 std::unique_ptr<Engine> makeChipmunk(const Scene& scene);
+std::unique_ptr<Engine> makeBox2D3(const Scene& scene, int workers); ///< box2d3Built() only
 
 /// How each engine is set up, one line each, for the top of the report.
 std::string describeJostle();
 std::string_view describeBox2D();
 std::string_view describeChipmunk();
+std::string_view describeBox2D3(); ///< box2d3Built() only
 
 } // namespace jostle::bench

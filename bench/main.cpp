@@ -54,8 +54,13 @@ struct Options {
 };
 
 const std::vector<EngineKind>& allEngines() {
-    static const std::vector<EngineKind> kinds{EngineKind::Jostle, EngineKind::Box2D,
-                                               EngineKind::Chipmunk, EngineKind::JostleSleeping};
+    static const std::vector<EngineKind> kinds = [] {
+        std::vector<EngineKind> all{EngineKind::Jostle, EngineKind::Box2D, EngineKind::Chipmunk,
+                                    EngineKind::JostleSleeping};
+        if (box2d3Built())
+            all.insert(all.begin() + 1, EngineKind::Box2D3);
+        return all;
+    }();
     return kinds;
 }
 
@@ -63,8 +68,11 @@ EngineKind engineFromName(const std::string& text) {
     for (const EngineKind kind : allEngines())
         if (name(kind) == text)
             return kind;
+    if (text == name(EngineKind::Box2D3))
+        throw std::invalid_argument("--engine: box2d3 is not in this build (configure with "
+                                    "-DJOSTLE_BENCH_BOX2D3=<an installed Box2D v3>)");
     throw std::invalid_argument("--engine: unknown engine \"" + text +
-                                "\" (jostle, jostle+sleep, box2d, chipmunk)");
+                                "\" (jostle, jostle+sleep, box2d, chipmunk, box2d3)");
 }
 
 std::vector<Case> chooseCases(const Options& options) {
@@ -89,8 +97,13 @@ std::vector<Case> chooseCases(const Options& options) {
 std::vector<EngineKind> chooseEngines(const Options& options) {
     if (options.engines.empty()) {
         // A series is for the plot of time against size: sleeping off only.
-        if (!options.series.empty())
-            return {EngineKind::Jostle, EngineKind::Box2D, EngineKind::Chipmunk};
+        if (!options.series.empty()) {
+            std::vector<EngineKind> kinds{EngineKind::Jostle, EngineKind::Box2D,
+                                          EngineKind::Chipmunk};
+            if (box2d3Built())
+                kinds.push_back(EngineKind::Box2D3);
+            return kinds;
+        }
         return allEngines();
     }
     std::vector<EngineKind> kinds;
@@ -118,8 +131,13 @@ void printIntroduction(std::FILE* out, double maxSeconds) {
                  maxSeconds);
     std::fprintf(out, "  %s\n", describeJostle().c_str());
     std::fprintf(out, "  %.*s\n", static_cast<int>(describeBox2D().size()), describeBox2D().data());
-    std::fprintf(out, "  %.*s\n\n", static_cast<int>(describeChipmunk().size()),
+    std::fprintf(out, "  %.*s\n", static_cast<int>(describeChipmunk().size()),
                  describeChipmunk().data());
+#if JOSTLE_BENCH_HAS_BOX2D3
+    std::fprintf(out, "  %.*s\n", static_cast<int>(describeBox2D3().size()),
+                 describeBox2D3().data());
+#endif
+    std::fprintf(out, "\n");
 }
 
 int runAll(const Options& options) {

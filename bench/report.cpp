@@ -36,9 +36,8 @@ std::string length(float value) {
 
 using Cells = std::vector<std::string>;
 
-const Cells kHeader{"scene",      "bodies",  "engine",    "steps",       "ms/step",
-                    "speed-up",   "jostle/peer", "bytes/body", "peak MB", "top drift",
-                    "max overlap", "escaped"};
+const Cells kHeader{"scene",       "bodies",     "engine",  "steps",     "ms/step",     "speed-up",
+                    "jostle/peer", "bytes/body", "peak MB", "top drift", "max overlap", "escaped"};
 
 Cells makeRow(std::span<const RunResult> all, const RunResult& r) {
     const std::optional<double> ratio = jostleRatio(all, r);
@@ -104,11 +103,13 @@ void printGrid(std::FILE* out, const Cells& header, const std::vector<Cells>& ro
 } // namespace
 
 std::optional<double> jostleRatio(std::span<const RunResult> all, const RunResult& result) {
-    if (result.engine != EngineKind::Box2D && result.engine != EngineKind::Chipmunk)
+    if (result.engine != EngineKind::Box2D && result.engine != EngineKind::Chipmunk &&
+        result.engine != EngineKind::Box2D3)
         return std::nullopt;
+    // A peer on N workers (Box2D v3) against jostle on as many.
     for (const RunResult& other : all)
         if (other.caseName == result.caseName && other.engine == EngineKind::Jostle &&
-            other.workers == 1 && result.msPerStep > 0.0)
+            other.workers == result.workers && result.msPerStep > 0.0)
             return other.msPerStep / result.msPerStep;
     return std::nullopt;
 }

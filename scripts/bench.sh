@@ -8,8 +8,11 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/setup.sh libbox2d-dev libchipmunk-dev
+# JOSTLE_BENCH_BOX2D3=<prefix> in the environment: Box2D v3 installed there joins as the
+# engine box2d3 (docs/benchmarks.md says how to build it; Debian has only 2.4.1).
 cmake -S . -B build-bench -DCMAKE_BUILD_TYPE=Release -DJOSTLE_WERROR=ON \
-  -DJOSTLE_BUILD_BENCH=ON -DJOSTLE_BUILD_TESTS=OFF >/dev/null
+  -DJOSTLE_BUILD_BENCH=ON -DJOSTLE_BUILD_TESTS=OFF \
+  -DJOSTLE_BENCH_BOX2D3="${JOSTLE_BENCH_BOX2D3:-}" >/dev/null
 if [[ "${1:-}" == snapshots ]]; then
   shift
   cmake --build build-bench -j"$(nproc)" --target jostle_bench_snapshots
