@@ -351,10 +351,16 @@ class JostleWorld {
     const fn = "snapshot";
     const world = this.live(fn);
     const j = this.jostle, m = j.module;
-    const size = m._jostle_world_snapshot_size(world);
-    j.check(fn, size !== 0);
-    const at = j.bufferOf(size);
-    j.check(fn, m._jostle_world_snapshot(world, at, size) === size);
+    // Written into the buffer as it is, in one pass; only when it is too small (the first
+    // snapshot, a world that grew) is the size asked for, which costs a second pass.
+    let at = j.bufferOf(1), size = m._jostle_world_snapshot(world, at, j.bufferSize);
+    if (size === 0) {
+      const needed = m._jostle_world_snapshot_size(world);
+      j.check(fn, needed !== 0);
+      at = j.bufferOf(needed);
+      size = m._jostle_world_snapshot(world, at, needed);
+      j.check(fn, size === needed);
+    }
     const bytes = m.HEAPU8.slice(at, at + size);
     this.numbering.set(bytes, this.numbers());
     return bytes;

@@ -1,0 +1,64 @@
+// snapshot_speed.js: what snapshots cost in WebAssembly (Node) beside the native build, on
+// the pile of bench/snapshots.cpp (1,000 boxes on a floor, 40 a row, friction 0.6, sleeping
+// off, stepped a second): the median of `runs` timings of snapshot(), restore(),
+// stateHash() and a step, through jostle.js as a game calls them, then the native
+// program's figures for the same pile. Not a test: docs/benchmarks.md#snapshots has them.
+//   node snapshot_speed.js <page dir> <jostle-bench-snapshots> [runs]
+"use strict";
+
+const {execFileSync} = require("node:child_process");
+const fs = require("node:fs");
+const path = require("node:path");
+
+function loadPageScripts(pageDir) {
+  const read = (file) => fs.readFileSync(path.join(pageDir, file), "utf8");
+  return new Function(`${read("jostle-web.js")}\n${read("jostle.js")}\nreturn Jostle;`)();
+}
+
+function medianMicroseconds(runs, work) {
+  const times = [];
+  for (let run = 0; run < runs; run++) {
+    const start = process.hrtime.bigint();
+    work();
+    times.push(Number(process.hrtime.bigint() - start) / 1000);
+  }
+  times.sort((a, b) => a - b);
+  return times[Math.floor(times.length / 2)];
+}
+
+async function main() {
+  const [pageDir, nativeTool, runsText = "50"] = process.argv.slice(2);
+  const runs = Number(runsText);
+  const Jostle = loadPageScripts(path.resolve(pageDir));
+  const jostle = await Jostle.load({wasmBinary: fs.readFileSync(path.join(pageDir, "jostle-web.wasm"))});
+  const bodies = [{type: "static", x: 0, y: 10, hw: 2000, hh: 10}];
+  for (let i = 0; i < 1000; i++)
+    bodies.push({x: -500 + 10 * (i % 40), y: -5 - 10 * Math.floor(i / 40), hw: 5, hh: 5, friction: 0.6});
+  const world = jostle.createWorld({gravity: [0, 600], sleeping: false, bodies});
+  for (let step = 0; step < 60; step++) world.step(1 / 60);
+  const saved = world.snapshot();
+  const web = {
+    bytes: saved.length,
+    save: medianMicroseconds(runs, () => world.snapshot()),
+    restore: medianMicroseconds(runs, () => world.restore(saved)),
+    hash: medianMicroseconds(runs, () => world.stateHash()),
+    step: medianMicroseconds(runs, () => { world.restore(saved); world.step(1 / 60); }) -
+          medianMicroseconds(runs, () => world.restore(saved)),
+  };
+  const native = execFileSync(nativeTool, ["--bodies", "1000", "--runs", String(runs)], {encoding: "utf8"})
+    .split("\n").find((line) => line.startsWith("| 1000 |")).split("|").map((cell) => cell.trim());
+  const [, , , bytes, , save, restore, hash, step] = native;
+  console.log("| 1,000 boxes | bytes | save µs | restore µs | stateHash µs | step µs |");
+  console.log("|---|---:|---:|---:|---:|---:|");
+  console.log(`| native | ${bytes} | ${save} | ${restore} | ${hash} | ${step} |`);
+  console.log(`| WebAssembly (Node ${process.versions.node}) | ${web.bytes} | ${web.save.toFixed(1)} | ` +
+              `${web.restore.toFixed(1)} | ${web.hash.toFixed(1)} | ${web.step.toFixed(1)} |`);
+  console.log(`| WebAssembly / native | | ${(web.save / save).toFixed(2)} | ${(web.restore / restore).toFixed(2)} | ` +
+              `${(web.hash / hash).toFixed(2)} | ${(web.step / step).toFixed(2)} |`);
+  world.destroy();
+}
+
+main().catch((error) => {
+  console.log(error.stack);
+  process.exit(1);
+});
