@@ -9,12 +9,22 @@
 #include "jostle/scene.hpp"
 #include "jostle/world.hpp"
 
+#include <cstddef>
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
 
 namespace jostle::bench {
+
+/// A snapshot's size and the medians of its save, restore and state hash.
+struct SnapshotFigures {
+    std::size_t bytes = 0;
+    double saveMicroseconds = 0.0;
+    double restoreMicroseconds = 0.0;
+    double hashMicroseconds = 0.0;
+};
 
 class Engine {
 public:
@@ -28,6 +38,9 @@ public:
 
     /// Where the last step's time went, stage by stage: jostle's alone (World::profile).
     virtual const StepProfile* profile() const { return nullptr; }
+
+    /// What a snapshot of the world as it is costs (docs/snapshots.md): jostle's alone.
+    virtual std::optional<SnapshotFigures> measureSnapshots(int /*runs*/) { return std::nullopt; }
 };
 
 enum class EngineKind {

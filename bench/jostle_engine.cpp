@@ -2,10 +2,27 @@
 // and the worker count.
 #include "engine.hpp"
 
+#include <algorithm>
+#include <chrono>
+#include <cstdint>
 #include <string>
+#include <vector>
 
 namespace jostle::bench {
 namespace {
+
+/// The median of `runs` timings of `work`, in microseconds.
+template <class Work> double medianMicroseconds(int runs, Work&& work) {
+    using Clock = std::chrono::steady_clock;
+    std::vector<double> times;
+    for (int run = 0; run < runs; ++run) {
+        const Clock::time_point start = Clock::now();
+        work();
+        times.push_back(std::chrono::duration<double, std::micro>(Clock::now() - start).count());
+    }
+    std::sort(times.begin(), times.end());
+    return times[times.size() / 2];
+}
 
 class JostleEngine final : public Engine {
 public:
@@ -18,6 +35,18 @@ public:
     void step(float dt) override { world_.step(dt); }
 
     const StepProfile* profile() const override { return &world_.profile(); }
+
+    std::optional<SnapshotFigures> measureSnapshots(int runs) override {
+        std::vector<std::byte> saved = world_.snapshot();
+        std::vector<std::byte> buffer(saved.size());
+        SnapshotFigures figures;
+        figures.bytes = saved.size();
+        figures.saveMicroseconds = medianMicroseconds(runs, [&] { world_.snapshot(buffer); });
+        figures.restoreMicroseconds = medianMicroseconds(runs, [&] { world_.restore(saved); });
+        figures.hashMicroseconds =
+            medianMicroseconds(runs, [&] { lastHash_ = world_.stateHash(); });
+        return figures;
+    }
 
     void positions(std::span<Vec2> out) const override {
         // No body is destroyed, so creation order is scene order.
@@ -34,6 +63,7 @@ private:
     }
 
     World world_;
+    std::uint64_t lastHash_ = 0; ///< the state hash last timed, kept so the call is made
 };
 
 } // namespace

@@ -7,6 +7,7 @@
 //     jostle-bench --markdown           the table for docs/benchmarks.md
 //     jostle-bench --workers 1,2,4      jostle on 1, 2 and 4 threads (default 1,2)
 //     jostle-bench --stages             and where jostle's steps spent their time
+//     jostle-bench --snapshots          and what a snapshot of each jostle world costs
 //     jostle-bench --lifecycle 1000000  creating and destroying a million bodies, timed
 //     jostle-bench --ramp-maps 300,1000 maps of 300 x 300 and 1000 x 1000 ramp tiles
 //                                       created, changed in the middle, destroyed, timed
@@ -47,6 +48,7 @@ struct Options {
     std::string csv;
     bool markdown = false;
     bool stages = false;
+    bool snapshots = false;
     bool list = false;
     int lifecycle = 0;
     std::vector<int> rampMaps;
@@ -140,6 +142,9 @@ void printIntroduction(std::FILE* out, double maxSeconds) {
     std::fprintf(out, "\n");
 }
 
+/// Timed runs of each snapshot measure (--snapshots): the median is printed.
+constexpr int kSnapshotRuns = 21;
+
 int runAll(const Options& options) {
     const std::vector<Case> cases = chooseCases(options);
     const std::vector<EngineKind> engines = chooseEngines(options);
@@ -157,7 +162,8 @@ int runAll(const Options& options) {
                 RunResult named{.engine = engine, .workers = workers};
                 std::fprintf(stderr, "%-18s %-16s ", c.name.c_str(), label(named).c_str());
                 std::fflush(stderr);
-                const RunLimits limits{c.warmup, c.steps, options.maxSeconds};
+                const RunLimits limits{c.warmup, c.steps, options.maxSeconds,
+                                       options.snapshots ? kSnapshotRuns : 0};
                 results.push_back(run(c, scene, engine, workers, limits));
                 std::fprintf(stderr, "%10.3f ms/step over %d steps\n", results.back().msPerStep,
                              results.back().measuredSteps);
@@ -179,6 +185,14 @@ int runAll(const Options& options) {
                        "(World::profile):\n\n",
                        stdout);
         printStages(stdout, results, options.markdown);
+    }
+    if (options.snapshots) {
+        std::fputc('\n', stdout);
+        if (!options.markdown)
+            std::printf("Snapshots of each world after its measured steps (docs/snapshots.md), "
+                        "medians of %d runs:\n\n",
+                        kSnapshotRuns);
+        printSnapshots(stdout, results, options.markdown);
     }
     if (!options.csv.empty() && !writeCsv(options.csv, results)) {
         std::fprintf(stderr, "jostle-bench: error: %s: cannot write\n", options.csv.c_str());
@@ -221,6 +235,9 @@ int main(int argc, char** argv) {
     app.add_option("--csv", options.csv, "Also write the results to this CSV file");
     app.add_flag("--markdown", options.markdown,
                  "Print only the table, as markdown (for docs/benchmarks.md)");
+    app.add_flag("--snapshots", options.snapshots,
+                 "Also time a snapshot of each jostle world after its measured steps: its "
+                 "bytes, save, restore and state hash (docs/snapshots.md)");
     app.add_flag("--stages", options.stages,
                  "Also print where jostle's steps spent their time, stage by stage "
                  "(World::profile)");

@@ -147,6 +147,29 @@ void printStages(std::FILE* out, std::span<const RunResult> results, bool markdo
     printGrid(out, header, rows, markdown);
 }
 
+void printSnapshots(std::FILE* out, std::span<const RunResult> results, bool markdown) {
+    const Cells header{"scene",   "bodies",     "engine",  "bytes",   "bytes/body",
+                       "save µs", "restore µs", "hash µs", "step µs", "save/step"};
+    std::vector<Cells> rows;
+    auto number = [](double value, int decimals) {
+        char text[32];
+        std::snprintf(text, sizeof text, "%.*f", decimals, value);
+        return std::string(text);
+    };
+    for (const RunResult& r : results) {
+        if (!r.snapshots)
+            continue;
+        const SnapshotFigures& s = *r.snapshots;
+        const double stepMicroseconds = r.msPerStep * 1000.0;
+        rows.push_back({r.caseName, std::to_string(r.bodies), label(r), std::to_string(s.bytes),
+                        number(double(s.bytes) / double(std::max(r.bodies, 1)), 0),
+                        number(s.saveMicroseconds, 0), number(s.restoreMicroseconds, 0),
+                        number(s.hashMicroseconds, 0), number(stepMicroseconds, 0),
+                        number(s.saveMicroseconds / std::max(stepMicroseconds, 1e-9), 2)});
+    }
+    printGrid(out, header, rows, markdown);
+}
+
 bool writeCsv(const std::string& path, std::span<const RunResult> results) {
     struct Closer {
         void operator()(std::FILE* file) const { std::fclose(file); }

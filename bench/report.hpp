@@ -24,6 +24,10 @@ void printTable(std::FILE* out, std::span<const RunResult> results, bool markdow
 /// stage of the step (World::profile), a row per result. Markdown: a GitHub table.
 void printStages(std::FILE* out, std::span<const RunResult> results, bool markdown);
 
+/// For the results that measured snapshots (jostle's, --snapshots): the bytes and the
+/// medians of save, restore and state hash, beside a step. Markdown: a GitHub table.
+void printSnapshots(std::FILE* out, std::span<const RunResult> results, bool markdown);
+
 /// Writes the results as CSV with a header row; false if the file cannot be written.
 bool writeCsv(const std::string& path, std::span<const RunResult> results);
 

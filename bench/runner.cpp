@@ -79,6 +79,8 @@ RunResult run(const Case& c, const Scene& scene, EngineKind engine, int workers,
 
     world->positions(positions);
     result.quality = shared::measureQuality(scene, positions);
+    if (limits.snapshotRuns > 0)
+        result.snapshots = world->measureSnapshots(limits.snapshotRuns);
     return result;
 }
 

@@ -17,6 +17,8 @@ struct RunLimits {
     /// measured): a slow engine at 100,000 bodies gets fewer measured steps, in the same
     /// run. Warm-up steps are never cut, so every engine is measured in the same state.
     double maxSeconds = 0.0;
+    /// After measuring, time snapshots of the world this many times (0: not at all).
+    int snapshotRuns = 0;
     static constexpr int kMinSteps = 10;
 };
 
@@ -38,6 +40,8 @@ struct RunResult {
     /// The mean time of each stage over the measured steps, for an engine that profiles
     /// its steps (jostle).
     std::optional<StepProfile> stages;
+    /// What a snapshot of the world after the measured steps costs (jostle's, if asked).
+    std::optional<SnapshotFigures> snapshots;
 };
 
 /// The stages of jostle's step profile, by name (jostle::kStepProfileFields).
