@@ -42,7 +42,7 @@ struct CountingSink {
     std::size_t size = 0;
     std::uint8_t scratch[256];
     void put(std::uint8_t) { ++size; }
-    std::uint8_t* room(std::size_t) { return scratch; }
+    std::uint8_t* room(std::size_t n) { return n <= sizeof scratch ? scratch : nullptr; }
     void advance(std::size_t n) { size += n; }
 };
 
@@ -77,9 +77,11 @@ struct HashingSink {
         chunk[used++] = byte;
     }
     std::uint8_t* room(std::size_t n) {
+        if (n > sizeof chunk)
+            return nullptr;
         if (used + n > sizeof chunk)
             flush();
-        return chunk + used; // n is a record's bound, far below the chunk's size
+        return chunk + used;
     }
     void advance(std::size_t n) { used += n; }
     std::uint64_t digest() {
