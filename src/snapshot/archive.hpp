@@ -17,7 +17,6 @@
 #include <span>
 #include <stdexcept>
 #include <string>
-#include <type_traits>
 
 namespace jostle::snapshot {
 
@@ -28,9 +27,10 @@ struct Refused {
 
 // --- Sinks: where a Writer's bytes go -----------------------------------------------------
 //
-// A sink takes bytes one at a time (put), and gives a record room for `n` bytes at once
-// (room(n): where to write them, then advance(k) for the k written), so that the loops over
-// many small records (bodies, contacts) write straight into their place.
+// A sink takes bytes one at a time (put). One that holds them in memory also gives a
+// record room for `n` bytes at once (room(n): where to write them, or null; then advance(k)
+// for the k written), so that the loops over many small records (bodies, contacts) write
+// straight into their place.
 
 /// Straight into memory that has room: a record's bytes.
 struct PointerSink {
@@ -40,10 +40,7 @@ struct PointerSink {
 
 struct CountingSink {
     std::size_t size = 0;
-    std::uint8_t scratch[256];
     void put(std::uint8_t) { ++size; }
-    std::uint8_t* room(std::size_t n) { return n <= sizeof scratch ? scratch : nullptr; }
-    void advance(std::size_t n) { size += n; }
 };
 
 /// Into the caller's buffer, as far as it goes: past its end, nothing more is written and
@@ -123,22 +120,23 @@ public:
     /// A count of what follows, each at least `minBytes` long (Reader checks there is room).
     template <class T> void count(const T& n, std::size_t /*minBytes*/) { var(n); }
     /// Calls fill(ar) with a writer straight into the sink's room for `Bound` bytes, the
-    /// record's longest encoding: the loops over many small records (bodies, contacts)
-    /// write without a check a byte. A reader calls fill(*this).
+    /// record's longest encoding, where the sink gives room: the loops over many small
+    /// records (bodies, contacts) write without a check a byte. Else, and for a reader,
+    /// fill(*this).
     template <std::size_t Bound, class Fill> void record(Fill&& fill) {
-        if constexpr (std::is_same_v<Sink, PointerSink>) {
-            fill(*this);
-        } else if (std::uint8_t* at = sink_.room(Bound)) {
-            PointerSink local{at};
-            Writer<PointerSink> ar(local);
-            fill(ar);
-            const auto written = static_cast<std::size_t>(local.at - at);
-            if (written > Bound) // a record's bound is its longest encoding: never
-                throw std::logic_error("snapshot: a record is longer than its bound");
-            sink_.advance(written);
-        } else {
-            fill(*this);
+        if constexpr (requires { sink_.room(Bound); }) {
+            if (std::uint8_t* at = sink_.room(Bound)) {
+                PointerSink local{at};
+                Writer<PointerSink> ar(local);
+                fill(ar);
+                const auto written = static_cast<std::size_t>(local.at - at);
+                if (written > Bound) // a record's bound is its longest encoding: never
+                    throw std::logic_error("snapshot: a record is longer than its bound");
+                sink_.advance(written);
+                return;
+            }
         }
+        fill(*this);
     }
     /// A condition the reader checks: a writer's values meet it by construction.
     void check(bool, const char*) {}
