@@ -134,15 +134,12 @@ struct Access {
                 list.positions_[ticket] = k;
             }
         }
+        MetOnce<Ar> free(tickets);
         slotList(ar, list.freeTickets_, tickets, [&](std::uint32_t ticket) {
-            ar.check(list.positions_[ticket] == UINT32_MAX, "a tile map's free tickets");
-            list.positions_[ticket] = UINT32_MAX - 1; // listed: once only
+            ar.check(list.positions_[ticket] == UINT32_MAX && free.first(ticket),
+                     "a tile map's free tickets");
         });
-        if constexpr (Ar::kReading) {
-            ar.check(tickets == count + list.freeTickets_.size(), "a tile map's free tickets");
-            for (std::uint32_t ticket : list.freeTickets_)
-                list.positions_[ticket] = UINT32_MAX;
-        }
+        ar.check(tickets == count + list.freeTickets_.size(), "a tile map's free tickets");
     }
 };
 

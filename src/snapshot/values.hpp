@@ -66,6 +66,25 @@ void sequence(Ar& ar, std::vector<T>& items, std::size_t minBytes, Each&& each) 
         each(item);
 }
 
+/// What a reader has met of the numbers below a limit, for lists in which each may stand
+/// once (free slots, a map's free tickets, an island's bodies); a writer keeps nothing and
+/// asks nothing.
+template <class Ar> class MetOnce {
+public:
+    explicit MetOnce(std::size_t limit) : met_(Ar::kReading ? limit : 0, 0) {}
+    /// True the first time `n` is met.
+    bool first(std::uint32_t n) {
+        if (met_[n] != 0)
+            return false;
+        met_[n] = 1;
+        return true;
+    }
+    bool met(std::uint32_t n) const { return met_[n] != 0; }
+
+private:
+    std::vector<std::uint8_t> met_;
+};
+
 /// A list of numbers below `limit` (slots, islands, tickets, pieces) in its order;
 /// `check(n)` is called on each number read.
 template <class Ar, class N, class Check>

@@ -76,13 +76,10 @@ template <class Ar> void slotTable(Ar& ar, WorldState& w) {
             ar.check(slot.generation != 0 && word >> 1 <= UINT32_MAX, "a slot's generation");
         }
     }
-    std::vector<std::uint8_t> listed;
-    if constexpr (Ar::kReading)
-        listed.assign(slotCount, 0);
+    MetOnce<Ar> free(slotCount);
     slotList(ar, w.freeSlots, slotCount, [&](std::uint32_t slot) {
-        ar.check(!w.slots[slot].alive && w.slots[slot].generation != UINT32_MAX && !listed[slot],
+        ar.check(!w.slots[slot].alive && w.slots[slot].generation != UINT32_MAX && free.first(slot),
                  "the free slots");
-        listed[slot] = 1;
     });
     slotList(ar, w.movingSlots, slotCount, [](std::uint32_t) {});
     std::uint32_t flags = static_cast<std::uint32_t>(w.events.touching.size());
@@ -122,9 +119,7 @@ template <class Ar> void bodies(Ar& ar, WorldState& w) {
     std::uint32_t count = static_cast<std::uint32_t>(live.size());
     ar.count(count, 4);
     std::uint64_t lastCreated = 0;
-    std::vector<std::uint8_t> seen; // reading: the slots read so far
-    if constexpr (Ar::kReading)
-        seen.assign(w.slots.size(), 0);
+    MetOnce<Ar> read(w.slots.size());
     for (std::uint32_t k = 0; k < count; ++k) {
         std::uint32_t slot = 0;
         if constexpr (!Ar::kReading)
@@ -132,8 +127,7 @@ template <class Ar> void bodies(Ar& ar, WorldState& w) {
         ar.var(slot);
         ar.check(slot < w.slots.size() && w.slots[slot].alive, "a body's slot");
         if constexpr (Ar::kReading) {
-            ar.check(!seen[slot], "a body's slot is listed twice");
-            seen[slot] = 1;
+            ar.check(read.first(slot), "a body's slot is listed twice");
             // The fields left out are the defaults.
             const DefaultPlaces& defaults = defaultPlaces();
             const std::uint32_t generation = w.slots[slot].generation;
@@ -186,23 +180,21 @@ template <class Ar> void islands(Ar& ar, WorldState& w) {
     // Each sleeping body is listed once, in the island it names: waking an island must
     // wake every body that names it (the pair search goes round until nobody sleeps in
     // its way).
-    std::vector<std::uint8_t> listed(Ar::kReading ? w.slots.size() : 0);
+    MetOnce<Ar> listed(w.slots.size());
     for (std::uint32_t i = 0; i < count; ++i)
         slotList(ar, w.islands[i], static_cast<std::uint32_t>(w.slots.size()),
                  [&](std::uint32_t slot) {
                      const Body& body = w.slots[slot];
-                     ar.check(body.alive && body.asleep && body.island == i && !listed[slot],
+                     ar.check(body.alive && body.asleep && body.island == i && listed.first(slot),
                               "an island's bodies");
-                     listed[slot] = 1;
                  });
-    std::vector<std::uint8_t> free(Ar::kReading ? count : 0);
+    MetOnce<Ar> free(count);
     slotList(ar, w.freeIslands, count, [&](std::uint32_t island) {
-        ar.check(w.islands[island].empty() && !free[island], "the free islands");
-        free[island] = 1;
+        ar.check(w.islands[island].empty() && free.first(island), "the free islands");
     });
     if constexpr (Ar::kReading)
         for (BodyId id : w.order.live())
-            ar.check(!w.slots[id.index].asleep || listed[id.index], "a sleeping body's island");
+            ar.check(!w.slots[id.index].asleep || listed.met(id.index), "a sleeping body's island");
 }
 
 } // namespace
