@@ -43,13 +43,19 @@ std::unique_ptr<Engine> makeEngine(EngineKind kind, const Scene& scene, int work
     case EngineKind::Chipmunk:
         return makeChipmunk(scene);
     case EngineKind::Box2D3:
-#if JOSTLE_BENCH_HAS_BOX2D3
         return makeBox2D3(scene, workers);
-#else
-        break;
-#endif
     }
     return nullptr;
 }
+
+#if !JOSTLE_BENCH_HAS_BOX2D3
+// Without Box2D v3 box2d3Built() is false, and the box2d3 engine is never chosen.
+std::unique_ptr<Engine> makeBox2D3(const Scene&, int) {
+    return nullptr;
+}
+std::string_view describeBox2D3() {
+    return {};
+}
+#endif
 
 } // namespace jostle::bench

@@ -70,12 +70,12 @@ std::unique_ptr<Engine> makeEngine(EngineKind kind, const Scene& scene, int work
 std::unique_ptr<Engine> makeJostle(const Scene& scene, bool sleeping, int workers);
 std::unique_ptr<Engine> makeBox2D(const Scene& scene);
 std::unique_ptr<Engine> makeChipmunk(const Scene& scene);
-std::unique_ptr<Engine> makeBox2D3(const Scene& scene, int workers); ///< box2d3Built() only
+std::unique_ptr<Engine> makeBox2D3(const Scene& scene, int workers); ///< null if not built
 
 /// How each engine is set up, one line each, for the top of the report.
 std::string describeJostle();
 std::string_view describeBox2D();
 std::string_view describeChipmunk();
-std::string_view describeBox2D3(); ///< box2d3Built() only
+std::string_view describeBox2D3(); ///< empty if not built
 
 } // namespace jostle::bench

@@ -1,28 +1,14 @@
 // The scene in jostle, exactly as the scene describes it, except for the sleeping switch
 // and the worker count.
 #include "engine.hpp"
+#include "timing.hpp"
 
-#include <algorithm>
-#include <chrono>
 #include <cstdint>
 #include <string>
 #include <vector>
 
 namespace jostle::bench {
 namespace {
-
-/// The median of `runs` timings of `work`, in microseconds.
-template <class Work> double medianMicroseconds(int runs, Work&& work) {
-    using Clock = std::chrono::steady_clock;
-    std::vector<double> times;
-    for (int run = 0; run < runs; ++run) {
-        const Clock::time_point start = Clock::now();
-        work();
-        times.push_back(std::chrono::duration<double, std::micro>(Clock::now() - start).count());
-    }
-    std::sort(times.begin(), times.end());
-    return times[times.size() / 2];
-}
 
 class JostleEngine final : public Engine {
 public:

@@ -100,10 +100,8 @@ std::vector<EngineKind> chooseEngines(const Options& options) {
     if (options.engines.empty()) {
         // A series is for the plot of time against size: sleeping off only.
         if (!options.series.empty()) {
-            std::vector<EngineKind> kinds{EngineKind::Jostle, EngineKind::Box2D,
-                                          EngineKind::Chipmunk};
-            if (box2d3Built())
-                kinds.push_back(EngineKind::Box2D3);
+            std::vector<EngineKind> kinds = allEngines();
+            std::erase(kinds, EngineKind::JostleSleeping);
             return kinds;
         }
         return allEngines();
@@ -135,10 +133,9 @@ void printIntroduction(std::FILE* out, double maxSeconds) {
     std::fprintf(out, "  %.*s\n", static_cast<int>(describeBox2D().size()), describeBox2D().data());
     std::fprintf(out, "  %.*s\n", static_cast<int>(describeChipmunk().size()),
                  describeChipmunk().data());
-#if JOSTLE_BENCH_HAS_BOX2D3
-    std::fprintf(out, "  %.*s\n", static_cast<int>(describeBox2D3().size()),
-                 describeBox2D3().data());
-#endif
+    if (box2d3Built())
+        std::fprintf(out, "  %.*s\n", static_cast<int>(describeBox2D3().size()),
+                     describeBox2D3().data());
     std::fprintf(out, "\n");
 }
 
@@ -178,22 +175,22 @@ int runAll(const Options& options) {
         printIntroduction(stdout, options.maxSeconds);
         printTable(stdout, results, false);
     }
-    if (options.stages) {
+    // A further table: a blank line, its title (not in markdown), the table.
+    auto section = [&](const std::string& title, auto print) {
         std::fputc('\n', stdout);
         if (!options.markdown)
-            std::fputs("Mean milliseconds per step in each stage of jostle's step "
-                       "(World::profile):\n\n",
-                       stdout);
-        printStages(stdout, results, options.markdown);
-    }
-    if (options.snapshots) {
-        std::fputc('\n', stdout);
-        if (!options.markdown)
-            std::printf("Snapshots of each world after its measured steps (docs/snapshots.md), "
-                        "medians of %d runs:\n\n",
-                        kSnapshotRuns);
-        printSnapshots(stdout, results, options.markdown);
-    }
+            std::fputs(title.c_str(), stdout);
+        print(stdout, results, options.markdown);
+    };
+    if (options.stages)
+        section("Mean milliseconds per step in each stage of jostle's step "
+                "(World::profile):\n\n",
+                printStages);
+    if (options.snapshots)
+        section("Snapshots of each world after its measured steps (docs/snapshots.md), "
+                "medians of " +
+                    std::to_string(kSnapshotRuns) + " runs:\n\n",
+                printSnapshots);
     if (!options.csv.empty() && !writeCsv(options.csv, results)) {
         std::fprintf(stderr, "jostle-bench: error: %s: cannot write\n", options.csv.c_str());
         return kFailure;

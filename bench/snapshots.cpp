@@ -4,11 +4,10 @@
 // runs. Rapier's figures are its own tracker's, quoted: they are not measured here.
 //   jostle-bench-snapshots [--runs N] [--bodies N,N...]
 #include "jostle/world.hpp"
+#include "timing.hpp"
 
 #include <CLI/CLI.hpp>
 
-#include <algorithm>
-#include <chrono>
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -16,7 +15,7 @@
 namespace {
 
 using namespace jostle;
-using Clock = std::chrono::steady_clock;
+using bench::medianMicroseconds;
 
 /// `bodies` boxes in a pile on a floor, awake (sleeping off), settled for a second.
 World pile(int bodies) {
@@ -32,18 +31,6 @@ World pile(int bodies) {
     for (int step = 0; step < 60; ++step)
         world.step(1.0f / 60.0f);
     return world;
-}
-
-/// The median of `runs` timings of `work`, in microseconds.
-template <class Work> double medianMicroseconds(int runs, Work&& work) {
-    std::vector<double> times;
-    for (int run = 0; run < runs; ++run) {
-        const auto start = Clock::now();
-        work();
-        times.push_back(std::chrono::duration<double, std::micro>(Clock::now() - start).count());
-    }
-    std::sort(times.begin(), times.end());
-    return times[times.size() / 2];
 }
 
 } // namespace
