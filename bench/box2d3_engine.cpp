@@ -23,27 +23,13 @@
 namespace jostle::bench {
 namespace {
 
-b2BodyType toBox2D3(BodyType type) {
-    switch (type) {
-    case BodyType::Static:
-        return b2_staticBody;
-    case BodyType::Kinematic:
-        return b2_kinematicBody;
-    case BodyType::Dynamic:
-        return b2_dynamicBody;
-    }
-    return b2_staticBody;
-}
-
 class Box2D3Engine final : public Engine {
 public:
     Box2D3Engine(const Scene& scene, int workers) {
         b2WorldDef def = b2DefaultWorldDef();
         def.gravity = {scene.world.gravity.x, scene.world.gravity.y};
         def.enableSleep = false;
-        def.restitutionThreshold = scene.world.physical.restitutionThreshold > 0.0f
-                                       ? scene.world.physical.restitutionThreshold
-                                       : 2.0f * length(scene.world.gravity) * scene.dt;
+        def.restitutionThreshold = restitutionThresholdOf(scene);
         def.workerCount = workers;
         world_ = b2CreateWorld(&def);
         bodies_.reserve(scene.bodies.size());
@@ -66,7 +52,7 @@ public:
 private:
     b2BodyId addBody(const BodyDef& def) {
         b2BodyDef bodyDef = b2DefaultBodyDef();
-        bodyDef.type = toBox2D3(def.type);
+        bodyDef.type = byType(def.type, b2_staticBody, b2_kinematicBody, b2_dynamicBody);
         bodyDef.position = {def.x, def.y};
         bodyDef.linearVelocity = {def.vx, def.vy};
         bodyDef.motionLocks.angularZ = true;
@@ -77,8 +63,7 @@ private:
         const b2BodyId body = b2CreateBody(world_, &bodyDef);
 
         b2ShapeDef shape = b2DefaultShapeDef();
-        const float mass = def.mass > 0.0f ? def.mass : def.density * 4.0f * def.hw * def.hh;
-        shape.density = mass / (4.0f * def.hw * def.hh);
+        shape.density = massOf(def) / (4.0f * def.hw * def.hh);
         shape.material.friction = def.friction;
         shape.material.restitution = def.bounce;
         const b2Polygon box = b2MakeBox(def.hw, def.hh);

@@ -26,32 +26,12 @@
 namespace jostle::bench {
 namespace {
 
-b2BodyType toBox2D(BodyType type) {
-    switch (type) {
-    case BodyType::Static:
-        return b2_staticBody;
-    case BodyType::Kinematic:
-        return b2_kinematicBody;
-    case BodyType::Dynamic:
-        return b2_dynamicBody;
-    }
-    return b2_staticBody;
-}
-
-/// The restitution threshold jostle uses for this world.
-float restitutionThreshold(const Scene& scene) {
-    const WorldDef& def = scene.world;
-    if (def.physical.restitutionThreshold > 0.0f)
-        return def.physical.restitutionThreshold;
-    return 2.0f * length(def.gravity) * scene.dt;
-}
-
 class Box2DEngine final : public Engine {
 public:
     explicit Box2DEngine(const Scene& scene)
         : world_(std::make_unique<b2World>(b2Vec2(scene.world.gravity.x, scene.world.gravity.y))) {
         world_->SetAllowSleeping(false);
-        const float threshold = restitutionThreshold(scene);
+        const float threshold = restitutionThresholdOf(scene);
         for (std::size_t i = 0; i < scene.bodies.size(); ++i)
             addBody(scene.bodies[i].def, i, threshold);
     }
@@ -70,7 +50,7 @@ public:
 private:
     void addBody(const BodyDef& def, std::size_t index, float threshold) {
         b2BodyDef bodyDef;
-        bodyDef.type = toBox2D(def.type);
+        bodyDef.type = byType(def.type, b2_staticBody, b2_kinematicBody, b2_dynamicBody);
         bodyDef.position.Set(def.x, def.y);
         bodyDef.linearVelocity.Set(def.vx, def.vy);
         bodyDef.fixedRotation = true;
@@ -87,7 +67,7 @@ private:
         box.SetAsBox(hw, hh);
         b2FixtureDef fixture;
         fixture.shape = &box;
-        const float mass = def.mass > 0.0f ? def.mass : def.density * 4.0f * def.hw * def.hh;
+        const float mass = massOf(def);
         fixture.density = mass / (4.0f * hw * hh);
         fixture.friction = def.friction;
         fixture.restitution = def.bounce;

@@ -152,8 +152,7 @@ private:
             body = cpBodyNewKinematic();
             break;
         case BodyType::Dynamic: {
-            const float mass = def.mass > 0.0f ? def.mass : def.density * 4.0f * def.hw * def.hh;
-            body = cpBodyNew(mass, INFINITY);
+            body = cpBodyNew(massOf(def), INFINITY);
             if (customVelocity)
                 cpBodySetVelocityUpdateFunc(body, &ChipmunkEngine::updateVelocity);
             break;

@@ -72,6 +72,32 @@ std::unique_ptr<Engine> makeBox2D(const Scene& scene);
 std::unique_ptr<Engine> makeChipmunk(const Scene& scene);
 std::unique_ptr<Engine> makeBox2D3(const Scene& scene, int workers); ///< null if not built
 
+// What jostle makes of a scene, for the peers to match it.
+
+/// A body's mass in jostle: its explicit mass, or density × its box's area.
+inline float massOf(const BodyDef& def) {
+    return def.mass > 0.0f ? def.mass : def.density * 4.0f * def.hw * def.hh;
+}
+
+/// The restitution threshold jostle uses for the scene's world: the scene's, or 2 |g| dt.
+inline float restitutionThresholdOf(const Scene& scene) {
+    const float given = scene.world.physical.restitutionThreshold;
+    return given > 0.0f ? given : 2.0f * length(scene.world.gravity) * scene.dt;
+}
+
+/// A peer's value for a body's type, given its three (its enumerators, say).
+template <class T> T byType(BodyType type, T staticBody, T kinematicBody, T dynamicBody) {
+    switch (type) {
+    case BodyType::Static:
+        return staticBody;
+    case BodyType::Kinematic:
+        return kinematicBody;
+    case BodyType::Dynamic:
+        break;
+    }
+    return dynamicBody;
+}
+
 /// How each engine is set up, one line each, for the top of the report.
 std::string describeJostle();
 std::string_view describeBox2D();
