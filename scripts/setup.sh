@@ -19,6 +19,7 @@ packages=(
   clang libclang-rt-14-dev  # the sanitizer build and the fuzzers (libFuzzer)
   valgrind                # memcheck over a part of the suite
   emscripten nodejs       # the web page's module (scripts/web.sh) and its tests in Node
+  esbuild node-typescript # the npm package: bundled by esbuild, its types checked by tsc (npm comes with nodejs)
   chromium python3        # the page's tests in headless Chromium; web.sh serves the page
   "$@"
 )

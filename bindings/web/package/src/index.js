@@ -1,0 +1,149 @@
+// jostle for JavaScript and TypeScript (docs/javascript.md): 2D collision detection and
+// response for games, over jostle's C API built to WebAssembly.
+//
+//     import {load} from "jostle";
+//     const jostle = await load();
+//     const world = jostle.createWorld({gravity: [0, 800]});
+//     world.createBody({type: "static", x: 0, y: 300, hw: 400, hh: 10});
+//     const crate = world.createBody({x: 0, y: 0, hw: 10, hh: 10, bounce: 0.3});
+//     world.step(1 / 60);
+//     console.log(crate.position);
+import createJostleGame from "jostle-game"; // the module's loader, bundled in by the build
+import * as args from "./args.js";
+import {Runtime} from "./runtime.js";
+import {World} from "./world.js";
+import {FixedStep} from "./fixed_step.js";
+import {compile} from "./wasm.js";
+export {World} from "./world.js";
+export {Body} from "./body.js";
+export {TileMap} from "./tile_map.js";
+export {FixedStep} from "./fixed_step.js";
+
+/// Loads the module. `options.wasm`: jostle.wasm's bytes (an ArrayBuffer or a typed
+/// array), a compiled WebAssembly.Module, its URL (a URL or a string) or a Response (or a
+/// promise of one); by default the jostle.wasm beside this file, found through
+/// import.meta.url (read from disk in Node, fetched in a page or a worker).
+export async function load(options = {}) {
+  args.object("load", "options", options);
+  for (const key of Object.keys(options))
+    if (key !== "wasm") throw new TypeError(`load: no option "${key}" (wasm)`);
+  let wasm;
+  try {
+    wasm = await compile(options.wasm ?? new URL("./jostle.wasm", import.meta.url));
+  } catch (error) {
+    throw new Error(`load: jostle.wasm could not be loaded: ${error.message ?? error}`);
+  }
+  const jostle = new Jostle();
+  const module = await createJostleGame({
+    instantiateWasm(imports, receive) {
+      WebAssembly.instantiate(wasm, imports).then((instance) => receive(instance, wasm));
+      return {};
+    },
+    // The module's own messages (none in normal use) go to the console.
+    print: (text) => console.log(text),
+    printErr: (text) => console.error(text),
+  });
+  jostle.start(module);
+  return jostle;
+}
+
+/// The loaded module: makes worlds and fixed steps.
+export class Jostle {
+  start(module) {
+    this.rt = new Runtime(module);
+    /// The library's version, "major.minor.patch".
+    this.version = this.rt.text(module._jostle_version());
+    this.worlds = new Map(); // jostle_world* → World, for the callbacks
+    this.moveFilter = null; // the filter of the move under way
+    this.thrown = null; // what a callback threw, rethrown when the C call returns
+    module.jostlePreSolve = (collision, world) => this.preSolve(collision, world);
+    module.jostleMoveFilter = (other, world) => this.filterMove(other, world);
+  }
+
+  /// A world from a scene: an object or a scene file's text (docs/scene-format.md), its
+  /// tile maps and bodies made too (world.bodies() lists them in the file's order).
+  createWorld(scene = {}) {
+    const fn = "createWorld";
+    if (typeof scene !== "string")
+      if (typeof scene !== "object" || scene === null || Array.isArray(scene))
+        throw new TypeError(`${fn}: scene must be an object or a scene file's text, got ${args.describe(scene)}`);
+    const text = typeof scene === "string" ? scene : args.json(fn, {bodies: [], ...scene});
+    const rt = this.rt, m = rt.m;
+    // The scene loader reads the text into jostle.h's definitions (web_c_api.cpp), which
+    // jostle.h's functions then create, as a C program would.
+    const def = rt.withText(text, (p) => m._jostle_web_read_scene(p));
+    rt.check(fn, def !== 0);
+    try {
+      const pointer = m._jostle_world_create(def);
+      rt.check(fn, pointer !== 0);
+      const world = new World(this, pointer);
+      try {
+        for (let i = 0, map; (map = m._jostle_web_scene_tile_map(i)) !== 0; i++) {
+          m._jostle_tile_map_create(rt.out, pointer, map);
+          rt.check(fn, m.HEAPU32[(rt.out >> 2) + 1] !== 0);
+        }
+        for (let i = 0, body; (body = m._jostle_web_scene_body(i)) !== 0; i++) {
+          m._jostle_body_create(rt.out, pointer, body);
+          rt.check(fn, m.HEAPU32[(rt.out >> 2) + 1] !== 0);
+        }
+      } catch (error) {
+        world.destroy();
+        throw error;
+      }
+      return world;
+    } finally {
+      m._jostle_web_forget_scene();
+    }
+  }
+
+  /// A clock of steps of `dt` seconds, at most `maxStepsPerFrame` a frame (default 8).
+  createFixedStep(dt, maxStepsPerFrame = 8) {
+    return new FixedStep(this, dt, maxStepsPerFrame);
+  }
+
+  // --- Callbacks from the module -------------------------------------------------------------
+
+  /// What a callback threw is kept, the C call let finish, and thrown after it (a callback
+  /// must return normally to C).
+  rethrow() {
+    const thrown = this.thrown;
+    if (thrown !== null) {
+      this.thrown = null;
+      throw thrown;
+    }
+  }
+
+  preSolve(at, pointer) {
+    const world = this.worlds.get(pointer);
+    if (this.thrown !== null || world === undefined || world.preSolve === null) return true;
+    const rt = this.rt, L = rt.layout.collision;
+    const collision = {a: world.bodyAt(at + L.a), b: world.bodyAt(at + L.b), normal: rt.vec(at + L.normal),
+                       depth: rt.float(at + L.depth), bounce: rt.float(at + L.bounce),
+                       friction: rt.float(at + L.friction)};
+    try {
+      const respond = world.preSolve(collision) !== false;
+      const floats = rt.m.HEAPF32;
+      floats[(at + L.bounce) >> 2] = collision.bounce;
+      floats[(at + L.friction) >> 2] = collision.friction;
+      return respond;
+    } catch (error) {
+      this.thrown = error;
+      return true;
+    }
+  }
+
+  filterMove(at, pointer) {
+    const world = this.worlds.get(pointer);
+    if (this.thrown !== null || world === undefined || this.moveFilter === null) return 0;
+    try {
+      const answer = this.moveFilter(world.bodyAt(at));
+      const response = ["slide", "touch", "cross", "bounce", "ignore"].indexOf(answer);
+      if (response < 0)
+        throw new TypeError(`move: filter must return "slide", "touch", "cross", "bounce" or "ignore", got ${args.describe(answer)}`);
+      return response;
+    } catch (error) {
+      this.thrown = error;
+      return 4; // ignore, the move's result is thrown away
+    }
+  }
+}

@@ -1,0 +1,151 @@
+// What the npm package's JavaScript (package/, docs/javascript.md) needs of the module
+// beside jostle.h's functions: where the members of jostle.h's structs are, read from the
+// header by the compiler instead of copied into JavaScript; and the C callbacks (pre-solve,
+// a move's filter) that hand each call to the JavaScript function the game gave.
+#include "jostle/jostle.h"
+#include "jostle/world.hpp"
+
+#include <emscripten/emscripten.h>
+
+#include <cstddef>
+#include <initializer_list>
+#include <string>
+#include <utility>
+
+namespace {
+
+using Members = std::initializer_list<std::pair<const char*, std::size_t>>;
+
+/// `"name": {"size": n, "member": offset, ...}` of one struct.
+void addStruct(std::string& out, const char* name, std::size_t size, Members members) {
+    out += out.size() > 1 ? ",\"" : "\"";
+    out += name;
+    out += "\":{\"size\":" + std::to_string(size);
+    for (const auto& [member, offset] : members)
+        out += ",\"" + std::string(member) + "\":" + std::to_string(offset);
+    out += '}';
+}
+
+#define JOSTLE_MEMBER(type, member)                                                                \
+    { #member, offsetof(type, member) }
+
+std::string layoutJson() {
+    std::string out = "{";
+    addStruct(out, "body_id", sizeof(jostle_body_id),
+              {JOSTLE_MEMBER(jostle_body_id, index), JOSTLE_MEMBER(jostle_body_id, generation),
+               JOSTLE_MEMBER(jostle_body_id, world)});
+    addStruct(out, "touching", sizeof(jostle_touching),
+              {JOSTLE_MEMBER(jostle_touching, floor), JOSTLE_MEMBER(jostle_touching, ceiling),
+               JOSTLE_MEMBER(jostle_touching, wall_left),
+               JOSTLE_MEMBER(jostle_touching, wall_right)});
+    addStruct(out, "ground", sizeof(jostle_ground),
+              {JOSTLE_MEMBER(jostle_ground, body), JOSTLE_MEMBER(jostle_ground, normal),
+               JOSTLE_MEMBER(jostle_ground, velocity)});
+    addStruct(
+        out, "contact_info", sizeof(jostle_contact_info),
+        {JOSTLE_MEMBER(jostle_contact_info, other), JOSTLE_MEMBER(jostle_contact_info, normal),
+         JOSTLE_MEMBER(jostle_contact_info, point), JOSTLE_MEMBER(jostle_contact_info, impulse)});
+    addStruct(out, "contact_event", sizeof(jostle_contact_event),
+              {JOSTLE_MEMBER(jostle_contact_event, a), JOSTLE_MEMBER(jostle_contact_event, b),
+               JOSTLE_MEMBER(jostle_contact_event, normal),
+               JOSTLE_MEMBER(jostle_contact_event, approach_speed),
+               JOSTLE_MEMBER(jostle_contact_event, point)});
+    addStruct(
+        out, "sensor_event", sizeof(jostle_sensor_event),
+        {JOSTLE_MEMBER(jostle_sensor_event, sensor), JOSTLE_MEMBER(jostle_sensor_event, visitor)});
+    addStruct(out, "crush_event", sizeof(jostle_crush_event),
+              {JOSTLE_MEMBER(jostle_crush_event, body), JOSTLE_MEMBER(jostle_crush_event, by),
+               JOSTLE_MEMBER(jostle_crush_event, against)});
+    addStruct(out, "collision", sizeof(jostle_collision),
+              {JOSTLE_MEMBER(jostle_collision, a), JOSTLE_MEMBER(jostle_collision, b),
+               JOSTLE_MEMBER(jostle_collision, normal), JOSTLE_MEMBER(jostle_collision, depth),
+               JOSTLE_MEMBER(jostle_collision, bounce), JOSTLE_MEMBER(jostle_collision, friction)});
+    addStruct(out, "query_filter", sizeof(jostle_query_filter),
+              {JOSTLE_MEMBER(jostle_query_filter, mask),
+               JOSTLE_MEMBER(jostle_query_filter, category),
+               JOSTLE_MEMBER(jostle_query_filter, include_sensors),
+               JOSTLE_MEMBER(jostle_query_filter, ignore)});
+    addStruct(out, "ray_hit", sizeof(jostle_ray_hit),
+              {JOSTLE_MEMBER(jostle_ray_hit, body), JOSTLE_MEMBER(jostle_ray_hit, point),
+               JOSTLE_MEMBER(jostle_ray_hit, normal), JOSTLE_MEMBER(jostle_ray_hit, fraction)});
+    addStruct(out, "box_cast_hit", sizeof(jostle_box_cast_hit),
+              {JOSTLE_MEMBER(jostle_box_cast_hit, body), JOSTLE_MEMBER(jostle_box_cast_hit, centre),
+               JOSTLE_MEMBER(jostle_box_cast_hit, normal),
+               JOSTLE_MEMBER(jostle_box_cast_hit, fraction)});
+    addStruct(out, "move_hit", sizeof(jostle_move_hit),
+              {JOSTLE_MEMBER(jostle_move_hit, body), JOSTLE_MEMBER(jostle_move_hit, normal)});
+    addStruct(out, "move_collision", sizeof(jostle_move_collision),
+              {JOSTLE_MEMBER(jostle_move_collision, other),
+               JOSTLE_MEMBER(jostle_move_collision, response),
+               JOSTLE_MEMBER(jostle_move_collision, normal),
+               JOSTLE_MEMBER(jostle_move_collision, touch),
+               JOSTLE_MEMBER(jostle_move_collision, time),
+               JOSTLE_MEMBER(jostle_move_collision, other_centre),
+               JOSTLE_MEMBER(jostle_move_collision, other_half)});
+    addStruct(out, "move_result", sizeof(jostle_move_result),
+              {JOSTLE_MEMBER(jostle_move_result, centre),
+               JOSTLE_MEMBER(jostle_move_result, collisions),
+               JOSTLE_MEMBER(jostle_move_result, count)});
+    addStruct(out, "classic_options", sizeof(jostle_classic_options),
+              {JOSTLE_MEMBER(jostle_classic_options, mass),
+               JOSTLE_MEMBER(jostle_classic_options, coulomb),
+               JOSTLE_MEMBER(jostle_classic_options, ccd)});
+    addStruct(out, "physical_options", sizeof(jostle_physical_options),
+              {JOSTLE_MEMBER(jostle_physical_options, velocity_iterations),
+               JOSTLE_MEMBER(jostle_physical_options, position_iterations),
+               JOSTLE_MEMBER(jostle_physical_options, slop),
+               JOSTLE_MEMBER(jostle_physical_options, correction),
+               JOSTLE_MEMBER(jostle_physical_options, restitution_threshold),
+               JOSTLE_MEMBER(jostle_physical_options, friction_mix),
+               JOSTLE_MEMBER(jostle_physical_options, max_contacts_per_body)});
+    // The profile's stages, by the names StepProfile gives them, each a float in order.
+    out += ",\"profile\":[";
+    for (const jostle::StepProfileField& field : jostle::kStepProfileFields)
+        out += std::string(&field == jostle::kStepProfileFields ? "\"" : ",\"") + field.name + '"';
+    out += "]}";
+    return out;
+}
+
+#undef JOSTLE_MEMBER
+
+// The JavaScript side of the callbacks: the package's functions on the module object,
+// which call the game's function and keep what it throws for after the C call returns.
+EM_JS(int, jostle_js_pre_solve, (jostle_collision * collision, void* context),
+      { return Module.jostlePreSolve(collision, context) ? 1 : 0; });
+EM_JS(int, jostle_js_move_filter, (const jostle_body_id* other, void* context),
+      { return Module.jostleMoveFilter(other, context); });
+
+bool preSolve(jostle_collision* collision, void* context) {
+    return jostle_js_pre_solve(collision, context) != 0;
+}
+
+jostle_response moveFilter(jostle_body_id other, void* context) {
+    return static_cast<jostle_response>(jostle_js_move_filter(&other, context));
+}
+
+} // namespace
+
+extern "C" {
+
+/// jostle.h's structs as JSON: {"contact_event": {"size": 44, "a": 0, "normal": 24, ...},
+/// ..., "profile": [stage names]}, read once by the package when it loads.
+EMSCRIPTEN_KEEPALIVE const char* jostle_web_layout() {
+    static const std::string layout = layoutJson();
+    return layout.c_str();
+}
+
+/// jostle_world_set_pre_solve with the package's callback, which calls the function the
+/// game gave for the world `context` names; or none.
+EMSCRIPTEN_KEEPALIVE bool jostle_web_set_pre_solve(jostle_world* world, bool enabled) {
+    return jostle_world_set_pre_solve(world, enabled ? preSolve : nullptr, world);
+}
+
+/// jostle_body_move with the package's filter, which calls the game's function; none
+/// when `filtered` is false (the default responses).
+EMSCRIPTEN_KEEPALIVE bool jostle_web_body_move(jostle_world* world, const jostle_body_id* body,
+                                               const jostle_vec2* delta, bool filtered,
+                                               jostle_move_result* result) {
+    return jostle_body_move(world, *body, *delta, filtered ? moveFilter : nullptr, world, result);
+}
+
+} // extern "C"
