@@ -57,7 +57,7 @@ export class FixedStep {
     args.floats(fn, "out", out);
     const capacity = out.length >> 1, at = rt.bufferOf(8 * Math.max(capacity, 1));
     const count = m._jostle_fixed_step_read_draw_positions(this.live(fn), world.live(fn), at, capacity);
-    out.set(m.HEAPF32.subarray(at >> 2, (at >> 2) + 2 * Math.min(count, capacity)));
+    out.set(rt.floatsAt(at, 2 * Math.min(count, capacity)));
     return count;
   }
 

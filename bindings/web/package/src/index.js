@@ -103,12 +103,14 @@ export class Jostle {
 
   // --- Callbacks from the module -------------------------------------------------------------
 
-  /// What a callback threw is kept, the C call let finish, and thrown after it (a callback
-  /// must return normally to C).
+  /// What a callback threw is kept and thrown when the C call returns (a callback must
+  /// return normally to C): a move whose filter threw moves nothing; a step whose
+  /// pre-solve threw is finished as if the callback had said true from then on.
   rethrow() {
     const thrown = this.thrown;
     if (thrown !== null) {
       this.thrown = null;
+      this.rt.m._jostle_clear_error(); // the C call's own error, if the callback caused one
       throw thrown;
     }
   }
@@ -143,7 +145,7 @@ export class Jostle {
       return response;
     } catch (error) {
       this.thrown = error;
-      return 4; // ignore, the move's result is thrown away
+      return -1; // not a response: the C API refuses the move, and nothing moves
     }
   }
 }

@@ -37,6 +37,9 @@ export class Runtime {
     this.m._jostle_clear_error();
     const cFunction = /^jostle_\w+: /.exec(message);
     if (cFunction !== null) message = message.slice(cFunction[0].length);
+    // A property's C++ setter names itself: "setFriction: ..." is friction's.
+    const setter = `set${fn[0].toUpperCase()}${fn.slice(1)}: `;
+    if (message.startsWith(setter)) message = message.slice(setter.length);
     throw new Error(message.startsWith(`${fn}: `) ? message : `${fn}: ${message}`);
   }
 
@@ -140,6 +143,16 @@ export class Runtime {
       this.buffer = this.m._malloc(this.bufferSize);
     }
     return this.buffer;
+  }
+
+  /// The `count` floats at `at` as a Float32Array over the module's memory, made once for
+  /// a place and kept (a view is an object: a new one each frame would be garbage). Valid
+  /// until the module is next called.
+  floatsAt(at, count) {
+    const view = this.view;
+    if (view !== undefined && view.buffer === this.m.HEAPF32.buffer && view.byteOffset === at && view.length === count)
+      return view;
+    return (this.view = new Float32Array(this.m.HEAPF32.buffer, at, count));
   }
 
   /// Calls `fill(buffer, capacity)` of a C function under the buffer rule (it writes at

@@ -208,7 +208,7 @@ export class World {
     const world = this.live(fn), rt = this.rt, m = rt.m;
     const capacity = out.length >> 1, at = rt.bufferOf(8 * Math.max(capacity, 1));
     const count = m[name](world, at, capacity);
-    out.set(m.HEAPF32.subarray(at >> 2, (at >> 2) + 2 * Math.min(count, capacity)));
+    out.set(rt.floatsAt(at, 2 * Math.min(count, capacity)));
     return count;
   }
 

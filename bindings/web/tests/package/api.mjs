@@ -1,0 +1,340 @@
+// The npm package's API in Node, method by method, over the package directory the build
+// fills: each answer is one a reader can work out from the scene (a box dropped 280 units
+// meets the floor at about sqrt(2 g h), a ray from above meets a box's top face...), each
+// refusal names the method and the argument, and reading every body's position makes no
+// garbage.
+//   node --expose-gc api.mjs <package dir> <version>
+import path from "node:path";
+import {existsSync} from "node:fs";
+import {readFile} from "node:fs/promises";
+import {pathToFileURL} from "node:url";
+
+const [packageDir, version] = process.argv.slice(2);
+if (!existsSync(path.join(packageDir, "jostle.mjs"))) {
+  console.log(`SKIPPED: no package in ${packageDir} (the web build makes it where esbuild is installed)`);
+  process.exit(77);
+}
+const {load, Body, World, TileMap} = await import(pathToFileURL(path.join(packageDir, "jostle.mjs")).href);
+
+let failures = 0;
+function check(ok, what) {
+  console.log(`${ok ? "ok  " : "FAIL"} ${what}`);
+  if (!ok) failures++;
+}
+const near = (a, b, tolerance = 1e-4) => Math.abs(a - b) <= tolerance;
+
+/// `call` must throw a `type` whose message is exactly `message`.
+function refuses(what, call, type, message) {
+  try {
+    call();
+  } catch (error) {
+    const ok = error.constructor.name === type && error.message === message;
+    return check(ok, `${what}: ${error.constructor.name}: ${error.message}` + (ok ? "" : `\n       expected ${type}: ${message}`));
+  }
+  check(false, `${what} is refused (it returned)`);
+}
+
+async function rejects(what, promise, message) {
+  try {
+    await promise;
+    check(false, `${what} is refused (it resolved)`);
+  } catch (error) {
+    check(error.message.startsWith(message), `${what}: ${error.message}`);
+  }
+}
+
+// --- Loading ------------------------------------------------------------------------------
+const jostle = await load();
+check(jostle.version === version, `load() finds jostle.wasm beside the file: version ${jostle.version}`);
+const bytes = await readFile(path.join(packageDir, "jostle.wasm"));
+check((await load({wasm: bytes})).version === version, "load({wasm: bytes})");
+check((await load({wasm: await WebAssembly.compile(bytes)})).version === version, "load({wasm: a WebAssembly.Module})");
+check((await load({wasm: new Response(bytes)})).version === version, "load({wasm: a Response})");
+await rejects("a wasm that is not there", load({wasm: pathToFileURL("/nonexistent/jostle.wasm")}),
+              "load: jostle.wasm could not be loaded: ENOENT");
+await rejects("bytes that are not wasm", load({wasm: new Uint8Array([1, 2, 3])}), "load: jostle.wasm could not be loaded");
+await rejects("an unknown option", load({wasmBinary: bytes}), "load: no option \"wasmBinary\" (wasm)");
+
+// --- Worlds ---------------------------------------------------------------------------------
+{
+  const world = jostle.createWorld({gravity: [0, 800], bodies: [{type: "static", x: 0, y: 300, hw: 400, hh: 10},
+                                                               {x: 0, y: 0, hw: 10, hh: 10}]});
+  check(world instanceof World && world.bodyCount === 2, "a scene's bodies are made with its world");
+  const [floor, box] = world.bodies();
+  check(floor instanceof Body && floor.type === "static" && box.type === "dynamic", "bodies() in the file's order");
+  check(world.bodies()[1] === box, "a body is one object wherever it is met");
+  check(near(world.gravity.y, 800) && world.solver === "physical" && world.sleeping && world.workers === 1,
+        "the world's settings read back");
+  world.gravity = [0, 400];
+  check(world.gravity.y === 400, "gravity set from [x, y]");
+  world.gravity = {x: 1, y: 2};
+  check(world.gravity.x === 1 && world.gravity.y === 2, "gravity set from {x, y}");
+  refuses("a gravity without y", () => { world.gravity = {x: 1}; }, "TypeError",
+          "gravity: gravity.y must be a finite number, got undefined");
+  check(world.maxVelocity === Infinity, "no velocity clamp by default");
+  world.maxVelocity = 100;
+  check(world.maxVelocity === 100, "maxVelocity set");
+  refuses("a maxVelocity of 0", () => { world.maxVelocity = 0; }, "Error",
+          "maxVelocity: maxVelocity must be > 0 (infinity for no clamp)");
+  world.physicalOptions = {velocityIterations: 8, frictionMix: "geometricMean"};
+  const physical = world.physicalOptions;
+  check(physical.velocityIterations === 8 && physical.frictionMix === "geometricMean" && physical.positionIterations === 3,
+        "physicalOptions: the fields given change, the others stay");
+  refuses("a frictionMix that is not one", () => { world.physicalOptions = {frictionMix: "max"}; }, "TypeError",
+          "physicalOptions: physicalOptions.frictionMix must be \"min\" or \"geometricMean\", got \"max\"");
+  world.solver = "classic";
+  world.classicOptions = {mass: true};
+  check(world.solver === "classic" && world.classicOptions.mass && !world.classicOptions.ccd, "the classic model and its switches");
+  refuses("an unknown solver", () => { world.solver = "verlet"; }, "TypeError",
+          "solver: must be \"classic\" or \"physical\", got \"verlet\"");
+  world.destroy();
+  refuses("a destroyed world", () => world.step(1 / 60), "Error", "step: the world was destroyed");
+  refuses("a body of a destroyed world", () => box.position, "Error", "position: the world was destroyed");
+  check(!box.valid, "a body of a destroyed world is not valid");
+  refuses("a scene with a bad body", () => jostle.createWorld({bodies: [{hw: 1, hh: 1}, {hw: 0, hh: 1}]}), "Error",
+          "createWorld: bodies[1].hw: must be > 0");
+  refuses("a scene file's text with a mistake", () => jostle.createWorld('{"gravity": [0, 800], "bodeis": []}'), "Error",
+          "createWorld: unknown field \"bodeis\" (did you mean \"bodies\"?)");
+  refuses("a scene that is a number", () => jostle.createWorld(3), "TypeError",
+          "createWorld: scene must be an object or a scene file's text, got 3");
+}
+
+// --- Bodies ---------------------------------------------------------------------------------
+{
+  const world = jostle.createWorld({gravity: [0, 800]});
+  const body = world.createBody({x: 1, y: 2, hw: 3, hh: 4, userData: {name: "crate"}});
+  check(body.userData.name === "crate" && body.def().userData.name === "crate", "userData is any value, kept");
+  // Values a float holds exactly, so that each reads back as set.
+  const settings = {bounce: 0.25, friction: 0.75, mass: 2.5, gravityScale: -1, damping: 0.5, bullet: true,
+                    category: 0x80000000, mask: 6, character: true, wallFriction: 0.125, floorAngle: 45,
+                    cornerCorrection: 2, stepUp: 3, snapDown: 4, walkSpeed: 150};
+  for (const [name, value] of Object.entries(settings)) {
+    body[name] = value;
+    check(body[name] === value, `body.${name} = ${value} reads back`);
+  }
+  for (const [name, value] of [["position", {x: 5, y: 6}], ["velocity", {x: 7, y: 8}], ["halfExtents", {x: 2, y: 1}],
+                               ]) {
+    body[name] = [value.x, value.y];
+    check(body[name].x === value.x && body[name].y === value.y, `body.${name} = [${value.x}, ${value.y}] reads back`);
+  }
+  refuses("a conveyor that is dynamic", () => { body.surfaceVelocity = [9, 0]; }, "Error",
+          "surfaceVelocity: a conveyor must be static or kinematic");
+  body.oneWay = [0, -1];
+  check(body.oneWay.y === -1, "body.oneWay reads back");
+  body.setDensity(2);
+  check(body.mass === 2 * 4 * 2 * 1, "setDensity: mass = density * 4 hw hh");
+  body.sensor = true;
+  check(body.sensor, "body.sensor reads back");
+  body.type = "kinematic";
+  check(body.type === "kinematic", "body.type reads back");
+  body.surfaceVelocity = {x: 9, y: 0};
+  check(body.surfaceVelocity.x === 9, "body.surfaceVelocity reads back");
+  const def = body.def();
+  check(def.type === "kinematic" && def.x === 5 && def.hw === 2 && def.bounce === 0.25, "def() is a scene file's body");
+  refuses("friction NaN", () => { body.friction = NaN; }, "TypeError", "friction: friction must be a finite number, got NaN");
+  refuses("friction past [0, 1]", () => { body.friction = 2; }, "Error", "friction: friction must be in [0, 1]");
+  refuses("a mask past 32 bits", () => { body.mask = 2 ** 32; }, "TypeError",
+          "mask: mask must be an integer in [0, 4294967295], got 4294967296");
+  refuses("a body type that is not one", () => { body.type = "ghost"; }, "TypeError",
+          "type: must be \"static\", \"kinematic\" or \"dynamic\", got \"ghost\"");
+  refuses("a definition's mistake", () => world.createBody({hw: 1, hh: 1, bounce: 3}), "Error",
+          "createBody: bounce: must be in [0, 1]");
+  refuses("an unknown field", () => world.createBody({hw: 1, hh: 1, bouncy: 1}), "Error",
+          "createBody: unknown field \"bouncy\" (did you mean \"bounce\"?)");
+  refuses("undefined in a definition", () => world.createBody({hw: 1, hh: undefined}), "TypeError",
+          "createBody: hh: expected a value, got undefined (leave a field out for its default)");
+  body.destroy();
+  check(!body.valid, "a destroyed body is not valid");
+  refuses("a stale body", () => body.position, "Error", "position: stale BodyId (the body was destroyed)");
+  refuses("a stale body's setter", () => { body.friction = 0.5; }, "Error", "friction: stale BodyId (the body was destroyed)");
+  const other = jostle.createWorld().createBody({hw: 1, hh: 1});
+  refuses("a body of another world", () => world.createBody({hw: 1, hh: 1}).isTouching(other), "TypeError",
+          "isTouching: other must be a Body of this world, got an object");
+  world.destroy();
+}
+
+// --- Events, characters ---------------------------------------------------------------------
+{
+  const world = jostle.createWorld({gravity: [0, 800]});
+  const floor = world.createBody({type: "static", x: 0, y: 300, hw: 400, hh: 10});
+  const box = world.createBody({x: 0, y: 0, hw: 10, hh: 10});
+  const coin = world.createBody({type: "static", x: 0, y: 150, hw: 5, hh: 5, sensor: true});
+  let begin = null, sensorBegin = null, sensorEnd = null;
+  for (let i = 0; i < 120; i++) {
+    world.step(1 / 60);
+    begin ??= world.contactBegins()[0] ?? null;
+    sensorBegin ??= world.sensorBegins()[0] ?? null;
+    sensorEnd ??= world.sensorEnds()[0] ?? null;
+  }
+  check(sensorBegin?.sensor === coin && sensorBegin?.visitor === box, "the falling box enters the coin's sensor");
+  check(sensorEnd?.sensor === coin && sensorEnd?.visitor === box, "and leaves it");
+  check(begin?.a === floor && begin?.b === box, "a contact begins between the floor (made first) and the box");
+  check(begin.normal.x === 0 && begin.normal.y === 1, "its normal points from the box towards the floor");
+  // 280 units of fall: sqrt(2 * 800 * 280) = 669, within a step's gain (800 / 60) of it.
+  check(Math.abs(begin.approachSpeed - Math.sqrt(2 * 800 * 280)) < 800 / 60, `it meets at about sqrt(2 g h) (${begin.approachSpeed})`);
+  check(near(begin.point.y, 290, 0.5), `where they touch: the floor's top, y = 290 (${begin.point.y})`);
+  check(box.touching.floor && !box.touching.ceiling, "the box touches a floor");
+  check(box.isTouching(floor), "isTouching");
+  const contacts = box.contacts();
+  // The box's mass is its area, 400: the floor holds it with m g dt = 400 * 800 / 60 a step.
+  check(contacts.length === 1 && contacts[0].other === floor && near(contacts[0].impulse, 400 * 800 / 60, 0.5),
+        `contacts(): the floor, an impulse of m g dt = 5333 a step (${contacts[0]?.impulse})`);
+  box.destroy();
+  world.step(1 / 60);
+  const end = world.contactEnds();
+  check(end.length === 1 && end[0].a === floor && end[0].b === box && !end[0].b.valid, "a destroyed body's contact ends");
+
+  const hero = world.createBody({x: 100, y: 280, hw: 6, hh: 10, character: true});
+  world.step(1 / 60);
+  check(hero.ground?.body === floor && hero.ground.normal.y === -1, "a character's ground is the floor");
+  hero.walkSpeed = 120;
+  world.step(1 / 60);
+  check(hero.velocity.x === 120, "it walks at the speed set (120)");
+  hero.setVelocity(120, -300);
+  world.step(1 / 60);
+  check(hero.ground === null, "in the air it has no ground");
+
+  // A kinematic lid coming down on a crate on the floor crushes it.
+  const crate = world.createBody({x: -100, y: 280, hw: 10, hh: 10});
+  const lid = world.createBody({type: "kinematic", x: -100, y: 250, hw: 30, hh: 10, vy: 60});
+  let crush = null;
+  for (let i = 0; i < 60 && crush === null; i++) {
+    world.step(1 / 60);
+    crush = world.crushBegins()[0] ?? null;
+  }
+  check(crush?.body === crate && crush?.by === lid && crush?.against === floor, "a crush: the crate, by the lid, against the floor");
+  check(world.profile().step > 0 && "solve" in world.profile(), "profile() has every stage");
+  world.destroy();
+}
+
+// --- Queries --------------------------------------------------------------------------------
+{
+  const world = jostle.createWorld();
+  const floor = world.createBody({type: "static", x: 0, y: 100, hw: 100, hh: 10});
+  const box = world.createBody({type: "static", x: 0, y: 0, hw: 10, hh: 10});
+  const sensor = world.createBody({type: "static", x: 50, y: 0, hw: 5, hh: 5, sensor: true});
+  check(world.queryPoint([0, 95])[0] === floor, "queryPoint");
+  check(world.queryPoint([50, 0]).length === 0 && world.queryPoint([50, 0], {includeSensors: true})[0] === sensor,
+        "sensors only when asked");
+  check(world.queryBox([0, 50], [20, 45]).length === 2, "queryBox: the box and the floor");
+  check(world.queryRect([-5, -5], [5, 5])[0] === box, "queryRect");
+  const hit = world.rayCast([0, -100], [0, 200]);
+  check(hit?.body === box && hit.point.y === -10 && hit.normal.y === -1 && near(hit.fraction, 90 / 300),
+        "rayCast meets the box's top face at y = -10, 90 / 300 of the way");
+  check(world.rayCast([0, -100], [0, 200], {ignore: box}).body === floor, "rayCast ignoring the box meets the floor");
+  check(world.rayCastAll([0, -100], [0, 200]).map((h) => h.body).join() === [box, floor].join() &&
+        world.rayCastAll([0, -100], [0, 200])[1].body === floor, "rayCastAll: nearest first");
+  const cast = world.boxCast([30, 0], [5, 5], [0, 200]);
+  check(cast?.body === floor && cast.centre.y === 85, "boxCast stops a box of half 5 on the floor's top (y = 85)");
+  const circle = world.circleCast([30, 0], 5, [0, 200]);
+  check(circle?.body === floor && near(circle.centre.y, 85), "circleCast likewise");
+  check(world.roundedBoxCast([30, 0], [5, 5], 2, [0, 200])?.body === floor, "roundedBoxCast");
+  const slid = world.moveAndSlide([30, 80], [5, 5], [20, 20]);
+  check(slid.centre.x === 50 && slid.centre.y === 85 && slid.hits[0].body === floor,
+        "moveAndSlide into the floor slides along it: (50, 85)");
+  refuses("a filter with an unknown field", () => world.queryPoint([0, 0], {layers: 1}), "TypeError",
+          "queryPoint: filter has no field \"layers\" (mask, category, includeSensors, ignore)");
+
+  const mover = world.createBody({type: "kinematic", x: -50, y: 0, hw: 5, hh: 5});
+  let moved = mover.move(100, 0);
+  check(moved.x === -15 && moved.collisions[0].other === box && moved.collisions[0].response === "slide",
+        "move stops at the box's side (x = -15)");
+  moved = mover.move(100, 0, () => "cross");
+  check(moved.x === 85 && moved.collisions[0].response === "cross", "a filter that crosses goes through");
+  refuses("a filter's error", () => mover.move(-100, 0, () => { throw new Error("boom"); }), "Error", "boom");
+  check(mover.position.x === 85, "a move whose filter threw moves nothing");
+  refuses("a filter's wrong answer", () => mover.move(-100, 0, () => "stick"), "TypeError",
+          "move: filter must return \"slide\", \"touch\", \"cross\", \"bounce\" or \"ignore\", got \"stick\"");
+  world.destroy();
+}
+
+// --- Tile maps ------------------------------------------------------------------------------
+{
+  const world = jostle.createWorld();
+  const map = world.createTileMap({x: 0, y: 0, tile: 16, rows: ["#..#", "####"]});
+  check(map instanceof TileMap && map.columns === 4 && map.rows === 2, "a tile map of 4 x 2");
+  check(map.bodies().length === 3 && map.bodies()[0].tileMap === map, "merged runs: two tiles and a row, three bodies");
+  check(map.tileOf(1, 0) === "." && map.isSolid(0, 0) && map.tileOf(9, 9) === ".", "tileOf and isSolid");
+  const tile = map.tileAt([20, 20]);
+  check(tile.column === 1 && tile.row === 1 && map.tileAt([-1, 0]) === null, "tileAt");
+  map.setTile(1, 0, "#");
+  map.setTile(2, 0, "#");
+  check(map.bodies().length === 1, "filling the gap makes the map one solid block: one body");
+  refuses("a tile that is not one", () => map.setTile(0, 0, "x"), "Error",
+          "setTile: expected '#', '.' or a ramp, got 'x'");
+  refuses("a map with a bad row", () => world.createTileMap({tile: 16, rows: ["#", "##"]}), "Error",
+          "createTileMap: rows[1]: has 2 columns, rows[0] has 1");
+  map.destroy();
+  check(!map.valid && world.bodyCount === 0, "a destroyed map takes its bodies");
+  world.destroy();
+}
+
+// --- The fixed step, pre-solve, snapshots -------------------------------------------------------
+{
+  const world = jostle.createWorld();
+  const runner = world.createBody({x: 0, y: 0, hw: 1, hh: 1, vx: 60});
+  const clock = jostle.createFixedStep(1 / 60);
+  check(clock.dt === Math.fround(1 / 60) && clock.maxStepsPerFrame === 8, "a clock of 1/60 s, 8 steps a frame at most");
+  const steps = clock.update(world, 0.04);
+  // 0.04 s is 2 steps of 1/60 and 0.4 of a third.
+  check(steps === 2 && near(clock.alpha, 0.4, 1e-3), `0.04 s: 2 steps and alpha 0.4 (${steps}, ${clock.alpha})`);
+  check(near(clock.drawPosition(runner).x, 1 + 0.4, 1e-3), `drawn between x = 1 and 2 by alpha (${clock.drawPosition(runner).x})`);
+  const drawn = new Float32Array(2);
+  check(clock.readDrawPositions(world, drawn) === 1 && near(drawn[0], 1.4, 1e-3), "readDrawPositions");
+  clock.destroy();
+  world.destroy();
+}
+{
+  const world = jostle.createWorld({gravity: [0, 800]});
+  world.createBody({type: "static", x: 0, y: 100, hw: 100, hh: 10});
+  const ghost = world.createBody({x: -50, y: 0, hw: 5, hh: 5});
+  const ball = world.createBody({x: 50, y: 0, hw: 5, hh: 5});
+  world.setPreSolve((c) => {
+    if (c.b === ghost) return false;
+    c.bounce = 1;
+    return true;
+  });
+  let highest = Infinity;
+  for (let i = 0; i < 60; i++) {
+    world.step(1 / 60);
+    if (i > 30) highest = Math.min(highest, ball.position.y);
+  }
+  check(ghost.position.y > 110, `a pair the callback refuses passes through: the ghost fell through (${ghost.position.y})`);
+  check(highest < 40, `a bounce set to 1 sends the ball back up (to y = ${highest.toFixed(1)})`);
+  world.setPreSolve(() => { throw new Error("callback failed"); });
+  refuses("a pre-solve's error", () => { for (let i = 0; i < 120; i++) world.step(1 / 60); }, "Error", "callback failed");
+  world.setPreSolve(null);
+  world.step(1 / 60);
+
+  const saved = world.snapshot(), hash = world.stateHash();
+  const later = world.createBody({x: 0, y: -50, hw: 1, hh: 1});
+  ghost.destroy();
+  world.step(1 / 60);
+  world.restore(saved);
+  check(world.stateHash() === hash && /^[0-9a-f]{16}$/.test(hash), "restore gives the snapshot's state hash back");
+  check(ghost.valid && !later.valid, "a body destroyed since is back under its handle; one made since is stale");
+  refuses("a snapshot that is not one", () => world.restore(new Uint8Array(10)), "Error",
+          "restore: not a jostle snapshot");
+  check(world.stateHash() === hash, "a refused restore leaves the world as it was");
+  world.destroy();
+}
+
+// --- Reading every body makes no garbage -------------------------------------------------------
+{
+  const world = jostle.createWorld({gravity: [0, 800]});
+  for (let i = 0; i < 1000; i++) world.createBody({x: (i % 40) * 3, y: -(i / 40 | 0) * 3, hw: 1, hh: 1});
+  const positions = new Float32Array(2 * world.bodyCount);
+  // Warmed up first: V8 compiles a hot function, which allocates on the heap once.
+  for (let i = 0; i < 20000; i++) world.readPositions(positions);
+  globalThis.gc();
+  const before = process.memoryUsage().heapUsed;
+  for (let i = 0; i < 10000; i++) world.readPositions(positions);
+  const grown = process.memoryUsage().heapUsed - before;
+  // A single object a call would be 10,000 objects, hundreds of KB.
+  check(grown < 10000, `10,000 reads of 1,000 positions make no garbage (the heap grew ${grown} bytes)`);
+  check(positions[0] === 0 && positions[2] === 3, "and read them");
+  world.destroy();
+}
+
+console.log(failures === 0 ? "all passed" : `${failures} failed`);
+process.exitCode = failures === 0 ? 0 : 1;
