@@ -7,7 +7,7 @@ const http = require("node:http");
 const fs = require("node:fs");
 const path = require("node:path");
 
-const kTypes = {".html": "text/html", ".js": "text/javascript", ".css": "text/css",
+const kTypes = {".html": "text/html", ".js": "text/javascript", ".mjs": "text/javascript", ".css": "text/css",
                 ".wasm": "application/wasm", ".json": "application/json"};
 
 /// Resolves to {url, close()}: the server of `directory`, its address ending in "/".

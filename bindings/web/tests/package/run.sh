@@ -10,7 +10,7 @@ package_dir=$1
 native=$2
 work=$3
 here=$(cd "$(dirname "$0")" && pwd)
-for tool in node npm tsc; do
+for tool in node npm tsc esbuild; do
   if ! command -v $tool >/dev/null; then
     echo "SKIPPED: $tool is not installed (scripts/setup.sh installs it)"
     exit 77
@@ -28,9 +28,14 @@ cd "$work/game"
 npm init -y >/dev/null
 npm pkg set type=module
 npm install --offline --no-audit --no-fund --silent "$work/$tarball"
-cp "$here"/platformer.ts "$here"/tsconfig.json "$here"/expect.cjs "$here"/esm.mjs "$here"/cjs.cjs .
+cp "$here"/platformer.ts "$here"/tsconfig.json "$here"/expect.cjs "$here"/esm.mjs "$here"/cjs.cjs \
+   "$here"/*.html "$here"/worker.mjs "$here"/bundle.mjs .
 tsc -p .
 expected=$("$native")
 echo "C++: $expected"
 node esm.mjs "$expected"
 node cjs.cjs "$expected"
+# In a browser: as an ES module, bundled by esbuild (its wasm beside the bundle), in a worker.
+esbuild bundle.mjs --bundle --format=esm --log-level=warning --outfile=bundled/game.js
+cp node_modules/jostle/jostle.wasm bundled/
+node "$here"/browser.cjs . "$expected"
