@@ -1,8 +1,9 @@
 // page.js: jostle-demo on a web page. The same samples (demo/sample_*.cpp, in the
 // module), keys and mouse as the SDL window (docs/demo.md), touch for phones, drawn by
 // draw.js. With ?check in the address, the page runs every sample's check instead and
-// writes the hashes into its title, for the tests (bindings/web/tests).
-"use strict";
+// writes the hashes into its title, for the tests (bindings/web/tests). An ES module: the
+// package's API and the samples come from jostle-page.mjs (page_module.js, bundled).
+import {loadPage, JostlePage} from "./jostle-page.mjs";
 
 const kStepHz = 60;
 const kDt = 1 / kStepHz;
@@ -278,13 +279,12 @@ function runCheck() {
 
 async function main() {
   try {
-    state.jostle = await Jostle.load();
+    ({jostle: state.jostle, page: state.page} = await loadPage());
   } catch (error) {
     showError(`The module did not load: ${error.message}`);
     document.title = "jostle: failed";
     return;
   }
-  state.page = state.jostle.page;
   state.names = state.page.sampleNames();
   if (new URLSearchParams(location.search).has("check")) {
     runCheck();

@@ -1,6 +1,6 @@
 // A session in a real browser (headless Chromium, driven by cdp.js): keys pressed in the
 // platformer move the player, who jumps and lands; the canvas shows every body where the
-// module says it is; the JS API (jostle.js) runs a game's world and reports its errors.
+// module says it is; the package's API on the page runs a game's world and reports its errors.
 // Saves screenshots of the page (docs/web.png is one).
 //   node browser_session.js <page dir> <screenshot dir>
 //
@@ -121,9 +121,9 @@ async function canvasShowsBodies(page) {
         (report.notEmpty.length ? `: not ${JSON.stringify(report.notEmpty.slice(0, 3))}` : ""));
 }
 
-/// The JS API of docs/web.md: the README's crate falls onto the floor and rests at y 280
-/// (floor top 290, crate 10 high); a bad body throws the loader's message, named by the
-/// function and the field; a body number of undefined is refused (js_api.js checks the
+/// The package's API on the page (docs/javascript.md): the README's crate falls onto the
+/// floor and rests at y 280 (floor top 290, crate 10 high); a bad body throws the loader's
+/// message, named by the method and the field; a stale body is refused (api.mjs checks the
 /// rest in Node).
 async function gameApi(page) {
   const result = await page.evaluate(`(() => {
@@ -131,20 +131,21 @@ async function gameApi(page) {
     world.createBody({type: "static", x: 0, y: 300, hw: 400, hh: 10});
     const crate = world.createBody({x: 0, y: 0, hw: 10, hh: 10, bounce: 0.3});
     for (let i = 0; i < 120; i++) world.step(1 / 60);
-    const body = world.body(crate);
-    let error = "", bodyError = "";
+    const {y} = crate.position, floor = crate.touching.floor;
+    let error = "", staleError = "";
     try { world.createBody({x: 0, y: 0, hw: -1, hh: 10}); } catch (e) { error = e.message; }
-    try { world.body(undefined); } catch (e) { bodyError = e.constructor.name + ": " + e.message; }
-    const boxes = world.boxes().length;
+    const bodies = world.bodies().length;
+    crate.destroy();
+    try { crate.velocity; } catch (e) { staleError = e.message; }
     world.destroy();
-    return {y: body.y, floor: body.touching.floor, error, bodyError, boxes};
+    return {y, floor, error, staleError, bodies};
   })()`);
   check(Math.abs(result.y - 280) < 0.01 && result.floor,
         `the JS API's crate rests on the floor at y ${result.y} (280)`);
   check(result.error === "createBody: hw: must be > 0", `a body with hw -1 throws: "${result.error}"`);
-  check(result.bodyError === "TypeError: body: body must be a body number (an integer >= 0), got undefined",
-        `world.body(undefined) throws: "${result.bodyError}"`);
-  check(result.boxes === 2, "world.boxes() lists the floor and the crate");
+  check(result.staleError === "velocity: stale BodyId (the body was destroyed)",
+        `a destroyed crate is refused: "${result.staleError}"`);
+  check(result.bodies === 2, "world.bodies() lists the floor and the crate");
 }
 
 /// Keys 1 to 8 switch sample; a scene file loads into a pane of its own, and a bad one

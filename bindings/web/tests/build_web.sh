@@ -1,11 +1,15 @@
 #!/usr/bin/env bash
 # Builds the web module with emscripten: build_web.sh <source dir> <build dir>. Exits 77,
-# which ctest reads as skipped, where emscripten is not installed.
+# which ctest reads as skipped, where emscripten or esbuild is not installed.
 set -euo pipefail
 source_dir=$1
 build_dir=$2
 if ! command -v emcmake >/dev/null; then
   echo "SKIPPED: emscripten is not installed (scripts/setup.sh installs it: apt-get install emscripten)"
+  exit 77
+fi
+if ! command -v esbuild >/dev/null; then
+  echo "SKIPPED: esbuild is not installed (scripts/setup.sh installs it: apt-get install esbuild)"
   exit 77
 fi
 # Debian's emscripten runs its JavaScript tools with Debian's modules (acorn).

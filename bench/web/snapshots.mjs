@@ -1,19 +1,12 @@
-// snapshot_speed.js: what snapshots cost in WebAssembly (Node) beside the native build, on
+// What snapshots cost in WebAssembly (Node) beside the native build, on
 // the pile of bench/snapshots.cpp (1,000 boxes on a floor, 40 a row, friction 0.6, sleeping
 // off, stepped a second): the median of `runs` timings of snapshot(), restore(),
-// stateHash() and a step, through jostle.js as a game calls them, then the native
+// stateHash() and a step, through the npm package as a game calls them, then the native
 // program's figures for the same pile. Not a test: docs/benchmarks.md#snapshots has them.
-//   node snapshot_speed.js <page dir> <jostle-bench-snapshots> [runs]
-"use strict";
-
-const {execFileSync} = require("node:child_process");
-const fs = require("node:fs");
-const path = require("node:path");
-
-function loadPageScripts(pageDir) {
-  const read = (file) => fs.readFileSync(path.join(pageDir, file), "utf8");
-  return new Function(`${read("jostle-web.js")}\n${read("jostle.js")}\nreturn Jostle;`)();
-}
+//   node bench/web/snapshots.mjs <package dir> <jostle-bench-snapshots> [runs]
+import {execFileSync} from "node:child_process";
+import path from "node:path";
+import {pathToFileURL} from "node:url";
 
 function medianMicroseconds(runs, work) {
   const times = [];
@@ -27,10 +20,10 @@ function medianMicroseconds(runs, work) {
 }
 
 async function main() {
-  const [pageDir, nativeTool, runsText = "50"] = process.argv.slice(2);
+  const [packageDir, nativeTool, runsText = "50"] = process.argv.slice(2);
   const runs = Number(runsText);
-  const Jostle = loadPageScripts(path.resolve(pageDir));
-  const jostle = await Jostle.load({wasmBinary: fs.readFileSync(path.join(pageDir, "jostle-web.wasm"))});
+  const {load} = await import(pathToFileURL(path.resolve(packageDir, "jostle.mjs")).href);
+  const jostle = await load();
   const bodies = [{type: "static", x: 0, y: 10, hw: 2000, hh: 10}];
   for (let i = 0; i < 1000; i++)
     bodies.push({x: -500 + 10 * (i % 40), y: -5 - 10 * Math.floor(i / 40), hw: 5, hh: 5, friction: 0.6});
