@@ -3,7 +3,9 @@
 # Debian) and runs one: jostle beside both peers on every benchmark scene, or with `load`
 # first, scene files of a million bodies loaded (jostle-bench-load), or with `snapshots`
 # first, the size and speed of snapshots (jostle-bench-snapshots), or with `dispatch`
-# first, what handing a loop to the workers costs (jostle-bench-dispatch). The other arguments
+# first, what handing a loop to the workers costs (jostle-bench-dispatch), or with
+# `web-scenes DIR` first, the web benchmark's scenes written as files (scripts/bench-web.sh).
+# The other arguments
 # go to the program (try --help, --quick, --scene pyramid_100, --markdown; load --bodies N).
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -22,6 +24,11 @@ if [[ "${1:-}" == dispatch ]]; then
   shift
   cmake --build build-bench -j"$(nproc)" --target jostle_bench_dispatch
   exec ./build-bench/jostle-bench-dispatch "$@"
+fi
+if [[ "${1:-}" == web-scenes ]]; then
+  shift
+  cmake --build build-bench -j"$(nproc)" --target jostle_web_scenes
+  exec ./build-bench/jostle-web-scenes "$@"
 fi
 if [[ "${1:-}" == load ]]; then
   shift
