@@ -10,6 +10,7 @@ packages=(
   dpkg-dev lintian luarocks  # the Debian package and the rock (scripts/package.sh)
   libgtest-dev libgmock-dev  # tests
   nlohmann-json3-dev      # scene files
+  libpugixml-dev zlib1g-dev  # Tiled's maps: .tmx, compressed tile layers
   libcli11-dev            # the jostle program's command line
   libpng-dev libgif-dev   # jostle render's PNG and GIF files
   libsdl2-dev             # jostle-demo's window

@@ -1,0 +1,75 @@
+// Levels drawn in an editor, read into a Scene (docs/levels.md): Tiled's maps (.tmj/.json
+// and .tmx, with external tilesets). Part of the scene library (jostle::level), never the
+// core.
+//
+//     jostle::Level level = jostle::loadTiled("level.tmj");
+//     jostle::World world(level.scene.world);
+//     std::vector<jostle::BodyId> bodies = jostle::addBodies(world, level.scene);
+//     jostle::addTileMaps(world, level.scene);
+//     const jostle::LevelObject* spawn = level.find("spawn");
+//     jostle::BodyId lift = bodies[level.find("lift")->body];
+//
+// Tile layers become tile maps, each tile solid, one-way, a ramp or nothing by its
+// `collision` property (or the shape drawn in Tiled's collision editor, or the layer's
+// `collision`); objects become bodies, their settings custom properties named as in scene
+// files; every object comes back by name with its properties. A problem throws SceneError
+// naming the file, layer, tile or object: `level.tmj: layer "ground": tile 37 (column 5,
+// row 2): collision shape is not a rectangle or a ramp`.
+#pragma once
+
+#include "jostle/scene.hpp"
+
+#include <functional>
+#include <map>
+#include <string>
+#include <string_view>
+#include <variant>
+#include <vector>
+
+namespace jostle {
+
+/// A custom property's value as the editor wrote it: a boolean, a number, or text (a
+/// string, a colour, a file, an object's id as its number).
+using PropertyValue = std::variant<bool, double, std::string>;
+
+/// An object of a level, as the game looks it up by name: a spawn point, a door, an enemy.
+struct LevelObject {
+    std::string name;  ///< its name in the editor ("" if none)
+    std::string type;  ///< Tiled's class (its "type" before Tiled 1.9)
+    std::string layer; ///< the layer it is on
+    int id = 0;        ///< Tiled's object id
+    float x = 0.0f;    ///< its centre; a point's position
+    float y = 0.0f;
+    float hw = 0.0f; ///< half its width and height (0 for a point)
+    float hh = 0.0f;
+    std::map<std::string, PropertyValue> properties; ///< its custom properties, by name
+    /// The index in Level::scene.bodies of the body made from it (addBodies returns the
+    /// handles in that order), or -1: a point, or an object with `body` false.
+    int body = -1;
+};
+
+/// A level read from an editor's file: the scene to build, and the objects by name.
+struct Level {
+    Scene scene;
+    std::vector<LevelObject> objects; ///< every object of every object layer, in file order
+
+    /// The first object named `name`, or nullptr.
+    const LevelObject* find(std::string_view name) const;
+    /// Every object named `name`, in file order.
+    std::vector<const LevelObject*> all(std::string_view name) const;
+};
+
+/// Gives the text of a file a map names (an external tileset), by the path the map wrote;
+/// throws SceneError if there is none.
+using FileReader = std::function<std::string(const std::string& path)>;
+
+/// Reads a Tiled map, JSON (.tmj, .json) or XML (.tmx), with the external tilesets it
+/// names (.tsj, .json, .tsx) read beside it. Throws SceneError.
+Level loadTiled(const std::string& path);
+
+/// Reads a Tiled map from its text; `name` is what errors call it ("level.tmj"), and its
+/// external tilesets come from `readFile`. The format is the text's: XML if it starts
+/// with '<', else JSON. Throws SceneError.
+Level parseTiled(std::string_view text, const std::string& name, const FileReader& readFile);
+
+} // namespace jostle

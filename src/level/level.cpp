@@ -1,0 +1,60 @@
+// Loading a level: the file and the tilesets beside it read, the format told by the text,
+// and the objects found by name.
+#include "tiled_level.hpp"
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace jostle {
+
+const LevelObject* Level::find(std::string_view name) const {
+    for (const LevelObject& object : objects)
+        if (object.name == name)
+            return &object;
+    return nullptr;
+}
+
+std::vector<const LevelObject*> Level::all(std::string_view name) const {
+    std::vector<const LevelObject*> found;
+    for (const LevelObject& object : objects)
+        if (object.name == name)
+            found.push_back(&object);
+    return found;
+}
+
+namespace {
+
+std::string readWhole(const std::string& path, const std::string& shown) {
+    std::ifstream file(path, std::ios::binary);
+    if (!file)
+        throw SceneError(shown + ": cannot read the file");
+    std::ostringstream text;
+    text << file.rdbuf();
+    if (text.str().size() > kMaxSceneBytes)
+        throw SceneError(shown + ": larger than 1 GiB");
+    return text.str();
+}
+
+bool isXml(std::string_view text) {
+    const std::size_t start = text.find_first_not_of(" \t\r\n\xEF\xBB\xBF");
+    return start != std::string_view::npos && text[start] == '<';
+}
+
+} // namespace
+
+Level parseTiled(std::string_view text, const std::string& name, const FileReader& readFile) {
+    const tiled::Map map =
+        isXml(text) ? tiled::readTmx(text, name, readFile) : tiled::readJson(text, name, readFile);
+    return tiled::toLevel(map, name);
+}
+
+Level loadTiled(const std::string& path) {
+    const std::filesystem::path directory = std::filesystem::path(path).parent_path();
+    const FileReader besideTheMap = [&](const std::string& source) {
+        return readWhole((directory / source).string(), source);
+    };
+    return parseTiled(readWhole(path, path), path, besideTheMap);
+}
+
+} // namespace jostle

@@ -1,0 +1,134 @@
+// Decoding a tile layer's data: base64, zlib and gzip (zlib's inflate, which reads both
+// headers), CSV.
+#include "tile_data.hpp"
+
+#include <zlib.h>
+
+#include <array>
+#include <stdexcept>
+#include <string>
+
+namespace jostle::tiled {
+
+namespace {
+
+/// The bytes of base64 text; whitespace between groups is allowed (TMX indents its data).
+std::string fromBase64(std::string_view text) {
+    static const std::array<int, 256> kValue = [] {
+        std::array<int, 256> value{};
+        value.fill(-1);
+        const std::string_view alphabet =
+            "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+        for (std::size_t i = 0; i < alphabet.size(); ++i)
+            value[static_cast<unsigned char>(alphabet[i])] = static_cast<int>(i);
+        return value;
+    }();
+    std::string bytes;
+    bytes.reserve(text.size() / 4 * 3);
+    unsigned bits = 0;
+    int held = 0;
+    bool ended = false;
+    for (const char c : text) {
+        if (c == ' ' || c == '\n' || c == '\r' || c == '\t')
+            continue;
+        if (c == '=') {
+            ended = true;
+            continue;
+        }
+        const int value = kValue[static_cast<unsigned char>(c)];
+        if (value < 0 || ended)
+            throw std::runtime_error(std::string("data: not base64: '") + c + "'");
+        bits = (bits << 6) | static_cast<unsigned>(value);
+        held += 6;
+        if (held >= 8) {
+            held -= 8;
+            bytes.push_back(static_cast<char>((bits >> held) & 0xFFu));
+        }
+    }
+    return bytes;
+}
+
+/// zlib or gzip data inflated into exactly `size` bytes.
+std::string inflateExactly(const std::string& packed, std::size_t size,
+                           std::string_view compression) {
+    std::string bytes(size, '\0');
+    z_stream stream{};
+    // 15 + 32: a zlib or a gzip header, whichever it is.
+    if (inflateInit2(&stream, 15 + 32) != Z_OK)
+        throw std::runtime_error("data: zlib could not start");
+    stream.next_in = reinterpret_cast<Bytef*>(const_cast<char*>(packed.data()));
+    stream.avail_in = static_cast<uInt>(packed.size());
+    stream.next_out = reinterpret_cast<Bytef*>(bytes.data());
+    stream.avail_out = static_cast<uInt>(bytes.size());
+    const int result = inflate(&stream, Z_FINISH);
+    const std::size_t written = bytes.size() - stream.avail_out;
+    inflateEnd(&stream);
+    if (result != Z_STREAM_END || written != size)
+        throw std::runtime_error("data: not " + std::string(compression) + " data of " +
+                                 std::to_string(size / 4) + " tiles" +
+                                 (result == Z_BUF_ERROR ? " (it holds more)" : ""));
+    return bytes;
+}
+
+} // namespace
+
+std::vector<std::uint32_t> decodeBase64Gids(std::string_view text, std::string_view compression,
+                                            std::size_t count) {
+    if (count > (std::size_t{1} << 26))
+        throw std::runtime_error("data: more than 2^26 tiles");
+    std::string bytes = fromBase64(text);
+    if (compression == "zlib" || compression == "gzip")
+        bytes = inflateExactly(bytes, 4 * count, compression);
+    else if (compression == "zstd")
+        throw std::runtime_error(
+            "data: zstd compression is not read (save the map with zlib, gzip or none)");
+    else if (!compression.empty())
+        throw std::runtime_error("data: unknown compression \"" + std::string(compression) + "\"");
+    if (bytes.size() != 4 * count)
+        throw std::runtime_error("data: " + std::to_string(bytes.size() / 4) + " tiles, expected " +
+                                 std::to_string(count));
+    std::vector<std::uint32_t> gids(count);
+    for (std::size_t i = 0; i < count; ++i) {
+        const auto byte = [&](std::size_t k) {
+            return static_cast<std::uint32_t>(static_cast<unsigned char>(bytes[4 * i + k]));
+        };
+        gids[i] = byte(0) | byte(1) << 8 | byte(2) << 16 | byte(3) << 24;
+    }
+    return gids;
+}
+
+std::vector<std::uint32_t> decodeCsvGids(std::string_view text, std::size_t count) {
+    std::vector<std::uint32_t> gids;
+    gids.reserve(count);
+    std::size_t i = 0;
+    while (i < text.size()) {
+        while (i < text.size() &&
+               (text[i] == ' ' || text[i] == '\n' || text[i] == '\r' || text[i] == '\t'))
+            ++i;
+        if (i == text.size())
+            break;
+        std::uint64_t value = 0;
+        const std::size_t start = i;
+        while (i < text.size() && text[i] >= '0' && text[i] <= '9') {
+            value = value * 10 + static_cast<std::uint64_t>(text[i] - '0');
+            if (value > 0xFFFFFFFFu)
+                throw std::runtime_error("data: a tile id past 32 bits");
+            ++i;
+        }
+        if (i == start)
+            throw std::runtime_error(std::string("data: expected a tile id, got '") + text[i] +
+                                     "'");
+        gids.push_back(static_cast<std::uint32_t>(value));
+        while (i < text.size() &&
+               (text[i] == ' ' || text[i] == '\n' || text[i] == '\r' || text[i] == '\t'))
+            ++i;
+        if (i < text.size() && text[i] == ',')
+            ++i;
+    }
+    if (gids.size() != count)
+        throw std::runtime_error("data: " + std::to_string(gids.size()) + " tiles, expected " +
+                                 std::to_string(count));
+    return gids;
+}
+
+} // namespace jostle::tiled

@@ -1,0 +1,366 @@
+// A Tiled map turned into a Level (docs/levels.md): tile layers into tile maps, objects
+// into bodies and named objects. The rules a designer meets are here; the formats are
+// tiled_json.cpp's and tiled_tmx.cpp's.
+#include "tiled_level.hpp"
+
+#include "body_properties.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <string_view>
+
+namespace jostle::tiled {
+
+namespace {
+
+/// How a tile collides: a tile map character ('#', '.', a ramp's) and whether it is one-way.
+struct TileKind {
+    char tile = '.';
+    bool oneWay = false;
+};
+
+constexpr std::string_view kRamps = "/\\7FrRLlcCDd";
+
+std::string quoted(const std::string& text) {
+    return "\"" + text + "\"";
+}
+
+/// The kind a `collision` property names, or nullopt for a name that is none.
+std::optional<TileKind> kindNamed(const std::string& name) {
+    if (name == "solid")
+        return TileKind{'#', false};
+    if (name == "oneWay")
+        return TileKind{'#', true};
+    if (name == "none")
+        return TileKind{'.', false};
+    if (name.size() == 1 && kRamps.find(name[0]) != std::string_view::npos)
+        return TileKind{name[0], false};
+    return std::nullopt;
+}
+
+/// A ramp seen through Tiled's flips (diagonal first, then horizontal, then vertical, as
+/// Tiled applies them); nullopt where the result is no ramp of jostle's (a 2:1 ramp on its
+/// side).
+std::optional<char> flipped(char tile, std::uint32_t flags) {
+    const auto swap = [](char c, std::string_view from, std::string_view to) {
+        const std::size_t at = from.find(c);
+        return at == std::string_view::npos ? c : to[at];
+    };
+    if (tile == '#' || tile == '.')
+        return tile;
+    if (flags & kFlipDiagonal) {
+        if (std::string_view("rRLlcCDd").find(tile) != std::string_view::npos)
+            return std::nullopt;
+        tile = swap(tile, "\\7", "7\\");
+    }
+    if (flags & kFlipHorizontal)
+        tile = swap(tile, "/\\7FrRLlcCDd", "\\/F7lLRrdDCc");
+    if (flags & kFlipVertical)
+        tile = swap(tile, "/\\7FrRlLcCdD", "7F/\\cCdDrRlL");
+    return tile;
+}
+
+/// The kind of a tile drawn in Tiled's collision editor: one rectangle covering it is
+/// solid, one triangle that is a 45° ramp is that ramp, nothing is nothing; nullopt for
+/// anything else.
+std::optional<TileKind> kindDrawn(const std::vector<Object>& shapes, double w, double h) {
+    if (shapes.empty())
+        return TileKind{};
+    if (shapes.size() != 1)
+        return std::nullopt;
+    const Object& s = shapes.front();
+    const auto near = [](double a, double b) { return std::abs(a - b) <= 0.5; };
+    if (s.shape == Shape::Rectangle && s.gid == 0 && s.rotation == 0.0)
+        return near(s.x, 0) && near(s.y, 0) && near(s.width, w) && near(s.height, h)
+                   ? std::optional(TileKind{'#', false})
+                   : std::nullopt;
+    if (s.shape != Shape::Polygon || s.points.size() != 3 || s.rotation != 0.0)
+        return std::nullopt;
+    // The three corners of the tile the triangle has, as bits: 1 top left, 2 top right,
+    // 4 bottom right, 8 bottom left.
+    int corners = 0;
+    for (const Point& p : s.points) {
+        const double x = s.x + p.x, y = s.y + p.y;
+        const int corner = near(x, 0) && near(y, 0)   ? 1
+                           : near(x, w) && near(y, 0) ? 2
+                           : near(x, w) && near(y, h) ? 4
+                           : near(x, 0) && near(y, h) ? 8
+                                                      : 0;
+        if (corner == 0 || (corners & corner))
+            return std::nullopt;
+        corners |= corner;
+    }
+    switch (corners) {
+    case 2 | 4 | 8:
+        return TileKind{'/', false}; // solid bottom right
+    case 1 | 4 | 8:
+        return TileKind{'\\', false}; // bottom left
+    case 1 | 2 | 4:
+        return TileKind{'7', false}; // top right
+    case 1 | 2 | 8:
+        return TileKind{'F', false}; // top left
+    default:
+        return std::nullopt;
+    }
+}
+
+/// Body fields of scene files (src/body_properties.hpp): the custom properties a body
+/// takes.
+bool isBodyField(const std::string& name) {
+    for (const auto& field : properties::kBodyFields)
+        if (name == field.property->name)
+            return true;
+    return false;
+}
+
+nlohmann::json toJson(const PropertyValue& value) {
+    return std::visit([](const auto& v) { return nlohmann::json(v); }, value);
+}
+
+/// A scene file's vector from a custom property: "0, -1" or "[0, -1]" (Tiled has no
+/// vector property); anything else goes to the loader as it is, to be refused by name.
+nlohmann::json vectorOrAsIs(const PropertyValue& value) {
+    if (const auto* text = std::get_if<std::string>(&value)) {
+        double x = 0, y = 0;
+        char end = 0;
+        const std::string trimmed =
+            text->find('[') == std::string::npos ? "[" + *text + "]" : *text;
+        if (std::sscanf(trimmed.c_str(), " [ %lf , %lf ] %c", &x, &y, &end) == 2)
+            return nlohmann::json::array({x, y});
+    }
+    return toJson(value);
+}
+
+class Builder {
+public:
+    Builder(const Map& map, const std::string& file) : map_(map), file_(file) {}
+
+    Level build() {
+        if (map_.orientation != "orthogonal")
+            fail(file_,
+                 quoted(map_.orientation) + " maps are not read: jostle reads orthogonal maps");
+        if (map_.tileWidth <= 0 || map_.tileWidth != map_.tileHeight)
+            fail(file_, "tiles must be square, got " + std::to_string(map_.tileWidth) + " x " +
+                            std::to_string(map_.tileHeight));
+        world();
+        for (const Layer& layer : map_.layers)
+            this->layer(layer, 0.0, 0.0);
+        return std::move(level_);
+    }
+
+private:
+    /// The world's settings from the map's custom properties, as a scene file names them:
+    /// gravityX and gravityY (Tiled has no vector), solver, sleeping, maxVelocity.
+    void world() {
+        nlohmann::json scene = {{"bodies", nlohmann::json::array()}};
+        const auto& p = map_.properties;
+        if (p.contains("gravityX") || p.contains("gravityY")) {
+            const auto number = [&](const char* key) {
+                const auto found = p.find(key);
+                return found == p.end() ? nlohmann::json(0) : toJson(found->second);
+            };
+            scene["gravity"] = nlohmann::json::array({number("gravityX"), number("gravityY")});
+        }
+        for (const char* key : {"solver", "sleeping", "maxVelocity"})
+            if (const auto found = p.find(key); found != p.end())
+                scene[key] = toJson(found->second);
+        try {
+            level_.scene.world = parseScene(scene.dump()).world;
+        } catch (const SceneError& error) {
+            fail(file_, std::string("map properties: ") + error.what());
+        }
+    }
+
+    void layer(const Layer& layer, double offsetX, double offsetY) {
+        offsetX += layer.offsetX;
+        offsetY += layer.offsetY;
+        if (layer.kind == LayerKind::Tiles)
+            tiles(layer, offsetX, offsetY);
+        else if (layer.kind == LayerKind::Objects)
+            for (const Object& object : layer.objects)
+                this->object(object, layer, offsetX, offsetY);
+        else if (layer.kind == LayerKind::Group)
+            for (const Layer& child : layer.layers)
+                this->layer(child, offsetX, offsetY);
+    }
+
+    const Tileset* tilesetOf(std::uint32_t gid) const {
+        const Tileset* found = nullptr;
+        for (const Tileset& set : map_.tilesets)
+            if (set.firstGid <= gid && (found == nullptr || set.firstGid > found->firstGid))
+                found = &set;
+        return found;
+    }
+
+    /// A tile layer: one tile map of its solid tiles and ramps, one of its one-way tiles.
+    void tiles(const Layer& layer, double offsetX, double offsetY) {
+        const std::string place = "layer " + quoted(layer.name);
+        std::optional<TileKind> layerKind;
+        if (const auto found = layer.properties.find("collision");
+            found != layer.properties.end()) {
+            const auto* name = std::get_if<std::string>(&found->second);
+            layerKind = name ? kindNamed(*name) : std::nullopt;
+            if (!layerKind)
+                fail(file_, place + ": collision: expected \"solid\", \"oneWay\", \"none\" or a "
+                                    "ramp's character");
+        }
+        const std::size_t columns = static_cast<std::size_t>(layer.width);
+        std::vector<std::string> solid(static_cast<std::size_t>(layer.height),
+                                       std::string(columns, '.'));
+        std::vector<std::string> oneWay = solid;
+        bool anySolid = false, anyOneWay = false;
+        for (std::size_t row = 0; row < solid.size(); ++row)
+            for (std::size_t column = 0; column < columns; ++column) {
+                const std::uint32_t gid = layer.gids[row * columns + column];
+                if ((gid & kGidBits) == 0)
+                    continue;
+                const TileKind kind =
+                    kindOf(gid, layer, layerKind, static_cast<int>(column), static_cast<int>(row));
+                (kind.oneWay ? oneWay : solid)[row][column] = kind.tile;
+                (kind.oneWay ? anyOneWay : anySolid) |= kind.tile != '.';
+            }
+        TileMapDef def = tileMapSettings(layer, place);
+        def.x = static_cast<float>(offsetX + double(layer.left) * map_.tileWidth);
+        def.y = static_cast<float>(offsetY + double(layer.top) * map_.tileWidth);
+        def.tile = static_cast<float>(map_.tileWidth);
+        if (anySolid) {
+            def.rows = std::move(solid);
+            level_.scene.tileMaps.push_back(def);
+        }
+        if (anyOneWay) {
+            def.rows = std::move(oneWay);
+            def.oneWay = {0.0f, -1.0f};
+            level_.scene.tileMaps.push_back(def);
+        }
+    }
+
+    TileKind kindOf(std::uint32_t gid, const Layer& layer, const std::optional<TileKind>& layerKind,
+                    int column, int row) const {
+        const Tileset* set = tilesetOf(gid & kGidBits);
+        const int id = set ? static_cast<int>((gid & kGidBits) - set->firstGid) : -1;
+        const std::string place = "layer " + quoted(layer.name) + ": tile " + std::to_string(id) +
+                                  " (column " + std::to_string(layer.left + column) + ", row " +
+                                  std::to_string(layer.top + row) + ")";
+        if (set == nullptr || (set->tileCount > 0 && id >= set->tileCount))
+            fail(file_, place + ": no tileset has tile id " + std::to_string(gid & kGidBits));
+        if (gid & kRotatedHex)
+            fail(file_, place + ": a hexagonal rotation");
+        std::optional<TileKind> kind;
+        const auto tile = set->tiles.find(id);
+        if (tile != set->tiles.end()) {
+            if (const auto found = tile->second.properties.find("collision");
+                found != tile->second.properties.end()) {
+                const auto* name = std::get_if<std::string>(&found->second);
+                kind = name ? kindNamed(*name) : std::nullopt;
+                if (!kind)
+                    fail(file_, place + ": collision: expected \"solid\", \"oneWay\", \"none\" or "
+                                        "a ramp's character");
+            } else if (!tile->second.shapes.empty()) {
+                kind = kindDrawn(tile->second.shapes, set->tileWidth, set->tileHeight);
+                if (!kind)
+                    fail(file_, place + ": collision shape is not a rectangle or a ramp");
+            }
+        }
+        if (!kind)
+            kind = layerKind.value_or(TileKind{});
+        const std::optional<char> turned = flipped(kind->tile, gid);
+        if (!turned)
+            fail(file_, place + ": a 2:1 ramp turned on its side is no ramp of jostle's");
+        return {*turned, kind->oneWay};
+    }
+
+    /// A tile layer's custom properties that are tile map settings: friction, bounce,
+    /// category, mask, sensor.
+    TileMapDef tileMapSettings(const Layer& layer, const std::string& place) const {
+        nlohmann::json map = {{"tile", 1}, {"rows", {"#"}}};
+        for (const char* key : {"friction", "bounce", "category", "mask", "sensor"})
+            if (const auto found = layer.properties.find(key); found != layer.properties.end())
+                map[key] = toJson(found->second);
+        try {
+            return parseScene(
+                       nlohmann::json{{"tilemap", map}, {"bodies", nlohmann::json::array()}}.dump())
+                .tileMaps.front();
+        } catch (const SceneError& error) {
+            std::string message = error.what();
+            if (message.starts_with("tilemap."))
+                message.erase(0, 8);
+            fail(file_, place + ": " + message);
+        }
+    }
+
+    void object(const Object& o, const Layer& layer, double offsetX, double offsetY) {
+        const std::string place = "layer " + quoted(layer.name) + ": object " +
+                                  (o.name.empty() ? "" : quoted(o.name) + " ") + "(id " +
+                                  std::to_string(o.id) + ")";
+        if (o.rotation != 0.0)
+            fail(file_, place + ": rotated objects are not read: jostle's bodies are upright");
+        LevelObject out;
+        out.name = o.name;
+        out.type = o.type;
+        out.layer = layer.name;
+        out.id = o.id;
+        out.properties = o.properties;
+        double x = offsetX + o.x, y = offsetY + o.y, w = o.width, h = o.height;
+        if (o.gid != 0)
+            y -= h; // a tile object stands on its (x, y)
+        out.x = static_cast<float>(x + w / 2);
+        out.y = static_cast<float>(y + h / 2);
+        out.hw = static_cast<float>(w / 2);
+        out.hh = static_cast<float>(h / 2);
+        const auto body = o.properties.find("body");
+        const bool wantsBody = body == o.properties.end() || body->second != PropertyValue(false);
+        if (o.shape == Shape::Polygon || o.shape == Shape::Polyline) {
+            if (wantsBody)
+                fail(file_, place + ": polygons and polylines are not read yet (give it body = "
+                                    "false to keep it as a named object)");
+        } else if (wantsBody && (o.shape == Shape::Rectangle || o.shape == Shape::Ellipse)) {
+            out.body = static_cast<int>(level_.scene.bodies.size());
+            level_.scene.bodies.push_back(
+                {o.name.empty() ? std::to_string(o.id) : o.name, bodyOf(o, out, place)});
+        }
+        level_.objects.push_back(std::move(out));
+    }
+
+    /// The body of a rectangle, an ellipse (a circle or an upright or lying capsule) or a
+    /// tile object: its centre and size from the object, its settings from the custom
+    /// properties named as scene files name body fields, read by the scene loader.
+    BodyDef bodyOf(const Object& o, const LevelObject& out, const std::string& place) const {
+        nlohmann::json def = nlohmann::json::object();
+        for (const auto& [name, value] : o.properties)
+            if (isBodyField(name) && name != "x" && name != "y" && name != "hw" && name != "hh")
+                def[name] = name == "oneWay" || name == "slope" || name == "surfaceVelocity"
+                                ? vectorOrAsIs(value)
+                                : toJson(value);
+        def["x"] = out.x;
+        def["y"] = out.y;
+        def["hw"] = out.hw;
+        def["hh"] = out.hh;
+        if (o.shape == Shape::Ellipse)
+            def["radius"] = std::min(out.hw, out.hh);
+        try {
+            const Scene scene = parseScene(nlohmann::json{
+                {"solver", toString(level_.scene.world.solver)},
+                {"bodies", {def}}}.dump());
+            return scene.bodies.front().def;
+        } catch (const SceneError& error) {
+            std::string message = error.what();
+            for (const std::string_view prefix : {"bodies[0].", "bodies[0]: "})
+                if (message.starts_with(prefix))
+                    message.erase(0, prefix.size());
+            fail(file_, place + ": " + message);
+        }
+    }
+
+    const Map& map_;
+    const std::string& file_;
+    Level level_;
+};
+
+} // namespace
+
+Level toLevel(const Map& map, const std::string& file) {
+    return Builder(map, file).build();
+}
+
+} // namespace jostle::tiled

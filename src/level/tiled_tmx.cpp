@@ -1,0 +1,257 @@
+// Tiled's XML format (.tmx, .tsx) read into tiled::Map with pugixml: doc.mapeditor.org's
+// "TMX Map Format". The same model as the JSON reader's, so that both formats give one
+// level.
+#include "tile_data.hpp"
+#include "tiled_map.hpp"
+
+#include <pugixml.hpp>
+
+#include <climits>
+#include <cstdlib>
+#include <stdexcept>
+
+namespace jostle::tiled {
+
+namespace {
+
+struct Reader {
+    const std::string& file;
+
+    [[noreturn]] void bad(const std::string& place, const std::string& what) const {
+        fail(file, place + ": " + what);
+    }
+
+    double number(const pugi::xml_node& node, const char* key, const std::string& place,
+                  double fallback) const {
+        const pugi::xml_attribute attribute = node.attribute(key);
+        if (!attribute)
+            return fallback;
+        char* end = nullptr;
+        const double value = std::strtod(attribute.value(), &end);
+        if (end == attribute.value() || *end != '\0')
+            bad(place, std::string(key) + ": expected a number, got \"" + attribute.value() + "\"");
+        return value;
+    }
+    int integer(const pugi::xml_node& node, const char* key, const std::string& place,
+                int fallback) const {
+        const double value = number(node, key, place, fallback);
+        if (value != static_cast<double>(static_cast<int>(value)))
+            bad(place, std::string(key) + ": expected a whole number");
+        return static_cast<int>(value);
+    }
+
+    Properties properties(const pugi::xml_node& node) const {
+        Properties out;
+        for (const pugi::xml_node& property : node.child("properties").children("property")) {
+            const std::string type = property.attribute("type").value();
+            const pugi::xml_attribute value = property.attribute("value");
+            const std::string text = value ? value.value() : property.text().get();
+            if (type == "bool")
+                out[property.attribute("name").value()] = text == "true";
+            else if (type == "int" || type == "float" || type == "object")
+                out[property.attribute("name").value()] = std::strtod(text.c_str(), nullptr);
+            else if (type != "class")
+                out[property.attribute("name").value()] = text;
+        }
+        return out;
+    }
+
+    Object object(const pugi::xml_node& node, const std::string& place) const {
+        Object o;
+        o.id = integer(node, "id", place, 0);
+        o.name = node.attribute("name").value();
+        o.type = node.attribute("class") ? node.attribute("class").value()
+                                         : node.attribute("type").value();
+        o.x = number(node, "x", place, 0);
+        o.y = number(node, "y", place, 0);
+        o.width = number(node, "width", place, 0);
+        o.height = number(node, "height", place, 0);
+        o.rotation = number(node, "rotation", place, 0);
+        o.gid = static_cast<std::uint32_t>(number(node, "gid", place, 0));
+        o.properties = properties(node);
+        if (node.child("ellipse"))
+            o.shape = Shape::Ellipse;
+        else if (node.child("point"))
+            o.shape = Shape::Point;
+        else if (node.child("text"))
+            o.shape = Shape::Text;
+        for (const char* kind : {"polygon", "polyline"})
+            if (const pugi::xml_node poly = node.child(kind)) {
+                o.shape = std::string(kind) == "polygon" ? Shape::Polygon : Shape::Polyline;
+                // "x1,y1 x2,y2 ..."
+                const char* at = poly.attribute("points").value();
+                while (*at != '\0') {
+                    char* end = nullptr;
+                    const double x = std::strtod(at, &end);
+                    if (end == at || *end != ',')
+                        bad(place, std::string(kind) + ": points: expected \"x,y x,y ...\"");
+                    at = end + 1;
+                    const double y = std::strtod(at, &end);
+                    if (end == at)
+                        bad(place, std::string(kind) + ": points: expected \"x,y x,y ...\"");
+                    o.points.push_back({x, y});
+                    at = end;
+                    while (*at == ' ')
+                        ++at;
+                }
+            }
+        return o;
+    }
+
+    std::vector<std::uint32_t> gids(const pugi::xml_node& data, const char* text, std::size_t count,
+                                    const std::string& place) const {
+        const std::string encoding = data.attribute("encoding").value();
+        try {
+            if (encoding == "csv")
+                return decodeCsvGids(text, count);
+            if (encoding == "base64")
+                return decodeBase64Gids(text, data.attribute("compression").value(), count);
+            if (!encoding.empty())
+                bad(place, "data: unknown encoding \"" + encoding + "\"");
+            // The oldest form: a <tile gid="..."/> per cell.
+            std::vector<std::uint32_t> out;
+            for (const pugi::xml_node& tile : data.children("tile"))
+                out.push_back(static_cast<std::uint32_t>(number(tile, "gid", place, 0)));
+            if (out.size() != count)
+                bad(place, "data: " + std::to_string(out.size()) + " tiles, expected " +
+                               std::to_string(count));
+            return out;
+        } catch (const SceneError&) {
+            throw;
+        } catch (const std::runtime_error& error) {
+            bad(place, error.what());
+        }
+    }
+
+    void tileData(const pugi::xml_node& node, Layer& layer, const std::string& place) const {
+        const pugi::xml_node data = node.child("data");
+        const auto size = [&](const pugi::xml_node& of, const std::string& where) {
+            const int width = integer(of, "width", where, 0),
+                      height = integer(of, "height", where, 0);
+            if (width < 0 || height < 0 || static_cast<double>(width) * height > double(1 << 26))
+                bad(where, "width and height: expected at least 0, and 2^26 tiles at most");
+            return std::pair{width, height};
+        };
+        if (!data.child("chunk")) {
+            std::tie(layer.width, layer.height) = size(node, place);
+            const std::size_t count = std::size_t(layer.width) * layer.height;
+            layer.gids = data ? gids(data, data.text().get(), count, place)
+                              : std::vector<std::uint32_t>(count);
+            return;
+        }
+        int left = INT_MAX, top = INT_MAX, right = INT_MIN, bottom = INT_MIN;
+        for (const pugi::xml_node& chunk : data.children("chunk")) {
+            const auto [w, h] = size(chunk, place + ": chunk");
+            left = std::min(left, integer(chunk, "x", place, 0));
+            top = std::min(top, integer(chunk, "y", place, 0));
+            right = std::max(right, integer(chunk, "x", place, 0) + w);
+            bottom = std::max(bottom, integer(chunk, "y", place, 0) + h);
+        }
+        if (double(right - left) * double(bottom - top) > double(1 << 26))
+            bad(place, "chunks: more than 2^26 tiles in their bounds");
+        layer.left = left, layer.top = top, layer.width = right - left, layer.height = bottom - top;
+        layer.gids.assign(std::size_t(layer.width) * layer.height, 0);
+        for (const pugi::xml_node& chunk : data.children("chunk")) {
+            const auto [w, h] = size(chunk, place + ": chunk");
+            const int cx = integer(chunk, "x", place, 0), cy = integer(chunk, "y", place, 0);
+            const std::vector<std::uint32_t> chunkGids =
+                gids(data, chunk.text().get(), std::size_t(w) * h, place);
+            for (int row = 0; row < h; ++row)
+                for (int column = 0; column < w; ++column)
+                    layer.gids[std::size_t(cy - top + row) * layer.width + (cx - left + column)] =
+                        chunkGids[std::size_t(row) * w + column];
+        }
+    }
+
+    /// The layers under `parent` (the map or a group), in file order.
+    void layers(const pugi::xml_node& parent, std::vector<Layer>& out,
+                const std::string& prefix) const {
+        for (const pugi::xml_node& node : parent.children()) {
+            const std::string kind = node.name();
+            if (kind != "layer" && kind != "objectgroup" && kind != "group")
+                continue;
+            Layer layer;
+            layer.name = node.attribute("name").value();
+            const std::string place = prefix + "layer \"" + layer.name + "\"";
+            layer.properties = properties(node);
+            layer.offsetX = number(node, "offsetx", place, 0);
+            layer.offsetY = number(node, "offsety", place, 0);
+            if (kind == "layer") {
+                layer.kind = LayerKind::Tiles;
+                tileData(node, layer, place);
+            } else if (kind == "objectgroup") {
+                layer.kind = LayerKind::Objects;
+                for (const pugi::xml_node& object : node.children("object"))
+                    layer.objects.push_back(this->object(object, place));
+            } else {
+                layer.kind = LayerKind::Group;
+                layers(node, layer.layers, place + ": ");
+            }
+            out.push_back(std::move(layer));
+        }
+    }
+
+    Tileset tileset(const pugi::xml_node& node, std::uint32_t firstGid) const {
+        Tileset set;
+        set.firstGid = firstGid;
+        set.name = node.attribute("name").value();
+        const std::string place = "tileset \"" + set.name + "\"";
+        set.tileWidth = integer(node, "tilewidth", place, 0);
+        set.tileHeight = integer(node, "tileheight", place, 0);
+        set.tileCount = integer(node, "tilecount", place, 0);
+        for (const pugi::xml_node& tile : node.children("tile")) {
+            const int id = integer(tile, "id", place, -1);
+            if (id < 0)
+                bad(place, "a tile without an id");
+            Tile& t = set.tiles[id];
+            t.properties = properties(tile);
+            for (const pugi::xml_node& shape : tile.child("objectgroup").children("object"))
+                t.shapes.push_back(object(shape, place + ": tile " + std::to_string(id)));
+        }
+        return set;
+    }
+};
+
+pugi::xml_document parse(std::string_view text, const std::string& file) {
+    pugi::xml_document document;
+    const pugi::xml_parse_result result = document.load_buffer(text.data(), text.size());
+    if (!result)
+        fail(file, std::string("not XML: ") + result.description() + " at byte " +
+                       std::to_string(result.offset));
+    return document;
+}
+
+} // namespace
+
+Map readTmx(std::string_view text, const std::string& name, const FileReader& readFile) {
+    const pugi::xml_document document = parse(text, name);
+    const pugi::xml_node root = document.child("map");
+    if (!root)
+        fail(name, "not a Tiled map (no <map>)");
+    const Reader read{name};
+    Map map;
+    map.orientation = root.attribute("orientation").value();
+    map.tileWidth = read.integer(root, "tilewidth", "map", 0);
+    map.tileHeight = read.integer(root, "tileheight", "map", 0);
+    map.properties = read.properties(root);
+    for (const pugi::xml_node& set : root.children("tileset")) {
+        const auto firstGid =
+            static_cast<std::uint32_t>(read.integer(set, "firstgid", "tileset", 1));
+        const std::string source = set.attribute("source").value();
+        map.tilesets.push_back(source.empty()
+                                   ? read.tileset(set, firstGid)
+                                   : readExternalTileset(source, firstGid, name, readFile));
+    }
+    read.layers(root, map.layers, "");
+    return map;
+}
+
+Tileset readTilesetTmx(std::string_view text, const std::string& name, std::uint32_t firstGid) {
+    const pugi::xml_document document = parse(text, name);
+    const pugi::xml_node root = document.child("tileset");
+    if (!root)
+        fail(name, "not a Tiled tileset (no <tileset>)");
+    return Reader{name}.tileset(root, firstGid);
+}
+
+} // namespace jostle::tiled
