@@ -46,6 +46,9 @@ struct LevelObject {
     /// The index in Level::scene.bodies of the body made from it (addBodies returns the
     /// handles in that order), or -1: a point, or an object with `body` false.
     int body = -1;
+    /// How many bodies were made from it, from `body` on: 1, or a polygon's or polyline's
+    /// sides (one one-sided segment each), or 0.
+    int bodyCount = 0;
 };
 
 /// A level read from an editor's file: the scene to build, and the objects by name.

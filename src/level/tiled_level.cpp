@@ -310,16 +310,87 @@ private:
         out.hh = static_cast<float>(h / 2);
         const auto body = o.properties.find("body");
         const bool wantsBody = body == o.properties.end() || body->second != PropertyValue(false);
-        if (o.shape == Shape::Polygon || o.shape == Shape::Polyline) {
-            if (wantsBody)
-                fail(file_, place + ": polygons and polylines are not read yet (give it body = "
-                                    "false to keep it as a named object)");
+        const std::string id = o.name.empty() ? std::to_string(o.id) : o.name;
+        if (wantsBody && (o.shape == Shape::Polygon || o.shape == Shape::Polyline)) {
+            out.body = static_cast<int>(level_.scene.bodies.size());
+            for (const BodyDef& side : sidesOf(o, x, y, place))
+                level_.scene.bodies.push_back(
+                    {id + "." + std::to_string(level_.scene.bodies.size() - std::size_t(out.body)),
+                     side});
+            out.bodyCount = static_cast<int>(level_.scene.bodies.size()) - out.body;
         } else if (wantsBody && (o.shape == Shape::Rectangle || o.shape == Shape::Ellipse)) {
             out.body = static_cast<int>(level_.scene.bodies.size());
-            level_.scene.bodies.push_back(
-                {o.name.empty() ? std::to_string(o.id) : o.name, bodyOf(o, out, place)});
+            out.bodyCount = 1;
+            level_.scene.bodies.push_back({id, bodyOf(o, out, place)});
         }
         level_.objects.push_back(std::move(out));
+    }
+
+    /// The sides of a polygon or polyline at (x, y), each a static one-sided segment
+    /// (docs/levels.md): a slanted side a ramp's sloped face alone (BodyDef::segment), a
+    /// level or upright side a thin one-way box, each blocking on its outer side (a
+    /// polygon's outside; a polyline's left, going from point to point: a line drawn left
+    /// to right blocks from above). Their other settings are the object's custom properties.
+    std::vector<BodyDef> sidesOf(const Object& o, double x, double y,
+                                 const std::string& place) const {
+        std::vector<Point> points;
+        for (const Point& p : o.points)
+            points.push_back({x + p.x, y + p.y});
+        if (o.shape == Shape::Polygon && points.size() >= 3)
+            points.push_back(points.front());
+        if (points.size() < 2)
+            fail(file_, place + ": a polygon or polyline needs at least two points");
+        // Screen y grows downward: a polygon whose shoelace sum is positive goes round
+        // clockwise on screen, and its outside is on the left of each side.
+        double area = 0;
+        for (std::size_t i = 0; i + 1 < points.size(); ++i)
+            area += points[i].x * points[i + 1].y - points[i + 1].x * points[i].y;
+        const bool outsideOnLeft = o.shape == Shape::Polyline || area > 0;
+        constexpr double kThin = 0.5; // the half thickness of a level or upright side
+        const auto sign = [](double v) { return v > 0 ? 1.0 : -1.0; };
+        std::vector<BodyDef> sides;
+        for (std::size_t i = 0; i + 1 < points.size(); ++i) {
+            const double dx = points[i + 1].x - points[i].x, dy = points[i + 1].y - points[i].y;
+            if (dx == 0 && dy == 0)
+                continue;
+            // The outer normal's direction: the left of (dx, dy) is (dy, -dx) on screen.
+            const double nx = outsideOnLeft ? dy : -dy, ny = outsideOnLeft ? -dx : dx;
+            nlohmann::json side = nlohmann::json::object();
+            for (const auto& [name, value] : o.properties)
+                if (isBodyField(name))
+                    side[name] = toJson(value);
+            if (!side.contains("type"))
+                side["type"] = "static";
+            side["x"] = (points[i].x + points[i + 1].x) / 2;
+            side["y"] = (points[i].y + points[i + 1].y) / 2;
+            side["hw"] = dx == 0 ? kThin : std::abs(dx) / 2;
+            side["hh"] = dy == 0 ? kThin : std::abs(dy) / 2;
+            if (dx != 0 && dy != 0) {
+                side["slope"] = {sign(nx), sign(ny)};
+                side["segment"] = true;
+            } else {
+                side["oneWay"] =
+                    dx == 0 ? nlohmann::json{sign(nx), 0} : nlohmann::json{0, sign(ny)};
+            }
+            sides.push_back(readBody(side, place + ": side " + std::to_string(i)));
+        }
+        return sides;
+    }
+
+    /// A body object of a scene file read by the scene loader, its messages about `place`.
+    BodyDef readBody(const nlohmann::json& def, const std::string& place) const {
+        try {
+            const Scene scene = parseScene(nlohmann::json{
+                {"solver", toString(level_.scene.world.solver)},
+                {"bodies", {def}}}.dump());
+            return scene.bodies.front().def;
+        } catch (const SceneError& error) {
+            std::string message = error.what();
+            for (const std::string_view prefix : {"bodies[0].", "bodies[0]: "})
+                if (message.starts_with(prefix))
+                    message.erase(0, prefix.size());
+            fail(file_, place + ": " + message);
+        }
     }
 
     /// The body of a rectangle, an ellipse (a circle or an upright or lying capsule) or a
@@ -338,18 +409,7 @@ private:
         def["hh"] = out.hh;
         if (o.shape == Shape::Ellipse)
             def["radius"] = std::min(out.hw, out.hh);
-        try {
-            const Scene scene = parseScene(nlohmann::json{
-                {"solver", toString(level_.scene.world.solver)},
-                {"bodies", {def}}}.dump());
-            return scene.bodies.front().def;
-        } catch (const SceneError& error) {
-            std::string message = error.what();
-            for (const std::string_view prefix : {"bodies[0].", "bodies[0]: "})
-                if (message.starts_with(prefix))
-                    message.erase(0, prefix.size());
-            fail(file_, place + ": " + message);
-        }
+        return readBody(def, place);
     }
 
     const Map& map_;

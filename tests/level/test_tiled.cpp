@@ -164,6 +164,56 @@ TEST(Tiled, FlipFlagsTurnRamps) {
     }
 }
 
+/// A map of 16 px tiles with no tile layer and one object layer of `objects` (JSON).
+std::string mapOfObjects(const std::string& objects) {
+    return R"({"orientation": "orthogonal", "tilewidth": 16, "tileheight": 16, "tilesets": [],
+               "layers": [{"type": "objectgroup", "name": "lines", "objects": [)" +
+           objects + "]}]}";
+}
+
+TEST(Tiled, APolylineIsOneSidedSegmentsBlockingOnItsLeft) {
+    // Right along y = 100, then up a 45° slope: drawn left to right, it blocks from above.
+    const Level level = parseTiled(mapOfObjects(R"({"id": 1, "name": "ground", "x": 0, "y": 100,
+                         "polyline": [{"x": 0, "y": 0}, {"x": 32, "y": 0}, {"x": 64, "y": -32}]})"),
+                                   "lines.tmj", {});
+    ASSERT_EQ(level.scene.bodies.size(), 2u);
+    EXPECT_EQ(level.find("ground")->body, 0);
+    EXPECT_EQ(level.find("ground")->bodyCount, 2);
+    const BodyDef& level0 = level.scene.bodies[0].def;
+    EXPECT_EQ(level0.type, BodyType::Static);
+    EXPECT_EQ(level0.x, 16.0f);
+    EXPECT_EQ(level0.y, 100.0f);
+    EXPECT_EQ(level0.hw, 16.0f);
+    EXPECT_EQ(level0.hh, 0.5f);
+    EXPECT_EQ(level0.oneWay, (Vec2{0, -1}));
+    const BodyDef& slope = level.scene.bodies[1].def;
+    EXPECT_EQ(slope.x, 48.0f);
+    EXPECT_EQ(slope.y, 84.0f);
+    EXPECT_EQ(slope.hw, 16.0f);
+    EXPECT_EQ(slope.hh, 16.0f);
+    EXPECT_EQ(slope.slope, (Vec2{-1, -1})); // a floor rising to the right, y down
+    EXPECT_TRUE(slope.segment);
+}
+
+TEST(Tiled, APolygonBlocksOnItsOutsideWhicheverWayItIsDrawn) {
+    for (const char* points :
+         {R"([{"x": 0, "y": 0}, {"x": 32, "y": 0}, {"x": 32, "y": 32}, {"x": 0, "y": 32}])",
+          R"([{"x": 0, "y": 0}, {"x": 0, "y": 32}, {"x": 32, "y": 32}, {"x": 32, "y": 0}])"}) {
+        SCOPED_TRACE(points);
+        const Level level = parseTiled(
+            mapOfObjects(
+                std::string(R"({"id": 1, "name": "block", "x": 100, "y": 0, "polygon": )") +
+                points + "}"),
+            "lines.tmj", {});
+        ASSERT_EQ(level.scene.bodies.size(), 4u);
+        for (const SceneBody& side : level.scene.bodies) {
+            // Each side's one-way face looks away from the square's centre (116, 16).
+            const Vec2 away{side.def.x - 116.0f, side.def.y - 16.0f};
+            EXPECT_GT(side.def.oneWay.x * away.x + side.def.oneWay.y * away.y, 0.0f) << side.id;
+        }
+    }
+}
+
 TEST(Tiled, ProblemsNameTheFileTheLayerAndTheTile) {
     EXPECT_EQ(
         errorOf(levelWith("\"orientation\": \"orthogonal\"", "\"orientation\": \"isometric\"")),
