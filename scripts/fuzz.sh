@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Runs a fuzzer campaign and keeps what it found new in the repository's corpus:
 #
-#   scripts/fuzz.sh scene|api|restore [SECONDS]     (default 600)
+#   scripts/fuzz.sh scene|api|restore|tiled [SECONDS]     (default 600)
 #
 # Sets up (scripts/setup.sh), builds the asan preset (clang, ASan + UBSan, libFuzzer),
 # then fuzzes in build-asan/fuzz-work/TARGET, starting from tests/fuzz/corpus/TARGET. The
@@ -18,9 +18,9 @@ cd "$(dirname "$0")/.."
 target=${1:-}
 seconds=${2:-600}
 case "$target" in
-scene | api | restore) ;;
+scene | api | restore | tiled) ;;
 *)
-    echo "usage: scripts/fuzz.sh scene|api|restore [SECONDS]" >&2
+    echo "usage: scripts/fuzz.sh scene|api|restore|tiled [SECONDS]" >&2
     exit 2
     ;;
 esac
@@ -38,6 +38,10 @@ seeds=("$corpus")
 if [ "$target" = scene ]; then
     options+=(-dict=tests/fuzz/scene.dict)
     seeds+=(examples/scenes)
+elif [ "$target" = tiled ]; then
+    # Tiled's maps (tests/fuzz/fuzz_tiled.cpp): the test maps are seeds too.
+    options+=(-max_len=16384)
+    seeds+=(tests/level/maps)
 elif [ "$target" = api ]; then
     # Programs need room: let inputs grow to the longest allowed from the start.
     options+=(-max_len=4096 -len_control=0)

@@ -2,9 +2,13 @@
 // headers), CSV.
 #include "tile_data.hpp"
 
+#include "tiled_map.hpp"
+
 #include <zlib.h>
 
+#include <algorithm>
 #include <array>
+#include <cstdint>
 #include <stdexcept>
 #include <string>
 
@@ -95,6 +99,40 @@ std::vector<std::uint32_t> decodeBase64Gids(std::string_view text, std::string_v
         gids[i] = byte(0) | byte(1) << 8 | byte(2) << 16 | byte(3) << 24;
     }
     return gids;
+}
+
+std::size_t cellCount(int width, int height) {
+    if (width < 0 || height < 0 || static_cast<double>(width) * height > double(1 << 26))
+        throw std::runtime_error(
+            "width and height: expected at least 0, and 2^26 tiles at most, got " +
+            std::to_string(width) + " x " + std::to_string(height));
+    return static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
+}
+
+void gatherChunks(const std::vector<Chunk>& chunks, Layer& layer) {
+    long long left = INT32_MAX, top = INT32_MAX, right = INT32_MIN, bottom = INT32_MIN;
+    for (const Chunk& chunk : chunks) {
+        left = std::min<long long>(left, chunk.x);
+        top = std::min<long long>(top, chunk.y);
+        right = std::max<long long>(right, static_cast<long long>(chunk.x) + chunk.width);
+        bottom = std::max<long long>(bottom, static_cast<long long>(chunk.y) + chunk.height);
+    }
+    if (chunks.empty())
+        left = top = right = bottom = 0;
+    if (static_cast<double>(right - left) * static_cast<double>(bottom - top) > double(1 << 26))
+        throw std::runtime_error("chunks: more than 2^26 tiles in their bounds");
+    layer.left = static_cast<int>(left);
+    layer.top = static_cast<int>(top);
+    layer.width = static_cast<int>(right - left);
+    layer.height = static_cast<int>(bottom - top);
+    const auto columns = static_cast<std::size_t>(layer.width);
+    layer.gids.assign(cellCount(layer.width, layer.height), 0);
+    for (const Chunk& chunk : chunks)
+        for (std::size_t row = 0; row < static_cast<std::size_t>(chunk.height); ++row)
+            for (std::size_t column = 0; column < static_cast<std::size_t>(chunk.width); ++column)
+                layer.gids[(static_cast<std::size_t>(chunk.y - layer.top) + row) * columns +
+                           static_cast<std::size_t>(chunk.x - layer.left) + column] =
+                    chunk.gids[row * static_cast<std::size_t>(chunk.width) + column];
 }
 
 std::vector<std::uint32_t> decodeCsvGids(std::string_view text, std::size_t count) {

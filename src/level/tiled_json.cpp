@@ -135,48 +135,37 @@ struct Reader {
                 bad(place, error.what());
             }
         };
-        const auto size = [&](const Json& of, const std::string& where) {
-            const int width = integer(of, "width", where, 0),
-                      height = integer(of, "height", where, 0);
-            if (width < 0 || height < 0 || static_cast<double>(width) * height > double(1 << 26))
-                bad(where, "width and height: expected at least 0, and 2^26 tiles at most");
-            return std::pair{width, height};
-        };
-        const Json& chunks = array(json, "chunks", place);
-        if (chunks.empty()) {
-            std::tie(layer.width, layer.height) = size(json, place);
-            layer.left = integer(json, "startx", place, 0);
-            layer.top = integer(json, "starty", place, 0);
-            const Json* data = member(json, "data");
-            layer.gids = data == nullptr
-                             ? std::vector<std::uint32_t>(std::size_t(layer.width) * layer.height)
-                             : decode(*data, std::size_t(layer.width) * layer.height);
-            return;
-        }
-        // An infinite map's chunks: their bounds, then each copied in.
-        int left = INT32_MAX, top = INT32_MAX, right = INT32_MIN, bottom = INT32_MIN;
-        for (const Json& chunk : chunks) {
-            const auto [w, h] = size(chunk, place + ": chunk");
-            left = std::min(left, integer(chunk, "x", place, 0));
-            top = std::min(top, integer(chunk, "y", place, 0));
-            right = std::max(right, integer(chunk, "x", place, 0) + w);
-            bottom = std::max(bottom, integer(chunk, "y", place, 0) + h);
-        }
-        if (double(right - left) * double(bottom - top) > double(1 << 26))
-            bad(place, "chunks: more than 2^26 tiles in their bounds");
-        layer.left = left, layer.top = top, layer.width = right - left, layer.height = bottom - top;
-        layer.gids.assign(std::size_t(layer.width) * layer.height, 0);
-        for (const Json& chunk : chunks) {
-            const auto [w, h] = size(chunk, place + ": chunk");
-            const int cx = integer(chunk, "x", place, 0), cy = integer(chunk, "y", place, 0);
-            const Json* data = member(chunk, "data");
-            if (data == nullptr)
-                continue;
-            const std::vector<std::uint32_t> gids = decode(*data, std::size_t(w) * h);
-            for (int row = 0; row < h; ++row)
-                for (int column = 0; column < w; ++column)
-                    layer.gids[std::size_t(cy - top + row) * layer.width + (cx - left + column)] =
-                        gids[std::size_t(row) * w + column];
+        try {
+            const Json& chunks = array(json, "chunks", place);
+            if (chunks.empty()) {
+                layer.width = integer(json, "width", place, 0);
+                layer.height = integer(json, "height", place, 0);
+                layer.left = integer(json, "startx", place, 0);
+                layer.top = integer(json, "starty", place, 0);
+                const std::size_t count = cellCount(layer.width, layer.height);
+                const Json* data = member(json, "data");
+                layer.gids =
+                    data == nullptr ? std::vector<std::uint32_t>(count) : decode(*data, count);
+                return;
+            }
+            std::vector<Chunk> parts;
+            for (const Json& chunk : chunks) {
+                Chunk part{integer(chunk, "x", place, 0),
+                           integer(chunk, "y", place, 0),
+                           integer(chunk, "width", place, 0),
+                           integer(chunk, "height", place, 0),
+                           {}};
+                const std::size_t count = cellCount(part.width, part.height);
+                const Json* data = member(chunk, "data");
+                part.gids =
+                    data == nullptr ? std::vector<std::uint32_t>(count) : decode(*data, count);
+                parts.push_back(std::move(part));
+            }
+            gatherChunks(parts, layer);
+        } catch (const SceneError&) {
+            throw;
+        } catch (const std::runtime_error& error) {
+            bad(place, error.what());
         }
     }
 

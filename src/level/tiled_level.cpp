@@ -132,6 +132,13 @@ nlohmann::json vectorOrAsIs(const PropertyValue& value) {
     return toJson(value);
 }
 
+/// A scene file's text of `scene`, for the scene loader to read with its rules. Text that
+/// is not UTF-8 (a property of an XML map may hold any bytes) is written with U+FFFD in
+/// place of each bad byte, for the loader to refuse or keep as it would.
+std::string sceneText(const nlohmann::json& scene) {
+    return scene.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+}
+
 class Builder {
 public:
     Builder(const Map& map, const std::string& file) : map_(map), file_(file) {}
@@ -166,7 +173,7 @@ private:
             if (const auto found = p.find(key); found != p.end())
                 scene[key] = toJson(found->second);
         try {
-            level_.scene.world = parseScene(scene.dump()).world;
+            level_.scene.world = parseScene(sceneText(scene)).world;
         } catch (const SceneError& error) {
             fail(file_, std::string("map properties: ") + error.what());
         }
@@ -278,8 +285,8 @@ private:
             if (const auto found = layer.properties.find(key); found != layer.properties.end())
                 map[key] = toJson(found->second);
         try {
-            return parseScene(
-                       nlohmann::json{{"tilemap", map}, {"bodies", nlohmann::json::array()}}.dump())
+            return parseScene(sceneText(nlohmann::json{{"tilemap", map},
+                                                       {"bodies", nlohmann::json::array()}}))
                 .tileMaps.front();
         } catch (const SceneError& error) {
             std::string message = error.what();
@@ -380,9 +387,8 @@ private:
     /// A body object of a scene file read by the scene loader, its messages about `place`.
     BodyDef readBody(const nlohmann::json& def, const std::string& place) const {
         try {
-            const Scene scene = parseScene(nlohmann::json{
-                {"solver", toString(level_.scene.world.solver)},
-                {"bodies", {def}}}.dump());
+            const Scene scene = parseScene(
+                sceneText({{"solver", toString(level_.scene.world.solver)}, {"bodies", {def}}}));
             return scene.bodies.front().def;
         } catch (const SceneError& error) {
             std::string message = error.what();

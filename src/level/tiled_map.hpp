@@ -79,6 +79,20 @@ struct Map {
     std::vector<Layer> layers;
 };
 
+/// A part of an infinite map's tile layer: `width` x `height` global ids at tile (x, y).
+struct Chunk {
+    int x = 0, y = 0, width = 0, height = 0;
+    std::vector<std::uint32_t> gids;
+};
+
+/// The tiles of a `width` x `height` layer or chunk: throws std::runtime_error for a
+/// negative size or more than 2^26 tiles.
+std::size_t cellCount(int width, int height);
+
+/// Fills the layer's cells from its chunks, within their bounds (tile_data.cpp); throws
+/// std::runtime_error past 2^26 tiles.
+void gatherChunks(const std::vector<Chunk>& chunks, Layer& layer);
+
 /// Reads the JSON format (tiled_json.cpp); `name` is for errors.
 Map readJson(std::string_view text, const std::string& name, const FileReader& readFile);
 /// Reads the XML format (tiled_tmx.cpp).

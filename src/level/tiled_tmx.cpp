@@ -125,41 +125,31 @@ struct Reader {
 
     void tileData(const pugi::xml_node& node, Layer& layer, const std::string& place) const {
         const pugi::xml_node data = node.child("data");
-        const auto size = [&](const pugi::xml_node& of, const std::string& where) {
-            const int width = integer(of, "width", where, 0),
-                      height = integer(of, "height", where, 0);
-            if (width < 0 || height < 0 || static_cast<double>(width) * height > double(1 << 26))
-                bad(where, "width and height: expected at least 0, and 2^26 tiles at most");
-            return std::pair{width, height};
-        };
-        if (!data.child("chunk")) {
-            std::tie(layer.width, layer.height) = size(node, place);
-            const std::size_t count = std::size_t(layer.width) * layer.height;
-            layer.gids = data ? gids(data, data.text().get(), count, place)
-                              : std::vector<std::uint32_t>(count);
-            return;
-        }
-        int left = INT_MAX, top = INT_MAX, right = INT_MIN, bottom = INT_MIN;
-        for (const pugi::xml_node& chunk : data.children("chunk")) {
-            const auto [w, h] = size(chunk, place + ": chunk");
-            left = std::min(left, integer(chunk, "x", place, 0));
-            top = std::min(top, integer(chunk, "y", place, 0));
-            right = std::max(right, integer(chunk, "x", place, 0) + w);
-            bottom = std::max(bottom, integer(chunk, "y", place, 0) + h);
-        }
-        if (double(right - left) * double(bottom - top) > double(1 << 26))
-            bad(place, "chunks: more than 2^26 tiles in their bounds");
-        layer.left = left, layer.top = top, layer.width = right - left, layer.height = bottom - top;
-        layer.gids.assign(std::size_t(layer.width) * layer.height, 0);
-        for (const pugi::xml_node& chunk : data.children("chunk")) {
-            const auto [w, h] = size(chunk, place + ": chunk");
-            const int cx = integer(chunk, "x", place, 0), cy = integer(chunk, "y", place, 0);
-            const std::vector<std::uint32_t> chunkGids =
-                gids(data, chunk.text().get(), std::size_t(w) * h, place);
-            for (int row = 0; row < h; ++row)
-                for (int column = 0; column < w; ++column)
-                    layer.gids[std::size_t(cy - top + row) * layer.width + (cx - left + column)] =
-                        chunkGids[std::size_t(row) * w + column];
+        try {
+            if (!data.child("chunk")) {
+                layer.width = integer(node, "width", place, 0);
+                layer.height = integer(node, "height", place, 0);
+                const std::size_t count = cellCount(layer.width, layer.height);
+                layer.gids = data ? gids(data, data.text().get(), count, place)
+                                  : std::vector<std::uint32_t>(count);
+                return;
+            }
+            std::vector<Chunk> parts;
+            for (const pugi::xml_node& chunk : data.children("chunk")) {
+                Chunk part{integer(chunk, "x", place, 0),
+                           integer(chunk, "y", place, 0),
+                           integer(chunk, "width", place, 0),
+                           integer(chunk, "height", place, 0),
+                           {}};
+                part.gids =
+                    gids(data, chunk.text().get(), cellCount(part.width, part.height), place);
+                parts.push_back(std::move(part));
+            }
+            gatherChunks(parts, layer);
+        } catch (const SceneError&) {
+            throw;
+        } catch (const std::runtime_error& error) {
+            bad(place, error.what());
         }
     }
 

@@ -245,6 +245,16 @@ TEST(Tiled, ProblemsNameTheFileTheLayerAndTheTile) {
               "level.tmx: not XML:");
 }
 
+TEST(Tiled, FuzzInvalidUtf8InAnXmlPropertyIsReadNotThrownAsAnotherError) {
+    // fuzz_tiled's first finding: a property value of an XML map holding a 0xFF byte made
+    // the JSON the scene loader reads throw nlohmann's type_error, not a SceneError.
+    const std::string text =
+        "<map orientation=\"orthogonal\" tilewidth=\"16\" tileheight=\"16\"><properties>"
+        "<property name=\"solver\" value=\"cl\xFF\"/></properties></map>";
+    EXPECT_EQ(errorOf(text, "bad.tmx"),
+              "bad.tmx: map properties: solver: expected \"classic\" or \"physical\"");
+}
+
 TEST(Tiled, AnUnreadableFileIsNamed) {
     try {
         loadTiled(kMaps + "/nothing.tmj");
