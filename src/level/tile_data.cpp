@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <stdexcept>
 #include <string>
@@ -99,6 +100,18 @@ std::vector<std::uint32_t> decodeBase64Gids(std::string_view text, std::string_v
         gids[i] = byte(0) | byte(1) << 8 | byte(2) << 16 | byte(3) << 24;
     }
     return gids;
+}
+
+std::optional<int> wholeNumber(double value) {
+    if (!(value >= INT32_MIN && value <= INT32_MAX) || value != std::trunc(value))
+        return std::nullopt;
+    return static_cast<int>(value);
+}
+
+std::optional<std::uint32_t> tileIdOf(double value) {
+    if (!(value >= 0 && value <= 4294967295.0) || value != std::trunc(value))
+        return std::nullopt;
+    return static_cast<std::uint32_t>(value);
 }
 
 std::size_t cellCount(int width, int height) {

@@ -36,9 +36,16 @@ struct Reader {
     }
     int integer(const Json& object, const char* key, const std::string& place, int fallback) const {
         const double value = number(object, key, place, fallback);
-        if (value != static_cast<double>(static_cast<int>(value)))
+        const std::optional<int> whole = wholeNumber(value);
+        if (!whole)
             bad(place, std::string(key) + ": expected a whole number");
-        return static_cast<int>(value);
+        return *whole;
+    }
+    std::uint32_t tileId(const Json& object, const std::string& place) const {
+        const std::optional<std::uint32_t> id = tileIdOf(number(object, "gid", place, 0));
+        if (!id)
+            bad(place, "gid: expected a tile id, a whole number in [0, 2^32)");
+        return *id;
     }
     std::string text(const Json& object, const char* key, const std::string& place) const {
         const Json* value = member(object, key);
@@ -87,7 +94,7 @@ struct Reader {
         o.width = number(json, "width", place, 0);
         o.height = number(json, "height", place, 0);
         o.rotation = number(json, "rotation", place, 0);
-        o.gid = static_cast<std::uint32_t>(number(json, "gid", place, 0));
+        o.gid = tileId(json, place);
         o.properties = properties(json, place);
         const auto flag = [&](const char* key) {
             const Json* value = member(json, key);

@@ -132,6 +132,11 @@ nlohmann::json vectorOrAsIs(const PropertyValue& value) {
     return toJson(value);
 }
 
+/// True for a length a float holds with room: |v| <= 1e30 (NaN is not).
+bool withinFloats(double v) {
+    return std::abs(v) <= 1e30;
+}
+
 /// A scene file's text of `scene`, for the scene loader to read with its rules. Text that
 /// is not UTF-8 (a property of an XML map may hold any bytes) is written with U+FFFD in
 /// place of each bad byte, for the loader to refuse or keep as it would.
@@ -153,6 +158,7 @@ public:
         world();
         for (const Layer& layer : map_.layers)
             this->layer(layer, 0.0, 0.0);
+        readBodies();
         return std::move(level_);
     }
 
@@ -182,6 +188,9 @@ private:
     void layer(const Layer& layer, double offsetX, double offsetY) {
         offsetX += layer.offsetX;
         offsetY += layer.offsetY;
+        if (!withinFloats(offsetX) || !withinFloats(offsetY))
+            fail(file_, "layer " + quoted(layer.name) +
+                            ": offsetx and offsety: expected numbers within +-1e30");
         if (layer.kind == LayerKind::Tiles)
             tiles(layer, offsetX, offsetY);
         else if (layer.kind == LayerKind::Objects)
@@ -309,6 +318,8 @@ private:
         out.id = o.id;
         out.properties = o.properties;
         double x = offsetX + o.x, y = offsetY + o.y, w = o.width, h = o.height;
+        if (!withinFloats(x) || !withinFloats(y) || !withinFloats(w) || !withinFloats(h))
+            fail(file_, place + ": x, y, width and height: expected numbers within +-1e30");
         if (o.gid != 0)
             y -= h; // a tile object stands on its (x, y)
         out.x = static_cast<float>(x + w / 2);
@@ -319,16 +330,13 @@ private:
         const bool wantsBody = body == o.properties.end() || body->second != PropertyValue(false);
         const std::string id = o.name.empty() ? std::to_string(o.id) : o.name;
         if (wantsBody && (o.shape == Shape::Polygon || o.shape == Shape::Polyline)) {
-            out.body = static_cast<int>(level_.scene.bodies.size());
-            for (const BodyDef& side : sidesOf(o, x, y, place))
-                level_.scene.bodies.push_back(
-                    {id + "." + std::to_string(level_.scene.bodies.size() - std::size_t(out.body)),
-                     side});
-            out.bodyCount = static_cast<int>(level_.scene.bodies.size()) - out.body;
+            out.body = static_cast<int>(bodies_.size());
+            addSides(o, x, y, id, place);
+            out.bodyCount = static_cast<int>(bodies_.size()) - out.body;
         } else if (wantsBody && (o.shape == Shape::Rectangle || o.shape == Shape::Ellipse)) {
-            out.body = static_cast<int>(level_.scene.bodies.size());
+            out.body = static_cast<int>(bodies_.size());
             out.bodyCount = 1;
-            level_.scene.bodies.push_back({id, bodyOf(o, out, place)});
+            bodies_.push_back({bodyOf(o, out), id, place});
         }
         level_.objects.push_back(std::move(out));
     }
@@ -338,8 +346,8 @@ private:
     /// level or upright side a thin one-way box, each blocking on its outer side (a
     /// polygon's outside; a polyline's left, going from point to point: a line drawn left
     /// to right blocks from above). Their other settings are the object's custom properties.
-    std::vector<BodyDef> sidesOf(const Object& o, double x, double y,
-                                 const std::string& place) const {
+    void addSides(const Object& o, double x, double y, const std::string& id,
+                  const std::string& place) {
         std::vector<Point> points;
         for (const Point& p : o.points)
             points.push_back({x + p.x, y + p.y});
@@ -355,7 +363,6 @@ private:
         const bool outsideOnLeft = o.shape == Shape::Polyline || area > 0;
         constexpr double kThin = 0.5; // the half thickness of a level or upright side
         const auto sign = [](double v) { return v > 0 ? 1.0 : -1.0; };
-        std::vector<BodyDef> sides;
         for (std::size_t i = 0; i + 1 < points.size(); ++i) {
             const double dx = points[i + 1].x - points[i].x, dy = points[i + 1].y - points[i].y;
             if (dx == 0 && dy == 0)
@@ -379,30 +386,45 @@ private:
                 side["oneWay"] =
                     dx == 0 ? nlohmann::json{sign(nx), 0} : nlohmann::json{0, sign(ny)};
             }
-            sides.push_back(readBody(side, place + ": side " + std::to_string(i)));
+            bodies_.push_back(
+                {side, id + "." + std::to_string(i), place + ": side " + std::to_string(i)});
         }
-        return sides;
     }
 
-    /// A body object of a scene file read by the scene loader, its messages about `place`.
-    BodyDef readBody(const nlohmann::json& def, const std::string& place) const {
+    /// Every body's object read by the scene loader at once, a message about one named
+    /// by the place of its object.
+    void readBodies() {
+        nlohmann::json defs = nlohmann::json::array();
+        for (const BodyToRead& body : bodies_)
+            defs.push_back(body.def);
+        Scene scene;
         try {
-            const Scene scene = parseScene(
-                sceneText({{"solver", toString(level_.scene.world.solver)}, {"bodies", {def}}}));
-            return scene.bodies.front().def;
+            scene = parseScene(
+                sceneText({{"solver", toString(level_.scene.world.solver)}, {"bodies", defs}}));
         } catch (const SceneError& error) {
             std::string message = error.what();
-            for (const std::string_view prefix : {"bodies[0].", "bodies[0]: "})
-                if (message.starts_with(prefix))
-                    message.erase(0, prefix.size());
-            fail(file_, place + ": " + message);
+            std::size_t index = 0;
+            const std::size_t end = message.find(']');
+            if (message.starts_with("bodies[") && end != std::string::npos &&
+                std::sscanf(message.c_str(), "bodies[%zu]", &index) == 1 &&
+                index < bodies_.size()) {
+                message.erase(0, end + 1);
+                if (message.starts_with("."))
+                    message.erase(0, 1);
+                else if (message.starts_with(": "))
+                    message.erase(0, 2);
+                fail(file_, bodies_[index].place + ": " + message);
+            }
+            fail(file_, message);
         }
+        for (std::size_t i = 0; i < bodies_.size(); ++i)
+            level_.scene.bodies.push_back({bodies_[i].id, scene.bodies[i].def});
     }
 
     /// The body of a rectangle, an ellipse (a circle or an upright or lying capsule) or a
     /// tile object: its centre and size from the object, its settings from the custom
     /// properties named as scene files name body fields, read by the scene loader.
-    BodyDef bodyOf(const Object& o, const LevelObject& out, const std::string& place) const {
+    static nlohmann::json bodyOf(const Object& o, const LevelObject& out) {
         nlohmann::json def = nlohmann::json::object();
         for (const auto& [name, value] : o.properties)
             if (isBodyField(name) && name != "x" && name != "y" && name != "hw" && name != "hh")
@@ -415,10 +437,18 @@ private:
         def["hh"] = out.hh;
         if (o.shape == Shape::Ellipse)
             def["radius"] = std::min(out.hw, out.hh);
-        return readBody(def, place);
+        return def;
     }
 
+    /// A body to read: its object in a scene file, its id, and the place of its object.
+    struct BodyToRead {
+        nlohmann::json def;
+        std::string id;
+        std::string place;
+    };
+
     const Map& map_;
+    std::vector<BodyToRead> bodies_;
     const std::string& file_;
     Level level_;
 };

@@ -85,6 +85,11 @@ struct Chunk {
     std::vector<std::uint32_t> gids;
 };
 
+/// `value` as an int, if it is a whole number an int holds.
+std::optional<int> wholeNumber(double value);
+/// `value` as a global tile id with its flags, if it is a whole number in [0, 2^32).
+std::optional<std::uint32_t> tileIdOf(double value);
+
 /// The tiles of a `width` x `height` layer or chunk: throws std::runtime_error for a
 /// negative size or more than 2^26 tiles.
 std::size_t cellCount(int width, int height);

@@ -35,9 +35,17 @@ struct Reader {
     int integer(const pugi::xml_node& node, const char* key, const std::string& place,
                 int fallback) const {
         const double value = number(node, key, place, fallback);
-        if (value != static_cast<double>(static_cast<int>(value)))
+        const std::optional<int> whole = wholeNumber(value);
+        if (!whole)
             bad(place, std::string(key) + ": expected a whole number");
-        return static_cast<int>(value);
+        return *whole;
+    }
+
+    std::uint32_t tileId(const pugi::xml_node& node, const std::string& place) const {
+        const std::optional<std::uint32_t> id = tileIdOf(number(node, "gid", place, 0));
+        if (!id)
+            bad(place, "gid: expected a tile id, a whole number in [0, 2^32)");
+        return *id;
     }
 
     Properties properties(const pugi::xml_node& node) const {
@@ -67,7 +75,7 @@ struct Reader {
         o.width = number(node, "width", place, 0);
         o.height = number(node, "height", place, 0);
         o.rotation = number(node, "rotation", place, 0);
-        o.gid = static_cast<std::uint32_t>(number(node, "gid", place, 0));
+        o.gid = tileId(node, place);
         o.properties = properties(node);
         if (node.child("ellipse"))
             o.shape = Shape::Ellipse;
@@ -111,7 +119,7 @@ struct Reader {
             // The oldest form: a <tile gid="..."/> per cell.
             std::vector<std::uint32_t> out;
             for (const pugi::xml_node& tile : data.children("tile"))
-                out.push_back(static_cast<std::uint32_t>(number(tile, "gid", place, 0)));
+                out.push_back(tileId(tile, place));
             if (out.size() != count)
                 bad(place, "data: " + std::to_string(out.size()) + " tiles, expected " +
                                std::to_string(count));

@@ -245,6 +245,50 @@ TEST(Tiled, ProblemsNameTheFileTheLayerAndTheTile) {
               "level.tmx: not XML:");
 }
 
+/// The two scenes hold the same tile maps and bodies (definitions as scene files write them).
+void expectSameScene(const Scene& a, const Scene& b) {
+    ASSERT_EQ(a.tileMaps.size(), b.tileMaps.size());
+    for (std::size_t i = 0; i < a.tileMaps.size(); ++i) {
+        EXPECT_EQ(a.tileMaps[i].rows, b.tileMaps[i].rows);
+        EXPECT_EQ(a.tileMaps[i].oneWay, b.tileMaps[i].oneWay);
+        EXPECT_EQ(a.tileMaps[i].x, b.tileMaps[i].x);
+        EXPECT_EQ(a.tileMaps[i].y, b.tileMaps[i].y);
+    }
+    ASSERT_EQ(a.bodies.size(), b.bodies.size());
+    for (std::size_t i = 0; i < a.bodies.size(); ++i) {
+        EXPECT_EQ(a.bodies[i].id, b.bodies[i].id);
+        EXPECT_EQ(bodyToJson(a.bodies[i].def), bodyToJson(b.bodies[i].def));
+    }
+    EXPECT_EQ(a.world.gravity, b.world.gravity);
+}
+
+TEST(Tiled, TheExampleLevelIsOneLevelInTiledsTwoFormats) {
+    // examples/levels/level.tmj is Tiled's own export of level.tmx (make_level.py).
+    const Level tmx = loadTiled(std::string(JOSTLE_LEVEL_EXAMPLES_DIR) + "/level.tmx");
+    const Level tmj = loadTiled(std::string(JOSTLE_LEVEL_EXAMPLES_DIR) + "/level.tmj");
+    expectSameScene(tmx.scene, tmj.scene);
+    ASSERT_EQ(tmx.objects.size(), tmj.objects.size());
+    // What its game looks up: a spawn point, a kinematic lift with where it stops, two
+    // crates and three coins (sensors).
+    const LevelObject* spawn = tmx.find("spawn");
+    ASSERT_NE(spawn, nullptr);
+    EXPECT_EQ(spawn->body, -1);
+    const LevelObject* lift = tmx.find("lift");
+    ASSERT_NE(lift, nullptr);
+    EXPECT_EQ(tmx.scene.bodies[static_cast<std::size_t>(lift->body)].def.type, BodyType::Kinematic);
+    EXPECT_EQ(std::get<double>(lift->properties.at("top")), 104.0);
+    EXPECT_EQ(tmx.all("crate").size(), 2u);
+    ASSERT_EQ(tmx.all("coin").size(), 3u);
+    for (const LevelObject* coin : tmx.all("coin"))
+        EXPECT_TRUE(tmx.scene.bodies[static_cast<std::size_t>(coin->body)].def.sensor);
+    // Its tiles: the floor's row whole, the hill's ramps turned by a flip, the platforms
+    // one-way, the grass nothing.
+    ASSERT_EQ(tmx.scene.tileMaps.size(), 2u);
+    EXPECT_EQ(tmx.scene.tileMaps[0].rows[14], std::string(40, '#'));
+    EXPECT_EQ(tmx.scene.tileMaps[0].rows[13], "#......./####\\.........................#");
+    EXPECT_EQ(tmx.scene.tileMaps[1].rows[10], "................#####...................");
+}
+
 TEST(Tiled, FuzzInvalidUtf8InAnXmlPropertyIsReadNotThrownAsAnotherError) {
     // fuzz_tiled's first finding: a property value of an XML map holding a 0xFF byte made
     // the JSON the scene loader reads throw nlohmann's type_error, not a SceneError.
@@ -253,6 +297,21 @@ TEST(Tiled, FuzzInvalidUtf8InAnXmlPropertyIsReadNotThrownAsAnotherError) {
         "<property name=\"solver\" value=\"cl\xFF\"/></properties></map>";
     EXPECT_EQ(errorOf(text, "bad.tmx"),
               "bad.tmx: map properties: solver: expected \"classic\" or \"physical\"");
+}
+
+TEST(Tiled, FuzzNumbersPastAnIntOrAFloatAreRefusedByName) {
+    // fuzz_tiled's second finding: a layer 1.65556e+59 tiles wide was cast to an int.
+    EXPECT_EQ(errorOf("<map orientation=\"orthogonal\" tilewidth=\"16\" tileheight=\"16\">"
+                      "<layer name=\"g\" width=\"1.65556e+59\" height=\"1\"/></map>",
+                      "bad.tmx"),
+              "bad.tmx: layer \"g\": width: expected a whole number");
+    EXPECT_EQ(errorOf(mapOfObjects(
+                  R"({"id": 1, "name": "far", "x": 1e200, "y": 0, "width": 1, "height": 1})")),
+              "level.tmj: layer \"lines\": object \"far\" (id 1): x, y, width and height: expected "
+              "numbers "
+              "within +-1e30");
+    EXPECT_EQ(errorOf(mapOfObjects(R"({"id": 2, "name": "tile", "gid": -3, "x": 0, "y": 0})")),
+              "level.tmj: layer \"lines\": gid: expected a tile id, a whole number in [0, 2^32)");
 }
 
 TEST(Tiled, AnUnreadableFileIsNamed) {
