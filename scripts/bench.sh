@@ -4,7 +4,8 @@
 # first, scene files of a million bodies loaded (jostle-bench-load), or with `snapshots`
 # first, the size and speed of snapshots (jostle-bench-snapshots), or with `dispatch`
 # first, what handing a loop to the workers costs (jostle-bench-dispatch), or with
-# `web-scenes DIR` first, the web benchmark's scenes written as files (scripts/bench-web.sh).
+# `levels` first, loading Tiled maps (jostle-bench-levels), or with `web-scenes DIR` first,
+# the web benchmark's scenes written as files (scripts/bench-web.sh).
 # The other arguments
 # go to the program (try --help, --quick, --scene pyramid_100, --markdown; load --bodies N).
 set -euo pipefail
@@ -24,6 +25,11 @@ if [[ "${1:-}" == dispatch ]]; then
   shift
   cmake --build build-bench -j"$(nproc)" --target jostle_bench_dispatch
   exec ./build-bench/jostle-bench-dispatch "$@"
+fi
+if [[ "${1:-}" == levels ]]; then
+  shift
+  cmake --build build-bench -j"$(nproc)" --target jostle_bench_levels
+  exec ./build-bench/jostle-bench-levels "$@"
 fi
 if [[ "${1:-}" == web-scenes ]]; then
   shift
