@@ -268,8 +268,4 @@ Tileset readExternalTileset(const std::string& source, std::uint32_t firstGid,
                : readTilesetJson(text, source, firstGid);
 }
 
-void fail(const std::string& file, const std::string& what) {
-    throw SceneError(file + ": " + what);
-}
-
 } // namespace jostle::tiled

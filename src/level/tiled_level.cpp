@@ -3,7 +3,7 @@
 // tiled_json.cpp's and tiled_tmx.cpp's.
 #include "tiled_level.hpp"
 
-#include "body_properties.hpp"
+#include "level_rules.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -12,32 +12,9 @@
 
 namespace jostle::tiled {
 
+using namespace jostle::level;
+
 namespace {
-
-/// How a tile collides: a tile map character ('#', '.', a ramp's) and whether it is one-way.
-struct TileKind {
-    char tile = '.';
-    bool oneWay = false;
-};
-
-constexpr std::string_view kRamps = "/\\7FrRLlcCDd";
-
-std::string quoted(const std::string& text) {
-    return "\"" + text + "\"";
-}
-
-/// The kind a `collision` property names, or nullopt for a name that is none.
-std::optional<TileKind> kindNamed(const std::string& name) {
-    if (name == "solid")
-        return TileKind{'#', false};
-    if (name == "oneWay")
-        return TileKind{'#', true};
-    if (name == "none")
-        return TileKind{'.', false};
-    if (name.size() == 1 && kRamps.find(name[0]) != std::string_view::npos)
-        return TileKind{name[0], false};
-    return std::nullopt;
-}
 
 /// A ramp seen through Tiled's flips (diagonal first, then horizontal, then vertical, as
 /// Tiled applies them); nullopt where the result is no ramp of jostle's (a 2:1 ramp on its
@@ -105,45 +82,6 @@ std::optional<TileKind> kindDrawn(const std::vector<Object>& shapes, double w, d
     }
 }
 
-/// Body fields of scene files (src/body_properties.hpp): the custom properties a body
-/// takes.
-bool isBodyField(const std::string& name) {
-    for (const auto& field : properties::kBodyFields)
-        if (name == field.property->name)
-            return true;
-    return false;
-}
-
-nlohmann::json toJson(const PropertyValue& value) {
-    return std::visit([](const auto& v) { return nlohmann::json(v); }, value);
-}
-
-/// A scene file's vector from a custom property: "0, -1" or "[0, -1]" (Tiled has no
-/// vector property); anything else goes to the loader as it is, to be refused by name.
-nlohmann::json vectorOrAsIs(const PropertyValue& value) {
-    if (const auto* text = std::get_if<std::string>(&value)) {
-        double x = 0, y = 0;
-        char end = 0;
-        const std::string trimmed =
-            text->find('[') == std::string::npos ? "[" + *text + "]" : *text;
-        if (std::sscanf(trimmed.c_str(), " [ %lf , %lf ] %c", &x, &y, &end) == 2)
-            return nlohmann::json::array({x, y});
-    }
-    return toJson(value);
-}
-
-/// True for a length a float holds with room: |v| <= 1e30 (NaN is not).
-bool withinFloats(double v) {
-    return std::abs(v) <= 1e30;
-}
-
-/// A scene file's text of `scene`, for the scene loader to read with its rules. Text that
-/// is not UTF-8 (a property of an XML map may hold any bytes) is written with U+FFFD in
-/// place of each bad byte, for the loader to refuse or keep as it would.
-std::string sceneText(const nlohmann::json& scene) {
-    return scene.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
-}
-
 class Builder {
 public:
     Builder(const Map& map, const std::string& file) : map_(map), file_(file) {}
@@ -155,36 +93,14 @@ public:
         if (map_.tileWidth <= 0 || map_.tileWidth != map_.tileHeight)
             fail(file_, "tiles must be square, got " + std::to_string(map_.tileWidth) + " x " +
                             std::to_string(map_.tileHeight));
-        world();
+        level_.scene.world = worldFrom(map_.properties, file_);
         for (const Layer& layer : map_.layers)
             this->layer(layer, 0.0, 0.0);
-        readBodies();
+        bodies_.readInto(level_, file_);
         return std::move(level_);
     }
 
 private:
-    /// The world's settings from the map's custom properties, as a scene file names them:
-    /// gravityX and gravityY (Tiled has no vector), solver, sleeping, maxVelocity.
-    void world() {
-        nlohmann::json scene = {{"bodies", nlohmann::json::array()}};
-        const auto& p = map_.properties;
-        if (p.contains("gravityX") || p.contains("gravityY")) {
-            const auto number = [&](const char* key) {
-                const auto found = p.find(key);
-                return found == p.end() ? nlohmann::json(0) : toJson(found->second);
-            };
-            scene["gravity"] = nlohmann::json::array({number("gravityX"), number("gravityY")});
-        }
-        for (const char* key : {"solver", "sleeping", "maxVelocity"})
-            if (const auto found = p.find(key); found != p.end())
-                scene[key] = toJson(found->second);
-        try {
-            level_.scene.world = parseScene(sceneText(scene)).world;
-        } catch (const SceneError& error) {
-            fail(file_, std::string("map properties: ") + error.what());
-        }
-    }
-
     void layer(const Layer& layer, double offsetX, double offsetY) {
         offsetX += layer.offsetX;
         offsetY += layer.offsetY;
@@ -218,8 +134,7 @@ private:
             const auto* name = std::get_if<std::string>(&found->second);
             layerKind = name ? kindNamed(*name) : std::nullopt;
             if (!layerKind)
-                fail(file_, place + ": collision: expected \"solid\", \"oneWay\", \"none\" or a "
-                                    "ramp's character");
+                fail(file_, place + ": collision: " + std::string(kKindsExpected));
         }
         const std::size_t columns = static_cast<std::size_t>(layer.width);
         std::vector<std::string> solid(static_cast<std::size_t>(layer.height),
@@ -236,7 +151,7 @@ private:
                 (kind.oneWay ? oneWay : solid)[row][column] = kind.tile;
                 (kind.oneWay ? anyOneWay : anySolid) |= kind.tile != '.';
             }
-        TileMapDef def = tileMapSettings(layer, place);
+        TileMapDef def = tileMapSettings(layer.properties, file_, place);
         def.x = static_cast<float>(offsetX + double(layer.left) * map_.tileWidth);
         def.y = static_cast<float>(offsetY + double(layer.top) * map_.tileWidth);
         def.tile = static_cast<float>(map_.tileWidth);
@@ -270,8 +185,7 @@ private:
                 const auto* name = std::get_if<std::string>(&found->second);
                 kind = name ? kindNamed(*name) : std::nullopt;
                 if (!kind)
-                    fail(file_, place + ": collision: expected \"solid\", \"oneWay\", \"none\" or "
-                                        "a ramp's character");
+                    fail(file_, place + ": collision: " + std::string(kKindsExpected));
             } else if (!tile->second.shapes.empty()) {
                 kind = kindDrawn(tile->second.shapes, set->tileWidth, set->tileHeight);
                 if (!kind)
@@ -284,25 +198,6 @@ private:
         if (!turned)
             fail(file_, place + ": a 2:1 ramp turned on its side is no ramp of jostle's");
         return {*turned, kind->oneWay};
-    }
-
-    /// A tile layer's custom properties that are tile map settings: friction, bounce,
-    /// category, mask, sensor.
-    TileMapDef tileMapSettings(const Layer& layer, const std::string& place) const {
-        nlohmann::json map = {{"tile", 1}, {"rows", {"#"}}};
-        for (const char* key : {"friction", "bounce", "category", "mask", "sensor"})
-            if (const auto found = layer.properties.find(key); found != layer.properties.end())
-                map[key] = toJson(found->second);
-        try {
-            return parseScene(sceneText(nlohmann::json{{"tilemap", map},
-                                                       {"bodies", nlohmann::json::array()}}))
-                .tileMaps.front();
-        } catch (const SceneError& error) {
-            std::string message = error.what();
-            if (message.starts_with("tilemap."))
-                message.erase(0, 8);
-            fail(file_, place + ": " + message);
-        }
     }
 
     void object(const Object& o, const Layer& layer, double offsetX, double offsetY) {
@@ -330,13 +225,12 @@ private:
         const bool wantsBody = body == o.properties.end() || body->second != PropertyValue(false);
         const std::string id = o.name.empty() ? std::to_string(o.id) : o.name;
         if (wantsBody && (o.shape == Shape::Polygon || o.shape == Shape::Polyline)) {
-            out.body = static_cast<int>(bodies_.size());
+            out.body = bodies_.size();
             addSides(o, x, y, id, place);
-            out.bodyCount = static_cast<int>(bodies_.size()) - out.body;
+            out.bodyCount = bodies_.size() - out.body;
         } else if (wantsBody && (o.shape == Shape::Rectangle || o.shape == Shape::Ellipse)) {
-            out.body = static_cast<int>(bodies_.size());
+            out.body = bodies_.add(bodyOf(o, out), id, place);
             out.bodyCount = 1;
-            bodies_.push_back({bodyOf(o, out), id, place});
         }
         level_.objects.push_back(std::move(out));
     }
@@ -372,7 +266,7 @@ private:
             nlohmann::json side = nlohmann::json::object();
             for (const auto& [name, value] : o.properties)
                 if (isBodyField(name))
-                    side[name] = toJson(value);
+                    side[name] = fieldValue(name, value);
             if (!side.contains("type"))
                 side["type"] = "static";
             side["x"] = (points[i].x + points[i + 1].x) / 2;
@@ -386,39 +280,8 @@ private:
                 side["oneWay"] =
                     dx == 0 ? nlohmann::json{sign(nx), 0} : nlohmann::json{0, sign(ny)};
             }
-            bodies_.push_back(
-                {side, id + "." + std::to_string(i), place + ": side " + std::to_string(i)});
+            bodies_.add(side, id + "." + std::to_string(i), place + ": side " + std::to_string(i));
         }
-    }
-
-    /// Every body's object read by the scene loader at once, a message about one named
-    /// by the place of its object.
-    void readBodies() {
-        nlohmann::json defs = nlohmann::json::array();
-        for (const BodyToRead& body : bodies_)
-            defs.push_back(body.def);
-        Scene scene;
-        try {
-            scene = parseScene(
-                sceneText({{"solver", toString(level_.scene.world.solver)}, {"bodies", defs}}));
-        } catch (const SceneError& error) {
-            std::string message = error.what();
-            std::size_t index = 0;
-            const std::size_t end = message.find(']');
-            if (message.starts_with("bodies[") && end != std::string::npos &&
-                std::sscanf(message.c_str(), "bodies[%zu]", &index) == 1 &&
-                index < bodies_.size()) {
-                message.erase(0, end + 1);
-                if (message.starts_with("."))
-                    message.erase(0, 1);
-                else if (message.starts_with(": "))
-                    message.erase(0, 2);
-                fail(file_, bodies_[index].place + ": " + message);
-            }
-            fail(file_, message);
-        }
-        for (std::size_t i = 0; i < bodies_.size(); ++i)
-            level_.scene.bodies.push_back({bodies_[i].id, scene.bodies[i].def});
     }
 
     /// The body of a rectangle, an ellipse (a circle or an upright or lying capsule) or a
@@ -428,9 +291,7 @@ private:
         nlohmann::json def = nlohmann::json::object();
         for (const auto& [name, value] : o.properties)
             if (isBodyField(name) && name != "x" && name != "y" && name != "hw" && name != "hh")
-                def[name] = name == "oneWay" || name == "slope" || name == "surfaceVelocity"
-                                ? vectorOrAsIs(value)
-                                : toJson(value);
+                def[name] = fieldValue(name, value);
         def["x"] = out.x;
         def["y"] = out.y;
         def["hw"] = out.hw;
@@ -440,15 +301,8 @@ private:
         return def;
     }
 
-    /// A body to read: its object in a scene file, its id, and the place of its object.
-    struct BodyToRead {
-        nlohmann::json def;
-        std::string id;
-        std::string place;
-    };
-
     const Map& map_;
-    std::vector<BodyToRead> bodies_;
+    LevelBodies bodies_;
     const std::string& file_;
     Level level_;
 };

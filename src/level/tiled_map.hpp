@@ -4,6 +4,7 @@
 #pragma once
 
 #include "jostle/level.hpp"
+#include "level_rules.hpp"
 
 #include <cstdint>
 #include <map>
@@ -109,7 +110,6 @@ Tileset readTilesetTmx(std::string_view text, const std::string& name, std::uint
 Tileset readExternalTileset(const std::string& source, std::uint32_t firstGid,
                             const std::string& mapName, const FileReader& readFile);
 
-/// Throws SceneError("<file>: <where>: <what>").
-[[noreturn]] void fail(const std::string& file, const std::string& what);
+using level::fail;
 
 } // namespace jostle::tiled

@@ -1,0 +1,81 @@
+// What every editor's level shares (docs/levels.md): a tile's kind by name, custom
+// properties as scene file fields, and the scene loader reading a level's world, tile map
+// settings and bodies with its own rules and messages, each message about the place in
+// the editor's file. Used by tiled_level.cpp and ldtk.cpp.
+#pragma once
+
+#include "jostle/level.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace jostle::level {
+
+using Properties = std::map<std::string, PropertyValue>;
+
+/// Throws SceneError("<file>: <what>").
+[[noreturn]] void fail(const std::string& file, const std::string& what);
+
+/// `"text"`, as messages quote names.
+std::string quoted(const std::string& text);
+
+/// How a tile collides: a tile map character ('#', '.', a ramp's) and whether it is one-way.
+struct TileKind {
+    char tile = '.';
+    bool oneWay = false;
+};
+
+/// The ramps' tile map characters (tilemap.hpp).
+inline constexpr std::string_view kRamps = "/\\7FrRLlcCDd";
+
+/// The kind a `collision` property names: "solid", "oneWay", "none" or a ramp's
+/// character; nullopt for a name that is none.
+std::optional<TileKind> kindNamed(const std::string& name);
+
+/// The words of a message about a kind that is none.
+inline constexpr const char* kKindsExpected =
+    "expected \"solid\", \"oneWay\", \"none\" or a ramp's character";
+
+/// True for the name of a body field of scene files (src/body_properties.hpp).
+bool isBodyField(const std::string& name);
+
+/// A property's value as a scene file's field; a vector field (oneWay, slope,
+/// surfaceVelocity) also from text such as "0, -1" (editors have no vector property).
+nlohmann::json fieldValue(const std::string& name, const PropertyValue& value);
+
+/// True for a length a float holds with room: |v| <= 1e30 (NaN is not).
+bool withinFloats(double v);
+
+/// The world's settings from a level's custom properties, as a scene file names them:
+/// gravityX and gravityY (editors have no vector), solver, sleeping, maxVelocity.
+WorldDef worldFrom(const Properties& properties, const std::string& file);
+
+/// A tile map's settings from a layer's custom properties: friction, bounce, category,
+/// mask, sensor; the other fields left at their defaults.
+TileMapDef tileMapSettings(const Properties& properties, const std::string& file,
+                           const std::string& place);
+
+/// The bodies of a level, gathered as scene file objects and read by the scene loader at
+/// once (a message about one names the place of what it was made from).
+class LevelBodies {
+public:
+    /// Adds a body's object; returns its index in the level's bodies.
+    int add(nlohmann::json def, std::string id, std::string place);
+    int size() const { return static_cast<int>(bodies_.size()); }
+    /// Reads them all into level.scene.bodies, in the model of level.scene.world.
+    void readInto(Level& level, const std::string& file) const;
+
+private:
+    struct Body {
+        nlohmann::json def;
+        std::string id;
+        std::string place;
+    };
+    std::vector<Body> bodies_;
+};
+
+} // namespace jostle::level
