@@ -1,6 +1,6 @@
 // Levels drawn in an editor, read into a Scene (docs/levels.md): Tiled's maps (.tmj/.json
-// and .tmx, with external tilesets). Part of the scene library (jostle::level), never the
-// core.
+// and .tmx, with external tilesets) and LDtk's projects (.ldtk). Part of the scene library
+// (jostle::level), never the core.
 //
 //     jostle::Level level = jostle::loadTiled("level.tmj");
 //     jostle::World world(level.scene.world);
@@ -74,5 +74,23 @@ Level loadTiled(const std::string& path);
 /// external tilesets come from `readFile`. The format is the text's: XML if it starts
 /// with '<', else JSON. Throws SceneError.
 Level parseTiled(std::string_view text, const std::string& name, const FileReader& readFile);
+
+/// What an LDtk IntGrid value is, by value: "solid", "oneWay", "none" or a ramp's
+/// character ("/", "\\", "7", "F", "r", "R", "L", "l", "c", "C", "D", "d").
+using IntGridKinds = std::map<int, std::string>;
+
+/// Reads the level named `level` (its identifier) of an LDtk project (.ldtk), from its
+/// separate level file (.ldtkl, beside the project) if the project saves levels apart.
+/// Each IntGrid value is a tile by `kinds`, or else by its identifier in the project:
+/// "solid", "oneWay", "none", or the 45° ramps "rampRight" ("/"), "rampLeft" ("\\"),
+/// "ceilingRight" ("7"), "ceilingLeft" ("F"); a value neither names is refused. An entity
+/// is a named object, and a body when its fields give its `type` or say `body` true.
+/// Throws SceneError.
+Level loadLdtk(const std::string& path, const std::string& level, const IntGridKinds& kinds = {});
+
+/// loadLdtk from the project's text; `name` is what errors call it, and a separate level
+/// file comes from `readFile`.
+Level parseLdtk(std::string_view text, const std::string& name, const std::string& level,
+                const FileReader& readFile, const IntGridKinds& kinds = {});
 
 } // namespace jostle

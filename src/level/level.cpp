@@ -41,6 +41,14 @@ bool isXml(std::string_view text) {
     return start != std::string_view::npos && text[start] == '<';
 }
 
+/// Reads a file a map or project names, beside it.
+FileReader besideFile(const std::string& path) {
+    const std::filesystem::path directory = std::filesystem::path(path).parent_path();
+    return [directory](const std::string& source) {
+        return readWhole((directory / source).string(), source);
+    };
+}
+
 } // namespace
 
 Level parseTiled(std::string_view text, const std::string& name, const FileReader& readFile) {
@@ -50,11 +58,11 @@ Level parseTiled(std::string_view text, const std::string& name, const FileReade
 }
 
 Level loadTiled(const std::string& path) {
-    const std::filesystem::path directory = std::filesystem::path(path).parent_path();
-    const FileReader besideTheMap = [&](const std::string& source) {
-        return readWhole((directory / source).string(), source);
-    };
-    return parseTiled(readWhole(path, path), path, besideTheMap);
+    return parseTiled(readWhole(path, path), path, besideFile(path));
+}
+
+Level loadLdtk(const std::string& path, const std::string& level, const IntGridKinds& kinds) {
+    return parseLdtk(readWhole(path, path), path, level, besideFile(path), kinds);
 }
 
 } // namespace jostle

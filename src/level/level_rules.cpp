@@ -28,6 +28,20 @@ void fail(const std::string& file, const std::string& what) {
     throw SceneError(file + ": " + what);
 }
 
+std::string readNamedFile(const FileReader& readFile, const std::string& path,
+                          const std::string& file, const std::string& place) {
+    if (!readFile)
+        fail(file, place + ": its file is needed");
+    try {
+        return readFile(path);
+    } catch (const SceneError& error) {
+        std::string message = error.what();
+        if (message.starts_with(path + ": "))
+            message.erase(0, path.size() + 2);
+        fail(file, place + ": " + message);
+    }
+}
+
 std::string quoted(const std::string& text) {
     return "\"" + text + "\"";
 }

@@ -20,6 +20,12 @@ using Properties = std::map<std::string, PropertyValue>;
 /// Throws SceneError("<file>: <what>").
 [[noreturn]] void fail(const std::string& file, const std::string& what);
 
+/// The text of `path`, a file a level names (a tileset, a level saved apart), read by
+/// `readFile`; a problem reading or with it is about the level's file:
+/// "level.tmj: tileset "tiles.tsj": cannot read the file".
+std::string readNamedFile(const FileReader& readFile, const std::string& path,
+                          const std::string& file, const std::string& place);
+
 /// `"text"`, as messages quote names.
 std::string quoted(const std::string& text);
 

@@ -259,13 +259,19 @@ Tileset readTilesetJson(std::string_view text, const std::string& name, std::uin
 
 Tileset readExternalTileset(const std::string& source, std::uint32_t firstGid,
                             const std::string& mapName, const FileReader& readFile) {
-    if (!readFile)
-        fail(mapName, "tileset \"" + source + "\": external tilesets need their files");
-    const std::string text = readFile(source);
+    const std::string place = "tileset \"" + source + "\"";
+    const std::string text = level::readNamedFile(readFile, source, mapName, place);
     const std::size_t start = text.find_first_not_of(" \t\r\n\xEF\xBB\xBF");
-    return start != std::string::npos && text[start] == '<'
-               ? readTilesetTmx(text, source, firstGid)
-               : readTilesetJson(text, source, firstGid);
+    try {
+        return start != std::string::npos && text[start] == '<'
+                   ? readTilesetTmx(text, source, firstGid)
+                   : readTilesetJson(text, source, firstGid);
+    } catch (const SceneError& error) {
+        std::string message = error.what();
+        if (message.starts_with(source + ": "))
+            message.erase(0, source.size() + 2);
+        fail(mapName, place + ": " + message);
+    }
 }
 
 } // namespace jostle::tiled

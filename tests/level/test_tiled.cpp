@@ -239,7 +239,7 @@ TEST(Tiled, ProblemsNameTheFileTheLayerAndTheTile) {
     EXPECT_EQ(errorOf("{\"orientation\": \"orthogonal\", \"tilewidth\": 16, \"tileheight\": 16, "
                       "\"tilesets\": "
                       "[{\"firstgid\": 1, \"source\": \"missing.tsj\"}], \"layers\": []}"),
-              "level.tmj: tileset \"missing.tsj\": external tilesets need their files");
+              "level.tmj: tileset \"missing.tsj\": its file is needed");
     EXPECT_EQ(errorOf("not json"), "level.tmj: not a Tiled JSON file (not a JSON object)");
     EXPECT_EQ(errorOf("<map orientation=\"orthogonal\"", "level.tmx").substr(0, 19),
               "level.tmx: not XML:");
