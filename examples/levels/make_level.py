@@ -1,8 +1,9 @@
 #!/usr/bin/env python3
 # Writes the example level of docs/levels.md: tiles.png (the tileset's picture), tiles.tsx
 # (the tileset: which tile collides how) and level.tmx, as Tiled saves them. level.tmj is
-# Tiled's own export of level.tmx (tiled --export-map json level.tmx level.tmj); the tests
-# check that both give the same level. Open level.tmx in Tiled to draw it further.
+# Tiled's own export of level.tmx, its tileset embedded so that the one file is the whole
+# level (tiled --embed-tilesets --export-map json level.tmx level.tmj); the tests check
+# that both give the same level. Open level.tmx in Tiled to draw it further.
 import struct, zlib
 
 TILE = 16

@@ -52,9 +52,16 @@ FileReader besideFile(const std::string& path) {
 } // namespace
 
 Level parseTiled(std::string_view text, const std::string& name, const FileReader& readFile) {
-    const tiled::Map map =
-        isXml(text) ? tiled::readTmx(text, name, readFile) : tiled::readJson(text, name, readFile);
-    return tiled::toLevel(map, name);
+#ifdef JOSTLE_LEVEL_JSON_ONLY
+    if (isXml(text))
+        throw SceneError(
+            name + ": XML maps (.tmx) are not read in this build: export the map as JSON (.tmj)");
+    return tiled::toLevel(tiled::readJson(text, name, readFile), name);
+#else
+    return tiled::toLevel(isXml(text) ? tiled::readTmx(text, name, readFile)
+                                      : tiled::readJson(text, name, readFile),
+                          name);
+#endif
 }
 
 Level loadTiled(const std::string& path) {

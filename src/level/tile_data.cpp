@@ -4,7 +4,9 @@
 
 #include "tiled_map.hpp"
 
+#ifndef JOSTLE_LEVEL_JSON_ONLY
 #include <zlib.h>
+#endif
 
 #include <algorithm>
 #include <array>
@@ -56,6 +58,13 @@ std::string fromBase64(std::string_view text) {
 /// zlib or gzip data inflated into exactly `size` bytes.
 std::string inflateExactly(const std::string& packed, std::size_t size,
                            std::string_view compression) {
+#ifdef JOSTLE_LEVEL_JSON_ONLY
+    (void)packed;
+    (void)size;
+    throw std::runtime_error(
+        "data: " + std::string(compression) +
+        " compression is not read in this build (save the map with base64 or CSV data)");
+#else
     std::string bytes(size, '\0');
     z_stream stream{};
     // 15 + 32: a zlib or a gzip header, whichever it is.
@@ -73,6 +82,7 @@ std::string inflateExactly(const std::string& packed, std::size_t size,
                                  std::to_string(size / 4) + " tiles" +
                                  (result == Z_BUF_ERROR ? " (it holds more)" : ""));
     return bytes;
+#endif
 }
 
 } // namespace

@@ -263,9 +263,17 @@ Tileset readExternalTileset(const std::string& source, std::uint32_t firstGid,
     const std::string text = level::readNamedFile(readFile, source, mapName, place);
     const std::size_t start = text.find_first_not_of(" \t\r\n\xEF\xBB\xBF");
     try {
-        return start != std::string::npos && text[start] == '<'
-                   ? readTilesetTmx(text, source, firstGid)
+        const bool xml = start != std::string::npos && text[start] == '<';
+#ifdef JOSTLE_LEVEL_JSON_ONLY
+        if (xml)
+            throw SceneError(
+                source +
+                ": XML tilesets (.tsx) are not read in this build: export it as JSON (.tsj)");
+        return readTilesetJson(text, source, firstGid);
+#else
+        return xml ? readTilesetTmx(text, source, firstGid)
                    : readTilesetJson(text, source, firstGid);
+#endif
     } catch (const SceneError& error) {
         std::string message = error.what();
         if (message.starts_with(source + ": "))

@@ -14,7 +14,7 @@ fi
 rm -rf "$work"
 mkdir -p "$work"
 cp "$examples/level.tmx" "$examples/tiles.tsx" "$examples/tiles.png" "$work/"
-(cd "$work" && QT_QPA_PLATFORM=offscreen XDG_RUNTIME_DIR="$work" tiled --export-map json level.tmx exported.tmj)
+(cd "$work" && QT_QPA_PLATFORM=offscreen XDG_RUNTIME_DIR="$work" tiled --embed-tilesets --export-map json level.tmx exported.tmj)
 # The summary less its file name and its wall time, which differs run to run.
 summary() { "$jostle" run "$1" --steps 240 | grep -v -e '^wall time' -e '^scene '; }
 from_tmx=$(summary "$work/level.tmx")

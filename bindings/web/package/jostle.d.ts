@@ -452,6 +452,43 @@ export class FixedStep {
   destroy(): void;
 }
 
+/** An object of a level (docs/levels.md): a spawn point, a door, an enemy. */
+export interface LevelObject {
+  /** Its name in the editor ("" if none); an LDtk entity's identifier. */
+  name: string;
+  /** Tiled's class. */
+  type: string;
+  /** The layer it is on. */
+  layer: string;
+  /** Tiled's object id. */
+  id: number;
+  /** Its centre; a point's position. */
+  x: number;
+  y: number;
+  /** Half its width and height (0 for a point). */
+  hw: number;
+  hh: number;
+  /** Its custom properties (LDtk: fields) by name. */
+  properties: Record<string, boolean | number | string>;
+  /** The body made from it, or null. */
+  body: Body | null;
+  /** Every body made from it: one, none, or a polygon's sides. */
+  bodies: Body[];
+}
+
+/** A level read from an editor's file: its world, made, and its objects. */
+export interface LoadedLevel {
+  world: World;
+  objects: LevelObject[];
+}
+
+export interface LevelOptions {
+  /** What errors call the file, "level.tmj" by default. */
+  name?: string;
+  /** The texts of the files it names (Tiled's external tilesets, LDtk's levels saved apart), by path. */
+  files?: Record<string, string>;
+}
+
 /** The loaded module. */
 export class Jostle {
   /** "major.minor.patch". */
@@ -460,6 +497,16 @@ export class Jostle {
   createWorld(scene?: SceneDef | string): World;
   /** A clock of steps of dt seconds, at most maxStepsPerFrame a frame (default 8). */
   createFixedStep(dt: number, maxStepsPerFrame?: number): FixedStep;
+  /**
+   * A level drawn in Tiled, from its JSON text (.tmj; XML maps are not read in WebAssembly:
+   * export them as JSON), its world made: tile layers as tile maps, objects as bodies.
+   */
+  loadTiled(text: string, options?: LevelOptions): LoadedLevel;
+  /**
+   * A level of an LDtk project by its identifier, from the project's text; kinds says what
+   * IntGrid values are ("solid", "oneWay", "none" or a ramp's character).
+   */
+  loadLdtk(text: string, level: string, options?: LevelOptions & { kinds?: Record<number, string> }): LoadedLevel;
 }
 
 export interface LoadOptions {

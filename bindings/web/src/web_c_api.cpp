@@ -15,6 +15,7 @@
 #include "jostle/jostle.h"
 #include "jostle/scene.hpp"
 #include "notation.hpp"
+#include "web_scene.hpp"
 
 #include <emscripten/emscripten.h>
 #include <malloc.h>
@@ -59,6 +60,32 @@ jostle_tile_map_def tileMapInC(const TileMapDef& map, std::string& cells) {
     return c;
 }
 
+} // namespace
+
+namespace jostle::web {
+
+std::string& levelObjects() {
+    static std::string objects = "[]";
+    return objects;
+}
+
+const jostle_world_def* keep(const Scene& scene) {
+    ReadScene read;
+    read.world = toC(scene.world);
+    read.cells.resize(scene.tileMaps.size());
+    for (std::size_t i = 0; i < scene.tileMaps.size(); ++i)
+        read.tileMaps.push_back(tileMapInC(scene.tileMaps[i], read.cells[i]));
+    for (const SceneBody& body : scene.bodies)
+        read.bodies.push_back(toC(body.def));
+    readScene() = std::move(read);
+    levelObjects() = "[]";
+    return &readScene().world;
+}
+
+} // namespace jostle::web
+
+namespace {
+
 /// The loader's message about the one body jostle_web_read_body reads as `bodies[0]` of a
 /// scene, as about the definition the game passed: "bodies[0].hw: must be > 0" becomes
 /// "hw: must be > 0", "bodies[0]: unknown field "foo"" becomes "unknown field "foo"".
@@ -85,16 +112,7 @@ extern "C" {
 EMSCRIPTEN_KEEPALIVE const jostle_world_def* jostle_web_read_scene(const char* json) {
     return guard<const jostle_world_def*>(__func__, nullptr, [&] {
         required(json, "json");
-        const Scene scene = parseScene(json);
-        ReadScene read;
-        read.world = toC(scene.world);
-        read.cells.resize(scene.tileMaps.size());
-        for (std::size_t i = 0; i < scene.tileMaps.size(); ++i)
-            read.tileMaps.push_back(tileMapInC(scene.tileMaps[i], read.cells[i]));
-        for (const SceneBody& body : scene.bodies)
-            read.bodies.push_back(toC(body.def));
-        readScene() = std::move(read);
-        return &readScene().world;
+        return web::keep(parseScene(json));
     });
 }
 

@@ -68,15 +68,67 @@ export class Jostle {
       if (typeof scene !== "object" || scene === null || Array.isArray(scene))
         throw new TypeError(`${fn}: scene must be an object or a scene file's text, got ${args.describe(scene)}`);
     const text = typeof scene === "string" ? scene : args.json(fn, {bodies: [], ...scene});
-    const rt = this.rt, m = rt.m;
     // The scene loader reads the text into jostle.h's definitions (web_c_api.cpp), which
     // jostle.h's functions then create, as a C program would.
-    const def = rt.withText(text, (p) => m._jostle_web_read_scene(p));
+    return this.make(fn, () => this.rt.withText(text, (p) => this.rt.m._jostle_web_read_scene(p))).world;
+  }
+
+  /// A level drawn in Tiled (docs/levels.md), from its JSON text (.tmj): {world, objects}.
+  /// `options.name` names it in errors ("level.tmj"); `options.files` holds the texts of
+  /// the files it names (external tilesets, .tsj) by their paths. Each object is {name,
+  /// type, layer, id, x, y, hw, hh, properties, body, bodies}: body the Body made from it
+  /// or null, bodies every one (a polygon makes one a side).
+  loadTiled(text, options = {}) {
+    const fn = "loadTiled";
+    const {name, files} = this.levelOptions(fn, text, options, ["name", "files"]);
+    return this.make(fn, () => this.withTexts([text, name, files], ([t, n, f]) => this.rt.m._jostle_web_read_tiled(t, n, f)));
+  }
+
+  /// A level of an LDtk project, by its identifier, from the project's text: {world,
+  /// objects}, as loadTiled. `options.kinds` says what IntGrid values are ({4: "none"});
+  /// `options.files` holds the texts of levels saved apart (.ldtkl) by their paths.
+  loadLdtk(text, level, options = {}) {
+    const fn = "loadLdtk";
+    if (typeof level !== "string") throw new TypeError(`${fn}: level must be a level's identifier, got ${args.describe(level)}`);
+    const {name, files, kinds} = this.levelOptions(fn, text, options, ["name", "files", "kinds"]);
+    return this.make(fn, () => this.withTexts([text, name, level, files, kinds],
+                                              (p) => this.rt.m._jostle_web_read_ldtk(...p)));
+  }
+
+  /// The options of loadTiled and loadLdtk, checked, the files and kinds as JSON.
+  levelOptions(fn, text, options, known) {
+    if (typeof text !== "string") throw new TypeError(`${fn}: text must be the file's text, got ${args.describe(text)}`);
+    args.object(fn, "options", options);
+    for (const key of Object.keys(options))
+      if (!known.includes(key)) throw new TypeError(`${fn}: no option "${key}" (${known.join(", ")})`);
+    const name = options.name ?? (fn === "loadTiled" ? "level.tmj" : "level.ldtk");
+    if (typeof name !== "string") throw new TypeError(`${fn}: options.name must be a string, got ${args.describe(name)}`);
+    const files = args.object(fn, "options.files", options.files ?? {});
+    for (const [path, content] of Object.entries(files))
+      if (typeof content !== "string") throw new TypeError(`${fn}: options.files[${JSON.stringify(path)}] must be the file's text`);
+    const kinds = args.object(fn, "options.kinds", options.kinds ?? {});
+    for (const [value, kind] of Object.entries(kinds))
+      if (!/^-?\d+$/.test(value) || typeof kind !== "string")
+        throw new TypeError(`${fn}: options.kinds must map IntGrid values to kinds ("solid", "oneWay", "none", a ramp's character), got ${value}: ${args.describe(kind)}`);
+    return {name, files: JSON.stringify(files), kinds: JSON.stringify(kinds)};
+  }
+
+  /// Calls `call` with pointers to `texts` in the module's memory, as UTF-8; frees them after.
+  withTexts(texts, call, pointers = []) {
+    if (pointers.length === texts.length) return call(pointers);
+    return this.rt.withText(texts[pointers.length], (p) => this.withTexts(texts, call, [...pointers, p]));
+  }
+
+  /// A world made from what `read` kept (a scene, a level) in the module: {world,
+  /// objects}, the objects a level's, each with its bodies.
+  make(fn, read) {
+    const rt = this.rt, m = rt.m;
+    const def = read();
     rt.check(fn, def !== 0);
     try {
       const pointer = m._jostle_world_create(def);
       rt.check(fn, pointer !== 0);
-      const world = new World(this, pointer);
+      const world = new World(this, pointer), bodies = [];
       try {
         for (let i = 0, map; (map = m._jostle_web_scene_tile_map(i)) !== 0; i++) {
           m._jostle_tile_map_create(rt.out, pointer, map);
@@ -85,12 +137,20 @@ export class Jostle {
         for (let i = 0, body; (body = m._jostle_web_scene_body(i)) !== 0; i++) {
           m._jostle_body_create(rt.out, pointer, body);
           rt.check(fn, m.HEAPU32[(rt.out >> 2) + 1] !== 0);
+          bodies.push(world.bodyAt(rt.out));
         }
       } catch (error) {
         world.destroy();
         throw error;
       }
-      return world;
+      const objects = typeof m._jostle_web_level_objects === "function"
+        ? JSON.parse(rt.text(m._jostle_web_level_objects())) : [];
+      for (const object of objects) {
+        object.bodies = bodies.slice(Math.max(object.body, 0), Math.max(object.body, 0) + object.bodyCount);
+        object.body = object.body >= 0 ? bodies[object.body] : null;
+        delete object.bodyCount;
+      }
+      return {world, objects};
     } finally {
       m._jostle_web_forget_scene();
     }

@@ -450,5 +450,48 @@ await rejects("an unknown option", load({wasmBinary: bytes}), "load: no option \
   world.destroy();
 }
 
+// --- Levels from Tiled and LDtk (docs/levels.md) -------------------------------------------
+{
+  const root = new URL("../../../../", import.meta.url);
+  const read = (path) => readFile(new URL(path, root), "utf8");
+  // The example level (examples/levels/level.tmj, its tileset embedded): two crates that
+  // fall 40 units onto the floor (top at y 224) and rest at 216 and 200, stacked.
+  const {world, objects} = jostle.loadTiled(await read("examples/levels/level.tmj"));
+  const named = (name) => objects.filter((o) => o.name === name);
+  check(named("spawn")[0]?.body === null && named("spawn")[0].x === 40 && named("spawn")[0].y === 200,
+        "loadTiled: the spawn point is an object at (40, 200) with no body");
+  check(named("lift")[0]?.body?.type === "kinematic" && named("lift")[0].properties.top === 104,
+        "the lift is a kinematic body, its property top 104");
+  check(named("coin").length === 3 && named("coin").every((coin) => coin.body.sensor), "three coins, each a sensor");
+  for (let i = 0; i < 120; i++) world.step(1 / 60);
+  const crates = named("crate").map((crate) => crate.body.position.y).sort((a, b) => b - a);
+  check(near(crates[0], 216, 0.05) && near(crates[1], 200, 0.05), `the crates rest on the floor, stacked (${crates})`);
+  world.destroy();
+  refuses("a .tmx's text", () => jostle.loadTiled("<map/>", {name: "level.tmx"}), "Error",
+          "loadTiled: level.tmx: XML maps (.tmx) are not read in this build: export the map as JSON (.tmj)");
+  const await_text_of_external_map = await read("tests/level/maps/level_external.tmj");
+  refuses("a map whose tileset is not given",
+          () => jostle.loadTiled(await_text_of_external_map, {name: "level_external.tmj"}), "Error",
+          "loadTiled: level_external.tmj: tileset \"tiles.tsj\": not given (pass its text in files)");
+  const external = jostle.loadTiled(await_text_of_external_map,
+                                    {name: "level_external.tmj", files: {"tiles.tsj": await read("tests/level/maps/tiles.tsj")}});
+  check(external.objects.length === 6, "an external tileset given in files");
+  external.world.destroy();
+
+  const project = await read("tests/level/maps/level.ldtk");
+  const ldtk = jostle.loadLdtk(project, "Level_0", {kinds: {4: "none"}});
+  const crate = ldtk.objects.find((o) => o.name === "Crate");
+  check(crate?.body?.type === "dynamic" && crate.body.friction === 0.25 && crate.x === 40 && crate.y === 8,
+        "loadLdtk: the crate entity is a dynamic body at (40, 8) with its friction");
+  ldtk.world.destroy();
+  refuses("an IntGrid value with no kind", () => jostle.loadLdtk(project, "Level_0"), "Error",
+          "loadLdtk: level.ldtk: level \"Level_0\": layer \"Collisions\": IntGrid value 4 (\"water\"): expected an " +
+          "identifier \"solid\", \"oneWay\", \"none\", \"rampRight\", \"rampLeft\", \"ceilingRight\" or " +
+          "\"ceilingLeft\", or the value in the kinds table");
+  const apart = jostle.loadLdtk(project, "Level_1", {files: {"level_1.ldtkl": await read("tests/level/maps/level_1.ldtkl")}});
+  check(apart.world.bodyCount === 1, "a level saved apart, given in files: its floor, one body");
+  apart.world.destroy();
+}
+
 console.log(failures === 0 ? "all passed" : `${failures} failed`);
 process.exitCode = failures === 0 ? 0 : 1;
