@@ -8,7 +8,7 @@ cd "$(dirname "$0")/.."
 scripts/setup.sh
 # Debian's emscripten runs its JavaScript tools with Debian's modules (acorn).
 export NODE_PATH=/usr/share/nodejs
-emcmake cmake -S . -B build-web -DCMAKE_BUILD_TYPE=Release -DJOSTLE_BUILD_WEB=ON \
+emcmake cmake -S . -B build-web -DCMAKE_BUILD_TYPE=Release -DJOSTLE_BUILD_WEB=ON -DJOSTLE_UNITY_LIBRARY=ON \
   -DJOSTLE_WERROR=ON >/dev/null
 cmake --build build-web -j"$(nproc)"
 [ "${1:-}" = "--build-only" ] && exit 0

@@ -104,3 +104,59 @@ with open("level.tmx", "w") as f:
     for attributes, inner in objects:
         f.write('  <object %s>\n%s  </object>\n' % (attributes, inner))
     f.write(' </objectgroup>\n</map>\n')
+
+# --- level.ldtk: the same level in LDtk's format -----------------------------------------
+# An IntGrid layer whose values name their kinds (1 solid, 2 oneWay, 3 rampRight, 4
+# rampLeft; grass is a picture, not in it) and an entity layer: the spawn point, the lift,
+# the crates and the coins, each entity's fields its custom properties (a body's `type`
+# said, as LDtk's entities are bodies only when they say so).
+import json
+
+def ldtk_field(name, kind, value):
+    return {"__identifier": name, "__type": kind, "__value": value, "__tile": None, "defUid": 0, "realEditorValues": []}
+
+kinds = {SOLID: 1, ONE_WAY: 2, RAMP: 3, RAMP | FLIP_H: 4}
+grid = [kinds.get(cell, 0) for row in cells for cell in row]
+
+def ldtk_entity(name, x, y, w, h, fields):
+    return {"__identifier": name, "__grid": [x // TILE, y // TILE], "__pivot": [0, 0], "__tags": [], "__tile": None,
+            "__smartColor": "#BE4A2F", "iid": "%s-%d-%d" % (name, x, y), "width": w, "height": h, "defUid": 10,
+            "px": [x, y], "fieldInstances": fields}
+
+entities = [ldtk_entity("spawn", 40, 200, 0, 0, []),
+            ldtk_entity("lift", 384, 216, 48, 8, [ldtk_field("type", "String", "kinematic"), ldtk_field("top", "Float", 104)])]
+for y in (176, 160):
+    entities.append(ldtk_entity("crate", 288, y, 16, 16,
+                                [ldtk_field("type", "String", "dynamic"), ldtk_field("friction", "Float", 0.6)]))
+for x, y in [(172, 204), (292, 148), (516, 84)]:
+    entities.append(ldtk_entity("coin", x, y, 8, 8, [ldtk_field("type", "String", "static"),
+                                                     ldtk_field("sensor", "Bool", True)]))
+
+def ldtk_layer(identifier, kind, uid, extra):
+    layer = {"__identifier": identifier, "__type": kind, "__cWid": COLUMNS, "__cHei": ROWS, "__gridSize": TILE,
+             "__opacity": 1, "__pxTotalOffsetX": 0, "__pxTotalOffsetY": 0, "__tilesetDefUid": None,
+             "__tilesetRelPath": None, "iid": identifier.lower(), "levelId": 0, "layerDefUid": uid, "pxOffsetX": 0,
+             "pxOffsetY": 0, "visible": True, "optionalRules": [], "intGridCsv": [], "autoLayerTiles": [],
+             "seed": 1, "overrideTilesetUid": None, "gridTiles": [], "entityInstances": []}
+    layer.update(extra)
+    return layer
+
+project = {
+    "__header__": {"fileType": "LDtk Project JSON", "app": "LDtk", "appVersion": "1.5.3"},
+    "jsonVersion": "1.5.3", "defaultGridSize": TILE, "externalLevels": False, "worldLayout": "Free",
+    "defs": {"layers": [
+        {"__type": "IntGrid", "identifier": "Collisions", "type": "IntGrid", "uid": 1, "gridSize": TILE,
+         "intGridValues": [{"value": 1, "identifier": "solid", "color": "#6E4E34"},
+                           {"value": 2, "identifier": "oneWay", "color": "#A07846"},
+                           {"value": 3, "identifier": "rampRight", "color": "#6E4E34"},
+                           {"value": 4, "identifier": "rampLeft", "color": "#6E4E34"}]},
+        {"__type": "Entities", "identifier": "Entities", "type": "Entities", "uid": 2, "gridSize": TILE}],
+        "entities": [], "tilesets": [], "enums": [], "externalEnums": [], "levelFields": []},
+    "levels": [{"identifier": "Level_0", "iid": "level-0", "uid": 0, "worldX": 0, "worldY": 0,
+                "pxWid": COLUMNS * TILE, "pxHei": ROWS * TILE, "__bgColor": "#40465B", "externalRelPath": None,
+                "fieldInstances": [ldtk_field("gravityY", "Float", 800)],
+                "layerInstances": [ldtk_layer("Entities", "Entities", 2, {"entityInstances": entities}),
+                                   ldtk_layer("Collisions", "IntGrid", 1, {"intGridCsv": grid})]}],
+}
+with open("level.ldtk", "w") as f:
+    json.dump(project, f, indent=1)

@@ -13,6 +13,7 @@
 // 0.25; a Coin at (116, 44) with pivot (0.5, 0.5), 8 x 8, fields type "static", sensor
 // true and value 5. Level_1 is saved apart, in level_1.ldtkl: a solid floor of 8 x 4.
 #include "jostle/level.hpp"
+#include "same_scene.hpp"
 
 #include <gtest/gtest.h>
 
@@ -97,6 +98,20 @@ TEST(Ldtk, ALevelNotThereIsRefusedWithTheNamesThereAre) {
         kProject +
             ": level \"Level_0\": layer \"Collisions\": IntGrid value 4: the kinds table: expected "
             "\"solid\", \"oneWay\", \"none\" or a ramp's character");
+}
+
+TEST(Ldtk, TheExampleLevelIsTheSameLevelAsTiledsExample) {
+    // examples/levels/level.ldtk (make_level.py) is level.tmx drawn in LDtk: its IntGrid
+    // values name their kinds, its entities' fields their bodies' settings.
+    const std::string examples = JOSTLE_LEVEL_EXAMPLES_DIR;
+    const Level ldtk = loadLdtk(examples + "/level.ldtk", "Level_0");
+    const Level tiled = loadTiled(examples + "/level.tmx");
+    expectSameScene(ldtk.scene, tiled.scene);
+    ASSERT_EQ(ldtk.objects.size(), tiled.objects.size());
+    for (std::size_t i = 0; i < ldtk.objects.size(); ++i) {
+        EXPECT_EQ(ldtk.objects[i].name, tiled.objects[i].name);
+        EXPECT_EQ(ldtk.objects[i].body, tiled.objects[i].body);
+    }
 }
 
 } // namespace

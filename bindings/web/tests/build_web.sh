@@ -15,5 +15,5 @@ fi
 # Debian's emscripten runs its JavaScript tools with Debian's modules (acorn).
 export NODE_PATH=/usr/share/nodejs
 emcmake cmake -S "$source_dir" -B "$build_dir" -DCMAKE_BUILD_TYPE=Release \
-  -DJOSTLE_BUILD_WEB=ON -DJOSTLE_WERROR=ON >/dev/null
+  -DJOSTLE_BUILD_WEB=ON -DJOSTLE_WERROR=ON -DJOSTLE_UNITY_LIBRARY=ON >/dev/null
 cmake --build "$build_dir" -j2
