@@ -391,6 +391,12 @@ export class World {
   readPositions(out: Float32Array): number;
   readVelocities(out: Float32Array): number;
   readHalfExtents(out: Float32Array): number;
+  /**
+   * Every body's shape, six numbers a body: half width, half height, radius, slope x, slope y,
+   * flags (type 0 static, 1 kinematic, 2 dynamic; + 4 sensor, + 8 segment, + 16 awake). A
+   * shape is fixed when its body is made: read them when bodies come and go.
+   */
+  readShapes(out: Float32Array): number;
 
   /** Advances the world by dt seconds (> 0). */
   step(dt: number): void;

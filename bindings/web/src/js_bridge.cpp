@@ -11,6 +11,7 @@
 #include <initializer_list>
 #include <string>
 #include <utility>
+#include <vector>
 
 namespace {
 
@@ -142,6 +143,34 @@ EMSCRIPTEN_KEEPALIVE bool jostle_web_set_pre_solve(jostle_world* world, bool ena
 
 /// jostle_body_move with the package's filter, which calls the game's function; none
 /// when `filtered` is false (the default responses).
+/// Every body's shape, in the order of jostle_world_bodies, six floats each into
+/// out[0 .. 6 * capacity): half width, half height, radius, slope x, slope y, and flags
+/// (type: 0 static, 1 kinematic, 2 dynamic; + 4 sensor, + 8 segment, + 16 awake); returns
+/// how many bodies there are (the buffer rule). A body's shape is fixed when it is made:
+/// read this when bodies come and go, not every frame (it costs a definition a body).
+EMSCRIPTEN_KEEPALIVE int jostle_web_read_shapes(const jostle_world* world, float* out,
+                                                int capacity) {
+    if (world == nullptr || capacity < 0 || (capacity > 0 && out == nullptr))
+        return -1;
+    const int count = jostle_world_body_count(world);
+    std::vector<jostle_body_id> ids(static_cast<std::size_t>(count));
+    jostle_world_bodies(world, ids.data(), count);
+    for (int i = 0; i < count && i < capacity; ++i) {
+        const jostle_body_def def = jostle_body_get_def(world, ids[static_cast<std::size_t>(i)]);
+        const int flags = static_cast<int>(def.type) + (def.sensor ? 4 : 0) +
+                          (def.segment ? 8 : 0) +
+                          (jostle_body_is_awake(world, ids[static_cast<std::size_t>(i)]) ? 16 : 0);
+        float* shape = out + 6 * i;
+        shape[0] = def.hw;
+        shape[1] = def.hh;
+        shape[2] = def.radius;
+        shape[3] = def.slope.x;
+        shape[4] = def.slope.y;
+        shape[5] = static_cast<float>(flags);
+    }
+    return count;
+}
+
 EMSCRIPTEN_KEEPALIVE bool jostle_web_body_move(jostle_world* world, const jostle_body_id* body,
                                                const jostle_vec2* delta, bool filtered,
                                                jostle_move_result* result) {

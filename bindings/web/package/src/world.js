@@ -203,6 +203,21 @@ export class World {
   /// Every body's half extents, as readPositions.
   readHalfExtents(out) { return this.readVectors("readHalfExtents", "_jostle_world_read_half_extents", out); }
 
+  /// Every body's shape, for drawing, six numbers a body in the order of bodies() into
+  /// `out` (a Float32Array; what does not fit is left out): half width, half height,
+  /// radius, slope x, slope y (docs/slopes-and-shapes.md), flags (type 0 static, 1
+  /// kinematic, 2 dynamic; + 4 sensor, + 8 segment, + 16 awake). Returns how many bodies
+  /// there are. A shape is fixed when its body is made: read them when bodies come and go.
+  readShapes(out) {
+    const fn = "readShapes";
+    args.floats(fn, "out", out);
+    const world = this.live(fn), rt = this.rt, capacity = (out.length / 6) | 0;
+    const at = rt.bufferOf(24 * Math.max(capacity, 1));
+    const count = rt.m._jostle_web_read_shapes(world, at, capacity);
+    out.set(rt.floatsAt(at, 6 * Math.min(count, capacity)));
+    return count;
+  }
+
   readVectors(fn, name, out) {
     args.floats(fn, "out", out);
     const world = this.live(fn), rt = this.rt, m = rt.m;

@@ -323,6 +323,20 @@ await rejects("an unknown option", load({wasmBinary: bytes}), "load: no option \
   world.destroy();
 }
 
+// --- Every body's shape, for drawing ------------------------------------------------------
+{
+  const world = jostle.createWorld();
+  world.createBody({type: "static", x: 0, y: 0, hw: 4, hh: 2});
+  world.createBody({x: 0, y: -10, hw: 3, hh: 3, radius: 3, sensor: true});
+  world.createBody({type: "static", x: 10, y: 0, hw: 5, hh: 5, slope: [-1, -1], segment: true});
+  const shapes = new Float32Array(18);
+  check(world.readShapes(shapes) === 3, "readShapes: three bodies");
+  check(shapes.slice(0, 6).join() === "4,2,0,0,0,16", "a static box, awake: 4, 2, no radius, no slope, flags 16");
+  check(shapes.slice(6, 12).join() === "3,3,3,0,0,22", "a dynamic circle sensor, awake: radius 3, flags 2 + 4 + 16");
+  check(shapes.slice(12, 18).join() === "5,5,0,-1,-1,24", "a segment: slope -1, -1, flags 8 + 16");
+  world.destroy();
+}
+
 // --- Reading every body makes no garbage -------------------------------------------------------
 {
   const world = jostle.createWorld({gravity: [0, 800]});
