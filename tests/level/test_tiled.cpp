@@ -153,6 +153,39 @@ std::string levelWith(const std::string& from, const std::string& to) {
     return text;
 }
 
+TEST(Tiled, AnInfiniteMapsChunksAreGatheredWithinTheirBounds) {
+    // Two chunks of 2 x 1 tiles, at tile (-2, -1) and (4, 1): their bounds are 8 x 3 tiles
+    // from (-2, -1), so the map's corner is at (-32, -16) and the chunks' solid tiles sit
+    // at its columns 0-1 of row 0 and 6-7 of row 2.
+    const std::string tileset =
+        R"("tilesets": [{"firstgid": 1, "name": "t", "tilewidth": 16, "tileheight": 16,
+        "tilecount": 1, "tiles": [{"id": 0, "properties": [{"name": "collision", "type": "string",
+        "value": "solid"}]}]}])";
+    const Level json = parseTiled(
+        R"({"orientation": "orthogonal", "tilewidth": 16, "tileheight": 16, "infinite": true, )" +
+            tileset +
+            R"(, "layers": [{"type": "tilelayer", "name": "g", "chunks": [
+              {"x": -2, "y": -1, "width": 2, "height": 1, "data": [1, 1]},
+              {"x": 4, "y": 1, "width": 2, "height": 1, "data": [1, 1]}]}]})",
+        "infinite.tmj", {});
+    ASSERT_EQ(json.scene.tileMaps.size(), 1u);
+    EXPECT_EQ(json.scene.tileMaps[0].x, -32.0f);
+    EXPECT_EQ(json.scene.tileMaps[0].y, -16.0f);
+    EXPECT_EQ(json.scene.tileMaps[0].rows,
+              (std::vector<std::string>{"##......", "........", "......##"}));
+    const Level tmx = parseTiled(
+        R"(<map orientation="orthogonal" tilewidth="16" tileheight="16" infinite="1">
+             <tileset firstgid="1" name="t" tilewidth="16" tileheight="16" tilecount="1">
+               <tile id="0"><properties><property name="collision" value="solid"/></properties></tile>
+             </tileset>
+             <layer name="g"><data encoding="csv">
+               <chunk x="-2" y="-1" width="2" height="1">1,1</chunk>
+               <chunk x="4" y="1" width="2" height="1">1,1</chunk>
+             </data></layer></map>)",
+        "infinite.tmx", {});
+    expectSameScene(tmx.scene, json.scene);
+}
+
 TEST(Tiled, FlipFlagsTurnRamps) {
     // Tile 2's '/' flipped horizontally is '\', vertically '7', both 'F'.
     const std::string ramp = "\"data\": [\n    0,\n    0,";
