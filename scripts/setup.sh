@@ -10,7 +10,7 @@ packages=(
   dpkg-dev lintian luarocks  # the Debian package and the rock (scripts/package.sh)
   libgtest-dev libgmock-dev  # tests
   nlohmann-json3-dev      # scene files
-  libpugixml-dev zlib1g-dev  # Tiled's maps: .tmx, compressed tile layers
+  libpugixml-dev zlib1g-dev libzstd-dev  # Tiled's maps: .tmx, compressed tile layers
   tiled                   # the example level is checked against Tiled's own export
   libcli11-dev            # the jostle program's command line
   libpng-dev libgif-dev   # jostle render's PNG and GIF files

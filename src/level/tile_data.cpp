@@ -6,6 +6,7 @@
 
 #ifndef JOSTLE_LEVEL_JSON_ONLY
 #include <zlib.h>
+#include <zstd.h>
 #endif
 
 #include <algorithm>
@@ -85,6 +86,23 @@ std::string inflateExactly(const std::string& packed, std::size_t size,
 #endif
 }
 
+/// zstd data decompressed into exactly `size` bytes.
+std::string unzstdExactly(const std::string& packed, std::size_t size) {
+#ifdef JOSTLE_LEVEL_JSON_ONLY
+    (void)packed;
+    (void)size;
+    throw std::runtime_error(
+        "data: zstd compression is not read in this build (save the map with base64 or CSV data)");
+#else
+    std::string bytes(size, '\0');
+    const std::size_t written =
+        ZSTD_decompress(bytes.data(), bytes.size(), packed.data(), packed.size());
+    if (ZSTD_isError(written) || written != size)
+        throw std::runtime_error("data: not zstd data of " + std::to_string(size / 4) + " tiles");
+    return bytes;
+#endif
+}
+
 } // namespace
 
 std::vector<std::uint32_t> decodeBase64Gids(std::string_view text, std::string_view compression,
@@ -95,8 +113,7 @@ std::vector<std::uint32_t> decodeBase64Gids(std::string_view text, std::string_v
     if (compression == "zlib" || compression == "gzip")
         bytes = inflateExactly(bytes, 4 * count, compression);
     else if (compression == "zstd")
-        throw std::runtime_error(
-            "data: zstd compression is not read (save the map with zlib, gzip or none)");
+        bytes = unzstdExactly(bytes, 4 * count);
     else if (!compression.empty())
         throw std::runtime_error("data: unknown compression \"" + std::string(compression) + "\"");
     if (bytes.size() != 4 * count)

@@ -1,5 +1,5 @@
 // A tile layer's data as Tiled writes it: CSV, or base64 of little-endian 32-bit global
-// ids, plain or compressed by zlib or gzip (zstd where the build has libzstd).
+// ids, plain or compressed by zlib, gzip or zstd (not in the WebAssembly build).
 #pragma once
 
 #include <cstdint>

@@ -186,6 +186,20 @@ TEST(Tiled, AnInfiniteMapsChunksAreGatheredWithinTheirBounds) {
     expectSameScene(tmx.scene, json.scene);
 }
 
+TEST(Tiled, ZstdCompressedDataIsRead) {
+    // A floor of 4 solid tiles (global id 1): the 16 bytes of its little-endian ids as
+    // `zstd -19` compresses them, in base64.
+    const Level level = parseTiled(
+        R"({"orientation": "orthogonal", "tilewidth": 16, "tileheight": 16,
+            "tilesets": [{"firstgid": 1, "name": "t", "tilewidth": 16, "tileheight": 16, "tilecount": 1,
+              "tiles": [{"id": 0, "properties": [{"name": "collision", "type": "string", "value": "solid"}]}]}],
+            "layers": [{"type": "tilelayer", "name": "g", "width": 4, "height": 1, "encoding": "base64",
+                        "compression": "zstd", "data": "KLUv/QRoTQAAAkEBgBCIiAEAe6Fo4A=="}]})",
+        "zstd.tmj", {});
+    ASSERT_EQ(level.scene.tileMaps.size(), 1u);
+    EXPECT_EQ(level.scene.tileMaps[0].rows, std::vector<std::string>{"####"});
+}
+
 TEST(Tiled, FlipFlagsTurnRamps) {
     // Tile 2's '/' flipped horizontally is '\', vertically '7', both 'F'.
     const std::string ramp = "\"data\": [\n    0,\n    0,";
