@@ -183,6 +183,14 @@ int pushBulkRead(lua_State* L, WorldHandle& handle, int tableArg, const char* wh
 /// raised.
 void stepWorld(lua_State* L, int index, float dt, const char* where);
 int newWorld(lua_State* L);
+/// Pushes a new World userdata made from `def` (checked already) and returns its contents.
+WorldHandle& pushNewWorld(lua_State* L, const WorldDef& def, const char* where);
+
+// --- level.cpp (where the level library is built: JOSTLE_LUA_LEVELS) -------------------
+
+/// jostle.loadTiled(path) and jostle.loadLdtk(path, level [, kinds]).
+int loadTiled(lua_State* L);
+int loadLdtk(lua_State* L);
 void openWorld(lua_State* L);
 
 // --- body.cpp --------------------------------------------------------------------------

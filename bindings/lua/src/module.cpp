@@ -14,6 +14,10 @@ namespace {
 constexpr luaL_Reg kModuleFunctions[] = {
     {"newWorld", jostle::lua::newWorld},
     {"newFixedStep", jostle::lua::newFixedStep},
+#ifdef JOSTLE_LUA_LEVELS
+    {"loadTiled", jostle::lua::loadTiled},
+    {"loadLdtk", jostle::lua::loadLdtk},
+#endif
     {nullptr, nullptr},
 };
 

@@ -442,7 +442,11 @@ int newWorld(lua_State* L) {
     const char* where = "jostle.newWorld";
     const WorldDef def = readWorldDef(L, 1, where);
     requireValidWorldDef(L, def, where);
+    pushNewWorld(L, def, where);
+    return 1;
+}
 
+WorldHandle& pushNewWorld(lua_State* L, const WorldDef& def, const char* where) {
     // The userdata first, empty: if anything below fails, the collector frees it.
     auto* handle = static_cast<WorldHandle*>(newUserdata(L, sizeof(WorldHandle)));
     handle->data = nullptr;
@@ -468,7 +472,7 @@ int newWorld(lua_State* L) {
     WorldData* data = nullptr;
     guard(L, where, [&] { data = new WorldData(def); });
     handle->data = data;
-    return 1;
+    return *handle;
 }
 
 void openWorld(lua_State* L) {
