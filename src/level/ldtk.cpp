@@ -125,9 +125,7 @@ public:
             bad(place, "intGridCsv: " + std::to_string(cells.size()) + " cells, expected " +
                            std::to_string(columns) + " x " + std::to_string(rows));
         const auto width = static_cast<std::size_t>(columns);
-        std::vector<std::string> solid(static_cast<std::size_t>(rows), std::string(width, '.'));
-        std::vector<std::string> oneWay = solid;
-        bool anySolid = false, anyOneWay = false;
+        LayerTiles tiles(width, static_cast<std::size_t>(rows));
         std::map<int, TileKind> known;
         for (std::size_t i = 0; i < cells.size(); ++i) {
             if (!cells[i].is_number_integer())
@@ -138,23 +136,13 @@ public:
             auto found = known.find(value);
             if (found == known.end())
                 found = known.emplace(value, kindOf(value, definition, place)).first;
-            const TileKind kind = found->second;
-            (kind.oneWay ? oneWay : solid)[i / width][i % width] = kind.tile;
-            (kind.oneWay ? anyOneWay : anySolid) |= kind.tile != '.';
+            tiles.set(i % width, i / width, found->second);
         }
         TileMapDef def = tileMapSettings(fields(layer, place), file_, place);
         def.x = static_cast<float>(number(layer, "__pxTotalOffsetX", place));
         def.y = static_cast<float>(number(layer, "__pxTotalOffsetY", place));
         def.tile = static_cast<float>(grid);
-        if (anySolid) {
-            def.rows = std::move(solid);
-            level.scene.tileMaps.push_back(def);
-        }
-        if (anyOneWay) {
-            def.rows = std::move(oneWay);
-            def.oneWay = {0.0f, -1.0f};
-            level.scene.tileMaps.push_back(def);
-        }
+        tiles.addTo(level, def);
     }
 
     /// An entity: a named object, and a body when its fields say `body` true or give its

@@ -23,7 +23,8 @@ namespace {
 const LevelObject& objectOf(const jostle_level* level, int i) {
     const jostle_level& l = required(level, "level");
     if (i < 0 || static_cast<std::size_t>(i) >= l.level.objects.size())
-        misuse("object " + std::to_string(i) + ": the level has " + std::to_string(l.level.objects.size()));
+        misuse("object " + std::to_string(i) + ": the level has " +
+               std::to_string(l.level.objects.size()));
     return l.level.objects[static_cast<std::size_t>(i)];
 }
 
@@ -38,8 +39,8 @@ jostle_level* jostle_level_load_tiled(const char* path) {
     });
 }
 
-jostle_level* jostle_level_load_ldtk(const char* path, const char* level, const jostle_intgrid_kind* kinds,
-                                     int count) {
+jostle_level* jostle_level_load_ldtk(const char* path, const char* level,
+                                     const jostle_intgrid_kind* kinds, int count) {
     return guard<jostle_level*>(__func__, nullptr, [&] {
         required(path, "path");
         required(level, "level");
@@ -79,7 +80,8 @@ jostle_world* jostle_level_create_world(jostle_level* level, const jostle_task_s
 }
 
 int jostle_level_object_count(const jostle_level* level) {
-    return guard(__func__, 0, [&] { return static_cast<int>(required(level, "level").level.objects.size()); });
+    return guard(__func__, 0,
+                 [&] { return static_cast<int>(required(level, "level").level.objects.size()); });
 }
 
 bool jostle_level_get_object(const jostle_level* level, int i, jostle_level_object* out) {
@@ -121,8 +123,8 @@ jostle_body_id jostle_level_get_body(const jostle_level* level, int i, int k) {
     });
 }
 
-jostle_property_kind jostle_level_get_property(const jostle_level* level, int i, const char* name, bool* boolean,
-                                               double* number, const char** text) {
+jostle_property_kind jostle_level_get_property(const jostle_level* level, int i, const char* name,
+                                               bool* boolean, double* number, const char** text) {
     return guard(__func__, JOSTLE_PROPERTY_NONE, [&] {
         const LevelObject& o = objectOf(level, i);
         required(name, "name");

@@ -118,6 +118,23 @@ TileMapDef tileMapSettings(const Properties& properties, const std::string& file
     }
 }
 
+void LayerTiles::set(std::size_t column, std::size_t row, TileKind kind) {
+    (kind.oneWay ? oneWay_ : solid_)[row][column] = kind.tile;
+    (kind.oneWay ? anyOneWay_ : anySolid_) |= kind.tile != '.';
+}
+
+void LayerTiles::addTo(Level& level, TileMapDef settings) {
+    if (anySolid_) {
+        settings.rows = std::move(solid_);
+        level.scene.tileMaps.push_back(settings);
+    }
+    if (anyOneWay_) {
+        settings.rows = std::move(oneWay_);
+        settings.oneWay = {0.0f, -1.0f};
+        level.scene.tileMaps.push_back(settings);
+    }
+}
+
 int LevelBodies::add(nlohmann::json def, std::string id, std::string place) {
     bodies_.push_back({std::move(def), std::move(id), std::move(place)});
     return size() - 1;

@@ -46,6 +46,22 @@ std::optional<TileKind> kindNamed(const std::string& name);
 inline constexpr const char* kKindsExpected =
     "expected \"solid\", \"oneWay\", \"none\" or a ramp's character";
 
+/// A tile layer's tiles as two tile maps: its solid tiles and ramps, and its one-way tiles
+/// (blocking from above, in a y-down world), each kept only if it holds a tile.
+class LayerTiles {
+public:
+    LayerTiles(std::size_t columns, std::size_t rows)
+        : solid_(rows, std::string(columns, '.')), oneWay_(solid_) {}
+    void set(std::size_t column, std::size_t row, TileKind kind);
+    /// Adds the maps that hold a tile to `level`, each with `settings` (position, tile
+    /// size, friction...).
+    void addTo(Level& level, TileMapDef settings);
+
+private:
+    std::vector<std::string> solid_, oneWay_;
+    bool anySolid_ = false, anyOneWay_ = false;
+};
+
 /// True for the name of a body field of scene files (src/body_properties.hpp).
 bool isBodyField(const std::string& name);
 

@@ -137,33 +137,21 @@ private:
                 fail(file_, place + ": collision: " + std::string(kKindsExpected));
         }
         const std::size_t columns = static_cast<std::size_t>(layer.width);
-        std::vector<std::string> solid(static_cast<std::size_t>(layer.height),
-                                       std::string(columns, '.'));
-        std::vector<std::string> oneWay = solid;
-        bool anySolid = false, anyOneWay = false;
-        for (std::size_t row = 0; row < solid.size(); ++row)
+        LayerTiles tiles(columns, static_cast<std::size_t>(layer.height));
+        for (std::size_t row = 0; row < static_cast<std::size_t>(layer.height); ++row)
             for (std::size_t column = 0; column < columns; ++column) {
                 const std::uint32_t gid = layer.gids[row * columns + column];
                 if ((gid & kGidBits) == 0)
                     continue;
                 const TileKind kind =
                     kindOf(gid, layer, layerKind, static_cast<int>(column), static_cast<int>(row));
-                (kind.oneWay ? oneWay : solid)[row][column] = kind.tile;
-                (kind.oneWay ? anyOneWay : anySolid) |= kind.tile != '.';
+                tiles.set(column, row, kind);
             }
         TileMapDef def = tileMapSettings(layer.properties, file_, place);
         def.x = static_cast<float>(offsetX + double(layer.left) * map_.tileWidth);
         def.y = static_cast<float>(offsetY + double(layer.top) * map_.tileWidth);
         def.tile = static_cast<float>(map_.tileWidth);
-        if (anySolid) {
-            def.rows = std::move(solid);
-            level_.scene.tileMaps.push_back(def);
-        }
-        if (anyOneWay) {
-            def.rows = std::move(oneWay);
-            def.oneWay = {0.0f, -1.0f};
-            level_.scene.tileMaps.push_back(def);
-        }
+        tiles.addTo(level_, def);
     }
 
     TileKind kindOf(std::uint32_t gid, const Layer& layer, const std::optional<TileKind>& layerKind,
