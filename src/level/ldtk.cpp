@@ -175,15 +175,7 @@ public:
             out.properties.contains("type") ||
             (body != out.properties.end() && body->second == PropertyValue(true));
         if (wantsBody) {
-            Json def = Json::object();
-            for (const auto& [name, value] : out.properties)
-                if (isBodyField(name) && name != "x" && name != "y" && name != "hw" && name != "hh")
-                    def[name] = fieldValue(name, value);
-            def["x"] = out.x;
-            def["y"] = out.y;
-            def["hw"] = out.hw;
-            def["hh"] = out.hh;
-            out.body = bodies_.add(def, out.name, place);
+            out.body = bodies_.add(boxBody(out), out.name, place);
             out.bodyCount = 1;
         }
         level.objects.push_back(std::move(out));

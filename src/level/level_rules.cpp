@@ -78,6 +78,23 @@ nlohmann::json fieldValue(const std::string& name, const PropertyValue& value) {
     return toJson(value);
 }
 
+nlohmann::json bodyFields(const Properties& properties) {
+    nlohmann::json def = nlohmann::json::object();
+    for (const auto& [name, value] : properties)
+        if (isBodyField(name))
+            def[name] = fieldValue(name, value);
+    return def;
+}
+
+nlohmann::json boxBody(const LevelObject& object) {
+    nlohmann::json def = bodyFields(object.properties);
+    def["x"] = object.x;
+    def["y"] = object.y;
+    def["hw"] = object.hw;
+    def["hh"] = object.hh;
+    return def;
+}
+
 bool withinFloats(double v) {
     return std::abs(v) <= 1e30;
 }

@@ -69,6 +69,14 @@ bool isBodyField(const std::string& name);
 /// surfaceVelocity) also from text such as "0, -1" (editors have no vector property).
 nlohmann::json fieldValue(const std::string& name, const PropertyValue& value);
 
+/// The custom properties that are body fields of scene files, as a scene file's body
+/// object holds them (fieldValue).
+nlohmann::json bodyFields(const Properties& properties);
+
+/// The body object of an object's box: its custom properties that are body fields, with
+/// its centre and half size over any the properties gave.
+nlohmann::json boxBody(const LevelObject& object);
+
 /// True for a length a float holds with room: |v| <= 1e30 (NaN is not).
 bool withinFloats(double v);
 

@@ -251,10 +251,7 @@ private:
                 continue;
             // The outer normal's direction: the left of (dx, dy) is (dy, -dx) on screen.
             const double nx = outsideOnLeft ? dy : -dy, ny = outsideOnLeft ? -dx : dx;
-            nlohmann::json side = nlohmann::json::object();
-            for (const auto& [name, value] : o.properties)
-                if (isBodyField(name))
-                    side[name] = fieldValue(name, value);
+            nlohmann::json side = bodyFields(o.properties);
             if (!side.contains("type"))
                 side["type"] = "static";
             side["x"] = (points[i].x + points[i + 1].x) / 2;
@@ -276,14 +273,7 @@ private:
     /// tile object: its centre and size from the object, its settings from the custom
     /// properties named as scene files name body fields, read by the scene loader.
     static nlohmann::json bodyOf(const Object& o, const LevelObject& out) {
-        nlohmann::json def = nlohmann::json::object();
-        for (const auto& [name, value] : o.properties)
-            if (isBodyField(name) && name != "x" && name != "y" && name != "hw" && name != "hh")
-                def[name] = fieldValue(name, value);
-        def["x"] = out.x;
-        def["y"] = out.y;
-        def["hw"] = out.hw;
-        def["hh"] = out.hh;
+        nlohmann::json def = boxBody(out);
         if (o.shape == Shape::Ellipse)
             def["radius"] = std::min(out.hw, out.hh);
         return def;

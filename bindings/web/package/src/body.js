@@ -3,24 +3,16 @@
 // and Lua. Its settings are properties (body.friction = 0.2), read and written through
 // jostle.h's getters and setters.
 import * as args from "./args.js";
+import {Handle} from "./handle.js";
 
 const TYPES = ["static", "kinematic", "dynamic"];
 const RESPONSES = ["slide", "touch", "cross", "bounce", "ignore"];
 
-export class Body {
+export class Body extends Handle {
   constructor(world, index, generation, serial) {
-    this.world = world;
-    this.index = index;
-    this.generation = generation;
-    this.serial = serial;
+    super(world, index, generation, serial);
     /// Yours: any value, kept on this object (createBody's def.userData).
     this.userData = undefined;
-  }
-
-  /// Calls jostle.h's `name`(world, handle, ...rest) and returns what it returns.
-  call(fn, name, ...rest) {
-    const rt = this.world.rt;
-    return rt.m[name](this.world.live(fn), rt.handle(this), ...rest);
   }
 
   /// Calls a getter of a struct result written at the scratch's out; returns its address.

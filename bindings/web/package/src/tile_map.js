@@ -2,20 +2,9 @@
 // as a body's is. Its tiles are the characters of a scene file's rows: "#" solid, "."
 // empty, a ramp's character.
 import * as args from "./args.js";
+import {Handle} from "./handle.js";
 
-export class TileMap {
-  constructor(world, index, generation, serial) {
-    this.world = world;
-    this.index = index;
-    this.generation = generation;
-    this.serial = serial;
-  }
-
-  call(fn, name, ...rest) {
-    const rt = this.world.rt;
-    return rt.m[name](this.world.live(fn), rt.handle(this), ...rest);
-  }
-
+export class TileMap extends Handle {
   /// True while the map exists.
   get valid() {
     const w = this.world;

@@ -3,6 +3,7 @@
 import * as args from "./args.js";
 import {Body} from "./body.js";
 import {TileMap} from "./tile_map.js";
+import {handleAt} from "./handle.js";
 import * as queries from "./queries.js";
 
 const SOLVERS = ["classic", "physical"];
@@ -34,13 +35,7 @@ export class World {
 
   /// The Body of the handle at `at` in the module's memory (null for the null handle).
   bodyAt(at) {
-    const words = this.rt.m.HEAPU32, index = words[at >> 2], generation = words[(at >> 2) + 1];
-    if (generation === 0) return null;
-    const known = this.bodyOfSlot[index];
-    if (known !== undefined && known.generation === generation) return known;
-    const body = new Body(this, index, generation, words[(at >> 2) + 2]);
-    if (known === undefined || known.generation < generation) this.bodyOfSlot[index] = body;
-    return body;
+    return handleAt(this, at, this.bodyOfSlot, Body);
   }
 
   // --- Settings ---------------------------------------------------------------------------
@@ -172,14 +167,9 @@ export class World {
     }
   }
 
+  /// The TileMap of the handle at `at` (null for the null handle), as bodyAt.
   tileMapAt(at) {
-    const words = this.rt.m.HEAPU32, index = words[at >> 2], generation = words[(at >> 2) + 1];
-    if (generation === 0) return null;
-    const known = this.tileMapOfSlot[index];
-    if (known !== undefined && known.generation === generation) return known;
-    const map = new TileMap(this, index, generation, words[(at >> 2) + 2]);
-    if (known === undefined || known.generation < generation) this.tileMapOfSlot[index] = map;
-    return map;
+    return handleAt(this, at, this.tileMapOfSlot, TileMap);
   }
 
   /// How many bodies there are, tile maps' included.
