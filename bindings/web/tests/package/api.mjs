@@ -342,12 +342,18 @@ await rejects("an unknown option", load({wasmBinary: bytes}), "load: no option \
   const world = jostle.createWorld({gravity: [0, 800]});
   for (let i = 0; i < 1000; i++) world.createBody({x: (i % 40) * 3, y: -(i / 40 | 0) * 3, hw: 1, hh: 1});
   const positions = new Float32Array(2 * world.bodyCount);
-  // Warmed up first: V8 compiles a hot function, which allocates on the heap once.
+  // Warmed up first: V8 compiles a hot function, which allocates on the heap once. V8 may
+  // still finish a compilation on the main thread during a window, a one-off allocation
+  // of some kilobytes; garbage made by each read shows in every window, so the least of
+  // three windows is the reads' own.
   for (let i = 0; i < 20000; i++) world.readPositions(positions);
-  globalThis.gc();
-  const before = process.memoryUsage().heapUsed;
-  for (let i = 0; i < 10000; i++) world.readPositions(positions);
-  const grown = process.memoryUsage().heapUsed - before;
+  let grown = Infinity;
+  for (let window = 0; window < 3; window++) {
+    globalThis.gc();
+    const before = process.memoryUsage().heapUsed;
+    for (let i = 0; i < 10000; i++) world.readPositions(positions);
+    grown = Math.min(grown, process.memoryUsage().heapUsed - before);
+  }
   // A single object a call would be 10,000 objects, hundreds of KB.
   check(grown < 10000, `10,000 reads of 1,000 positions make no garbage (the heap grew ${grown} bytes)`);
   check(positions[0] === 0 && positions[2] === 3, "and read them");
