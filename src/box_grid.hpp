@@ -53,6 +53,22 @@ public:
     template <class Visit>
     void forEachPairOf(std::uint32_t begin, std::uint32_t end, Visit&& visit) const;
 
+    /// Calls visit(cell) with the bounds of every cell that holds a box (of every level
+    /// but the last, infinite one), for debug drawing: in a dense level each once, in a
+    /// hashed one once for each run of its boxes in the same cell.
+    template <class Visit> void forEachCell(Visit&& visit) const {
+        for (int index = 0; index + 1 < kLevels; ++index) {
+            const Level& level = levels_[index];
+            for (std::uint32_t k = level.begin; k < level.end; ++k) {
+                const Cell c = sortedCells_[k];
+                if (k > level.begin && sortedCells_[k - 1].x == c.x && sortedCells_[k - 1].y == c.y)
+                    continue;
+                const Vec2 low{float(c.x * level.size), float(c.y * level.size)};
+                visit(Box{low, {float((c.x + 1) * level.size), float((c.y + 1) * level.size)}});
+            }
+        }
+    }
+
 private:
     static constexpr std::uint32_t kNone = UINT32_MAX;
     /// Cell coordinates are clamped here, so that a window can add and subtract one

@@ -15,6 +15,7 @@
 #pragma once
 
 #include "jostle/body.hpp"
+#include "jostle/debug_draw.hpp"
 #include "jostle/error.hpp"
 #include "jostle/math.hpp"
 #include "jostle/tasks.hpp"
@@ -309,6 +310,10 @@ public:
     std::size_t readVelocities(std::span<Vec2> out) const;
     /// The same for their half extents (halfExtents): with the positions, every box to draw.
     std::size_t readHalfExtents(std::span<Vec2> out) const;
+
+    /// Draws the world as the engine sees it through the game's renderer: every body in
+    /// its shape and colour, and what `options` asks for (jostle/debug_draw.hpp).
+    void debugDraw(DebugDraw& draw, const DebugDrawOptions& options = {}) const;
 
     /// The body as a definition: its current position, velocity and settings.
     BodyDef bodyDef(BodyId id) const;

@@ -1,0 +1,87 @@
+// Debug drawing: what the engine sees, drawn by the game's own renderer over its sprites
+// in one call (docs/debug-draw.md).
+//
+//     struct Lines : jostle::DebugDraw {
+//         void line(jostle::Vec2 from, jostle::Vec2 to, jostle::Colour colour) override {
+//             myRenderer.line(from.x, from.y, to.x, to.y, colour.r, colour.g, colour.b);
+//         }
+//     };
+//     Lines lines;
+//     world.debugDraw(lines);                               // every shape, outlined
+//     world.debugDraw(lines, {.contacts = true, .grid = true});
+//
+// `line` is the one call a renderer must draw; the others are drawn with lines unless the
+// renderer overrides them to fill. Every length and point is in world units: the game's
+// camera maps them to its screen as it maps its sprites.
+#pragma once
+
+#include "jostle/math.hpp"
+
+#include <cstdint>
+
+namespace jostle {
+
+/// A colour: red, green, blue and opacity, 0 to 255 each (sRGB).
+struct Colour {
+    std::uint8_t r = 0;
+    std::uint8_t g = 0;
+    std::uint8_t b = 0;
+    std::uint8_t a = 255;
+    friend constexpr bool operator==(Colour, Colour) = default;
+};
+
+/// The colours debugDraw uses. A body's fill is its type's colour (dimmed while it
+/// sleeps); its outline is the fill darkened, so that boxes side by side stay apart.
+struct DebugPalette {
+    Colour staticBody{150, 150, 150};
+    Colour kinematicBody{70, 130, 230};
+    Colour dynamicBody{240, 150, 60};
+    int sleepingPercent = 55; ///< a sleeping body's fill: its type's colour scaled so
+    int outlinePercent = 60;  ///< an outline: its fill scaled so
+    Colour bulletOutline{255, 255, 255};
+    Colour oneWayFace{230, 230, 230}; ///< the face a one-way body blocks from
+    Colour contact{250, 250, 120};    ///< contact points and normals
+    Colour velocity{90, 220, 120};
+    Colour touching{230, 60, 60};  ///< the sides a dynamic body touched
+    Colour gridCell{50, 110, 140}; ///< the broadphase's cells that hold boxes
+    Colour gridBox{110, 220, 250}; ///< the moving bodies' boxes as the broadphase has them
+};
+
+/// What debugDraw draws. Bodies are drawn in their shapes: sensors outlined only and
+/// last; a one-way body's blocking face and a segment's blocking side marked. Marks with
+/// no length of their own (a normal, a segment's tick, a point's cross) are `markLength`
+/// long at most: a game drawing in pixels sets it to a few pixels in world units.
+struct DebugDrawOptions {
+    bool shapes = true;      ///< every body, tile maps' merged boxes among them
+    bool contacts = false;   ///< every touching pair: where it touches, and its normal
+    bool velocities = false; ///< awake dynamic bodies: a tenth of a second of their motion
+    bool touching = false;   ///< the sides each dynamic body touched in the last step
+    bool grid = false;       ///< the broadphase's occupied cells and its moving boxes
+    float markLength = 0.25f;
+    /// Only what touches this box is drawn (a game's view); a box with min > max on
+    /// either axis (the default) draws everything.
+    Vec2 viewMin{1.0f, 1.0f};
+    Vec2 viewMax{0.0f, 0.0f};
+    DebugPalette palette;
+};
+
+/// A game's renderer, as debugDraw calls it. Points are in world units. A fill whose
+/// opacity is 0 is not filled: only the outline is drawn.
+class DebugDraw {
+public:
+    virtual ~DebugDraw() = default;
+    /// A straight line.
+    virtual void line(Vec2 from, Vec2 to, Colour colour) = 0;
+    /// An axis-aligned box by its centre and half extents. Default: its outline in lines.
+    virtual void box(Vec2 centre, Vec2 half, Colour fill, Colour outline);
+    /// A box whose corners are rounded by `radius` (<= both half extents): a circle when
+    /// both half extents are the radius, a capsule when one is. Default: its outline in
+    /// lines, 6 to a corner.
+    virtual void roundedBox(Vec2 centre, Vec2 half, float radius, Colour fill, Colour outline);
+    /// A triangle (a ramp), its corners in order around it. Default: its outline in lines.
+    virtual void triangle(Vec2 a, Vec2 b, Vec2 c, Colour fill, Colour outline);
+    /// A point (a contact). Default: a cross of lines `size` wide.
+    virtual void point(Vec2 at, float size, Colour colour);
+};
+
+} // namespace jostle

@@ -1,0 +1,351 @@
+// Debug drawing (World::debugDraw): what each body, contact and mark becomes as calls of
+// the game's renderer, and the line drawings a renderer gets when it draws lines only.
+#include "jostle/tilemap.hpp"
+#include "jostle/world.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace jostle {
+namespace {
+
+constexpr float kDt = 1.0f / 60.0f;
+constexpr Colour kNone{0, 0, 0, 0};
+
+/// Every call, as it came.
+struct Recorder : DebugDraw {
+    struct Call {
+        enum Kind { Line, Box, Rounded, Triangle, Point } kind;
+        std::vector<Vec2> points; ///< line: its ends; box, rounded: centre, half; triangle:
+                                  ///< its corners; point: where
+        float radius = 0.0f;      ///< rounded: the radius; point: the size
+        Colour fill;              ///< line, point: their colour
+        Colour outline;
+    };
+    std::vector<Call> calls;
+
+    void line(Vec2 from, Vec2 to, Colour colour) override {
+        calls.push_back({Call::Line, {from, to}, 0.0f, colour, colour});
+    }
+    void box(Vec2 centre, Vec2 half, Colour fill, Colour outline) override {
+        calls.push_back({Call::Box, {centre, half}, 0.0f, fill, outline});
+    }
+    void roundedBox(Vec2 centre, Vec2 half, float radius, Colour fill, Colour outline) override {
+        calls.push_back({Call::Rounded, {centre, half}, radius, fill, outline});
+    }
+    void triangle(Vec2 a, Vec2 b, Vec2 c, Colour fill, Colour outline) override {
+        calls.push_back({Call::Triangle, {a, b, c}, 0.0f, fill, outline});
+    }
+    void point(Vec2 at, float size, Colour colour) override {
+        calls.push_back({Call::Point, {at}, size, colour, colour});
+    }
+    std::vector<Call> of(Call::Kind kind) const {
+        std::vector<Call> found;
+        std::copy_if(calls.begin(), calls.end(), std::back_inserter(found),
+                     [kind](const Call& call) { return call.kind == kind; });
+        return found;
+    }
+};
+
+/// Draws lines only: the base class draws the other shapes with them.
+struct Lines : DebugDraw {
+    std::vector<std::pair<Vec2, Vec2>> lines;
+    void line(Vec2 from, Vec2 to, Colour) override { lines.emplace_back(from, to); }
+};
+
+const DebugPalette kPalette;
+
+TEST(DebugDraw, EachBodyTypeIsFilledInItsColourAndOutlinedDarker) {
+    World world(WorldDef{.sleeping = false});
+    world.createBody({.type = BodyType::Static, .x = 1, .y = 2, .hw = 3, .hh = 0.5f});
+    world.createBody({.type = BodyType::Kinematic, .x = -4, .y = 0, .hw = 1, .hh = 1});
+    world.createBody({.x = 0, .y = -5, .hw = 0.5f, .hh = 0.25f});
+    Recorder draw;
+    world.debugDraw(draw);
+    ASSERT_EQ(draw.calls.size(), 3u);
+    const Colour fills[] = {kPalette.staticBody, kPalette.kinematicBody, kPalette.dynamicBody};
+    const Vec2 centres[] = {{1, 2}, {-4, 0}, {0, -5}};
+    const Vec2 halves[] = {{3, 0.5f}, {1, 1}, {0.5f, 0.25f}};
+    for (std::size_t i = 0; i < 3; ++i) {
+        const Recorder::Call& call = draw.calls[i];
+        EXPECT_EQ(call.kind, Recorder::Call::Box);
+        EXPECT_EQ(call.points[0], centres[i]);
+        EXPECT_EQ(call.points[1], halves[i]);
+        EXPECT_EQ(call.fill, fills[i]);
+    }
+    // Outlines are 60 % of the fill, rounded down: 240 150 60 -> 144 90 36.
+    EXPECT_EQ(draw.calls[2].outline, (Colour{144, 90, 36}));
+    EXPECT_EQ(draw.calls[0].outline, (Colour{90, 90, 90}));
+}
+
+TEST(DebugDraw, ASleepingBodyIsDimmedAndAnAwakeOneIsNot) {
+    World world(WorldDef{.gravity = {0, 10}});
+    world.createBody({.type = BodyType::Static, .x = 0, .y = 1, .hw = 10, .hh = 1});
+    const BodyId box = world.createBody({.x = 0, .y = -0.5f, .hw = 0.5f, .hh = 0.5f});
+    for (int i = 0; i < 600 && world.isAwake(box); ++i)
+        world.step(kDt);
+    ASSERT_FALSE(world.isAwake(box));
+    Recorder draw;
+    world.debugDraw(draw);
+    ASSERT_EQ(draw.calls.size(), 2u);
+    // 55 % of 240 150 60 rounded down, then 60 % of that for the outline.
+    EXPECT_EQ(draw.calls[1].fill, (Colour{132, 82, 33}));
+    EXPECT_EQ(draw.calls[1].outline, (Colour{79, 49, 19}));
+    // A static body never sleeps: its colour stays.
+    EXPECT_EQ(draw.calls[0].fill, kPalette.staticBody);
+}
+
+TEST(DebugDraw, SensorsAreOutlinedOnlyAndDrawnAfterEverythingElse) {
+    World world;
+    world.createBody({.type = BodyType::Static, .x = 0, .y = 0, .hw = 1, .hh = 1, .sensor = true});
+    world.createBody({.type = BodyType::Static, .x = 0, .y = 0, .hw = 2, .hh = 2});
+    Recorder draw;
+    world.debugDraw(draw);
+    ASSERT_EQ(draw.calls.size(), 2u);
+    EXPECT_EQ(draw.calls[0].points[1], (Vec2{2, 2})); // the solid body first
+    EXPECT_EQ(draw.calls[1].points[1], (Vec2{1, 1}));
+    EXPECT_EQ(draw.calls[1].fill.a, 0); // not filled
+    EXPECT_EQ(draw.calls[1].outline, kPalette.staticBody);
+}
+
+TEST(DebugDraw, BulletsGetTheirOwnOutline) {
+    World world;
+    world.createBody({.x = 0, .y = 0, .hw = 0.1f, .hh = 0.1f, .bullet = true});
+    Recorder draw;
+    world.debugDraw(draw);
+    ASSERT_EQ(draw.calls.size(), 1u);
+    EXPECT_EQ(draw.calls[0].outline, kPalette.bulletOutline);
+}
+
+TEST(DebugDraw, RoundShapesAreRoundedBoxesWithTheirRadius) {
+    World world;
+    world.createBody({.x = 3, .y = 4, .hw = 0.5f, .hh = 0.5f, .radius = 0.5f});   // a circle
+    world.createBody({.x = 0, .y = 0, .hw = 0.25f, .hh = 1.0f, .radius = 0.25f}); // a capsule
+    Recorder draw;
+    world.debugDraw(draw);
+    const auto rounded = draw.of(Recorder::Call::Rounded);
+    ASSERT_EQ(rounded.size(), 2u);
+    EXPECT_EQ(rounded[0].points[0], (Vec2{3, 4}));
+    EXPECT_EQ(rounded[0].points[1], (Vec2{0.5f, 0.5f}));
+    EXPECT_EQ(rounded[0].radius, 0.5f);
+    EXPECT_EQ(rounded[1].points[1], (Vec2{0.25f, 1.0f}));
+    EXPECT_EQ(rounded[1].radius, 0.25f);
+}
+
+// A ramp whose slope names the corner (+x, -y) is the box without the half towards that
+// corner: the sloped face runs between the other diagonal's corners, (+x, +y) and (-x, -y),
+// and the right angle is at the corner opposite the one named, (-x, +y).
+TEST(DebugDraw, ARampIsTheTriangleItsSlopeLeaves) {
+    World world;
+    world.createBody(
+        {.type = BodyType::Static, .x = 10, .y = 20, .hw = 2, .hh = 1, .slope = {1, -1}});
+    Recorder draw;
+    world.debugDraw(draw);
+    ASSERT_EQ(draw.calls.size(), 1u);
+    const Recorder::Call& call = draw.calls[0];
+    ASSERT_EQ(call.kind, Recorder::Call::Triangle);
+    EXPECT_EQ(call.points[0], (Vec2{12, 21}));
+    EXPECT_EQ(call.points[1], (Vec2{8, 19}));
+    EXPECT_EQ(call.points[2], (Vec2{8, 21}));
+    EXPECT_EQ(call.fill, kPalette.staticBody);
+}
+
+// A segment is the sloped face alone, with a tick from its middle towards the side it
+// blocks (the corner its slope names): a sixth of its length, at most markLength.
+TEST(DebugDraw, ASegmentIsALineWithATickOnItsBlockingSide) {
+    World world;
+    world.createBody({.type = BodyType::Static,
+                      .x = 0,
+                      .y = 0,
+                      .hw = 3,
+                      .hh = 3,
+                      .slope = {-1, -1},
+                      .segment = true});
+    Recorder draw;
+    world.debugDraw(draw, {.markLength = 0.5f});
+    const auto lines = draw.of(Recorder::Call::Line);
+    ASSERT_EQ(lines.size(), 2u);
+    EXPECT_EQ(lines[0].points[0], (Vec2{-3, 3}));
+    EXPECT_EQ(lines[0].points[1], (Vec2{3, -3}));
+    const Vec2 tick = lines[1].points[1] - lines[1].points[0];
+    EXPECT_EQ(lines[1].points[0], (Vec2{0, 0}));
+    // Length 6 sqrt 2, a sixth of it 1.41: the mark's 0.5 is shorter. Towards (-1, -1).
+    EXPECT_NEAR(length(tick), 0.5f, 1e-6f);
+    EXPECT_NEAR(tick.x, -0.5f / std::sqrt(2.0f), 1e-6f);
+    EXPECT_NEAR(tick.y, -0.5f / std::sqrt(2.0f), 1e-6f);
+}
+
+TEST(DebugDraw, AOneWayBodyMarksTheFaceItBlocksFrom) {
+    World world;
+    world.createBody(
+        {.type = BodyType::Static, .x = 0, .y = 10, .hw = 4, .hh = 0.5f, .oneWay = {0, -1}});
+    Recorder draw;
+    world.debugDraw(draw);
+    const auto lines = draw.of(Recorder::Call::Line);
+    ASSERT_EQ(lines.size(), 1u);
+    EXPECT_EQ(lines[0].fill, kPalette.oneWayFace);
+    EXPECT_EQ(lines[0].points[0], (Vec2{-4, 9.5f})); // the top face, y = 10 - 0.5
+    EXPECT_EQ(lines[0].points[1], (Vec2{4, 9.5f}));
+}
+
+// A tile map's solid tiles are merged into runs: a row of five tiles is one box.
+TEST(DebugDraw, ATileMapIsDrawnAsItsMergedBoxes) {
+    World world;
+    createTileMap(world, {.x = 0, .y = 0, .tile = 1, .rows = {".....", "#####"}});
+    Recorder draw;
+    world.debugDraw(draw);
+    ASSERT_EQ(draw.calls.size(), 1u);
+    EXPECT_EQ(draw.calls[0].points[0], (Vec2{2.5f, 1.5f}));
+    EXPECT_EQ(draw.calls[0].points[1], (Vec2{2.5f, 0.5f}));
+}
+
+// A box resting on a floor whose top is y = 0: one contact, at y = 0 under the box, its
+// normal pointing into the box (up, y-down world), markLength long (half the box is more).
+TEST(DebugDraw, AContactIsItsPointAndItsNormalIntoTheBodyItPushes) {
+    World world(WorldDef{.gravity = {0, 10}, .sleeping = false});
+    world.createBody({.type = BodyType::Static, .x = 0, .y = 1, .hw = 10, .hh = 1});
+    world.createBody({.x = 2, .y = -0.5f, .hw = 0.5f, .hh = 0.5f});
+    for (int i = 0; i < 60; ++i)
+        world.step(kDt);
+    Recorder draw;
+    world.debugDraw(draw, {.shapes = false, .contacts = true, .markLength = 0.25f});
+    const auto points = draw.of(Recorder::Call::Point);
+    const auto lines = draw.of(Recorder::Call::Line);
+    ASSERT_EQ(points.size(), 1u);
+    ASSERT_EQ(lines.size(), 1u);
+    EXPECT_NEAR(points[0].points[0].x, 2.0f, 1e-3f);
+    EXPECT_NEAR(points[0].points[0].y, 0.0f, 1e-2f);
+    EXPECT_EQ(points[0].fill, kPalette.contact);
+    const Vec2 normal = lines[0].points[1] - lines[0].points[0];
+    EXPECT_NEAR(normal.x, 0.0f, 1e-6f);
+    EXPECT_NEAR(normal.y, -0.25f, 1e-6f);
+}
+
+// Falling with gravity (0, 10) for 0.5 s: 5 units/s down, drawn as 0.1 s of motion.
+TEST(DebugDraw, VelocityIsATenthOfASecondOfMotion) {
+    World world(WorldDef{.gravity = {0, 10}, .sleeping = false});
+    const BodyId box = world.createBody({.x = 0, .y = 0, .hw = 0.5f, .hh = 0.5f});
+    for (int i = 0; i < 30; ++i)
+        world.step(kDt);
+    Recorder draw;
+    world.debugDraw(draw, {.shapes = false, .velocities = true});
+    const auto lines = draw.of(Recorder::Call::Line);
+    ASSERT_EQ(lines.size(), 1u);
+    EXPECT_EQ(lines[0].points[0], world.position(box));
+    EXPECT_NEAR(lines[0].points[1].y - lines[0].points[0].y, 0.5f, 1e-4f);
+    EXPECT_EQ(lines[0].fill, kPalette.velocity);
+}
+
+// Touched sides are relative to gravity: with gravity pointing to +x, the floor is the
+// box's +x face.
+TEST(DebugDraw, TheTouchedFloorIsTheFaceGravityPullsTowards) {
+    World world(WorldDef{.gravity = {10, 0}, .sleeping = false});
+    world.createBody({.type = BodyType::Static, .x = 1, .y = 0, .hw = 1, .hh = 10});
+    world.createBody({.x = -0.5f, .y = 0, .hw = 0.5f, .hh = 0.5f});
+    for (int i = 0; i < 30; ++i)
+        world.step(kDt);
+    Recorder draw;
+    world.debugDraw(draw, {.shapes = false, .touching = true});
+    const auto lines = draw.of(Recorder::Call::Line);
+    ASSERT_EQ(lines.size(), 1u);
+    EXPECT_EQ(lines[0].fill, kPalette.touching);
+    EXPECT_NEAR(lines[0].points[0].x, 0.0f, 1e-2f); // the face at x = 0
+    EXPECT_NEAR(lines[0].points[1].x, 0.0f, 1e-2f);
+    EXPECT_NEAR(std::abs(lines[0].points[1].y - lines[0].points[0].y), 1.0f, 1e-4f);
+}
+
+TEST(DebugDraw, OnlyWhatTouchesTheViewIsDrawn) {
+    World world;
+    world.createBody({.type = BodyType::Static, .x = 0, .y = 0, .hw = 1, .hh = 1});
+    world.createBody({.type = BodyType::Static, .x = 100, .y = 0, .hw = 1, .hh = 1});
+    Recorder draw;
+    world.debugDraw(draw, {.viewMin = {-10, -10}, .viewMax = {10, 10}});
+    ASSERT_EQ(draw.calls.size(), 1u);
+    EXPECT_EQ(draw.calls[0].points[0], (Vec2{0, 0}));
+}
+
+// The broadphase files a box in the cell of its level that holds its min corner
+// (docs/broadphase.md): some drawn cell holds it, and the moving box covers the body.
+TEST(DebugDraw, TheGridShowsACellHoldingEachMovingBox) {
+    World world(WorldDef{.gravity = {0, 10}, .sleeping = false});
+    const BodyId box = world.createBody({.x = 3.3f, .y = -7.1f, .hw = 0.5f, .hh = 0.5f});
+    world.step(kDt);
+    Recorder draw;
+    world.debugDraw(draw, {.shapes = false, .grid = true});
+    const Vec2 low = world.position(box) - world.halfExtents(box);
+    const Vec2 high = world.position(box) + world.halfExtents(box);
+    bool cell = false, grown = false;
+    for (const auto& call : draw.of(Recorder::Call::Box)) {
+        const Vec2 min = call.points[0] - call.points[1], max = call.points[0] + call.points[1];
+        EXPECT_EQ(call.fill.a, 0);
+        if (call.outline == kPalette.gridCell)
+            cell = cell || (min.x <= low.x && low.x < max.x && min.y <= low.y && low.y < max.y);
+        if (call.outline == kPalette.gridBox)
+            grown =
+                grown || (min.x <= low.x && min.y <= low.y && max.x >= high.x && max.y >= high.y);
+    }
+    EXPECT_TRUE(cell);
+    EXPECT_TRUE(grown);
+}
+
+// --- A renderer of lines alone ------------------------------------------------------------
+
+TEST(DebugDraw, WithLinesOnlyABoxIsItsFourSides) {
+    World world;
+    world.createBody({.type = BodyType::Static, .x = 0, .y = 0, .hw = 2, .hh = 1});
+    Lines draw;
+    world.debugDraw(draw);
+    ASSERT_EQ(draw.lines.size(), 4u);
+    for (const auto& [from, to] : draw.lines) {
+        // Each side runs along an axis on the box's edge.
+        EXPECT_TRUE(from.x == to.x || from.y == to.y);
+        EXPECT_TRUE(std::abs(from.x) == 2 || std::abs(from.y) == 1);
+    }
+}
+
+TEST(DebugDraw, WithLinesOnlyACircleIsAClosedRingOnItsEdge) {
+    World world;
+    world.createBody({.x = 1, .y = 1, .hw = 2, .hh = 2, .radius = 2});
+    Lines draw;
+    world.debugDraw(draw);
+    ASSERT_GE(draw.lines.size(), 12u);
+    for (const auto& [from, to] : draw.lines)
+        EXPECT_NEAR(length(from - Vec2{1, 1}), 2.0f, 1e-5f);
+    for (std::size_t i = 0; i < draw.lines.size(); ++i) // each line starts where one ends
+        EXPECT_EQ(draw.lines[i].first,
+                  draw.lines[(i + draw.lines.size() - 1) % draw.lines.size()].second);
+}
+
+TEST(DebugDraw, WithLinesOnlyARampIsItsThreeSides) {
+    World world;
+    world.createBody({.type = BodyType::Static, .x = 0, .y = 0, .hw = 1, .hh = 1, .slope = {1, 1}});
+    Lines draw;
+    world.debugDraw(draw);
+    EXPECT_EQ(draw.lines.size(), 3u);
+}
+
+TEST(DebugDraw, BadOptionsAreRefusedByName) {
+    World world;
+    Lines draw;
+    EXPECT_THROW(
+        {
+            try {
+                world.debugDraw(draw, {.markLength = -1});
+            } catch (const Error& error) {
+                EXPECT_STREQ(error.what(), "debugDraw: options.markLength must be >= 0");
+                throw;
+            }
+        },
+        Error);
+    EXPECT_THROW(world.debugDraw(draw, {.markLength = NAN}), Error);
+    EXPECT_THROW(world.debugDraw(draw, {.viewMin = {INFINITY, 0}}), Error);
+    DebugDrawOptions options;
+    options.palette.sleepingPercent = 101;
+    EXPECT_THROW(world.debugDraw(draw, options), Error);
+}
+
+} // namespace
+} // namespace jostle
