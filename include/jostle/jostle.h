@@ -998,6 +998,80 @@ bool jostle_world_restore(jostle_world* world, const void* snapshot, size_t size
 /// one: peers compare it to find out that their worlds differ. 0 on misuse.
 uint64_t jostle_world_state_hash(const jostle_world* world);
 
+// === Debug drawing (docs/debug-draw.md) ====================================================
+
+/// A colour: red, green, blue and opacity, 0 to 255 each (jostle::Colour).
+typedef struct jostle_colour {
+    uint8_t r;
+    uint8_t g;
+    uint8_t b;
+    uint8_t a;
+} jostle_colour;
+
+/// The colours jostle_world_debug_draw uses (jostle::DebugPalette, whose comments say what
+/// each is for). A body's fill is its type's colour, scaled by sleeping_percent while it
+/// sleeps; its outline is the fill scaled by outline_percent. Percentages in [0, 100].
+typedef struct jostle_debug_palette {
+    jostle_colour static_body;
+    jostle_colour kinematic_body;
+    jostle_colour dynamic_body;
+    int sleeping_percent;
+    int outline_percent;
+    jostle_colour bullet_outline;
+    jostle_colour one_way_face;
+    jostle_colour contact;
+    jostle_colour velocity;
+    jostle_colour touching;
+    jostle_colour grid_cell;
+    jostle_colour grid_box;
+} jostle_debug_palette;
+
+/// What jostle_world_debug_draw draws (jostle::DebugDrawOptions): start from
+/// jostle_default_debug_draw_options(), then set what you need.
+typedef struct jostle_debug_draw_options {
+    bool shapes;       ///< every body in its shape, tile maps' merged boxes among them (true)
+    bool contacts;     ///< every touching pair: where it touches, and its normal
+    bool velocities;   ///< awake dynamic bodies: a tenth of a second of their motion
+    bool touching;     ///< the sides each dynamic body touched in the last step
+    bool grid;         ///< the broadphase's occupied cells and its moving boxes
+    float mark_length; ///< the longest a normal, a segment's tick or a point's cross is (>= 0)
+    /// Only what touches this box is drawn; min > max on either axis draws everything.
+    jostle_vec2 view_min;
+    jostle_vec2 view_max;
+    jostle_debug_palette palette;
+    uint32_t internal_cookie;
+} jostle_debug_draw_options;
+
+jostle_debug_draw_options jostle_default_debug_draw_options(void);
+
+/// The game's renderer: its functions, each given `user`. `line` is required; each other
+/// one may be NULL, and is then drawn with lines. Points and lengths are in world units. A
+/// fill whose opacity `a` is 0 is not filled: only the outline is drawn. The functions must
+/// not change the world (they may read it).
+typedef struct jostle_debug_draw {
+    void (*line)(jostle_vec2 from, jostle_vec2 to, jostle_colour colour, void* user);
+    /// An axis-aligned box by its centre and half extents.
+    void (*box)(jostle_vec2 centre, jostle_vec2 half, jostle_colour fill, jostle_colour outline,
+                void* user);
+    /// A box whose corners are rounded by `radius`: a circle when both half extents are
+    /// the radius, a capsule when one is.
+    void (*rounded_box)(jostle_vec2 centre, jostle_vec2 half, float radius, jostle_colour fill,
+                        jostle_colour outline, void* user);
+    /// A triangle (a ramp), its corners in order around it.
+    void (*triangle)(jostle_vec2 a, jostle_vec2 b, jostle_vec2 c, jostle_colour fill,
+                     jostle_colour outline, void* user);
+    /// A point (a contact), `size` wide.
+    void (*point)(jostle_vec2 at, float size, jostle_colour colour, void* user);
+    void* user;
+} jostle_debug_draw;
+
+/// Draws the world as the engine sees it through `draw` (World::debugDraw): every body in
+/// its shape and colour, and what `options` asks for (NULL: the defaults). False on misuse
+/// (draw or draw->line NULL, options not made by jostle_default_debug_draw_options, a mark
+/// length below 0, a percentage outside [0, 100]); then nothing was drawn.
+bool jostle_world_debug_draw(const jostle_world* world, const jostle_debug_draw* draw,
+                             const jostle_debug_draw_options* options);
+
 // === A fixed time step (docs/fixed-step.md) ================================================
 
 /// Turns variable frame times into a whole number of steps of a fixed dt

@@ -2312,6 +2312,106 @@ static void test_snapshots(void) {
     jostle_fixed_step_destroy(copy);
 }
 
+// --- Debug drawing ---------------------------------------------------------------------------
+
+typedef struct drawn {
+    int lines, boxes, rounded, triangles, points;
+    jostle_vec2 box_centre, box_half;
+    jostle_colour box_fill, box_outline;
+    float radius;
+} drawn;
+
+static void draw_line(jostle_vec2 from, jostle_vec2 to, jostle_colour colour, void* user) {
+    (void)from, (void)to, (void)colour;
+    ((drawn*)user)->lines++;
+}
+static void draw_box(jostle_vec2 centre, jostle_vec2 half, jostle_colour fill,
+                     jostle_colour outline, void* user) {
+    drawn* d = (drawn*)user;
+    d->boxes++;
+    d->box_centre = centre, d->box_half = half, d->box_fill = fill, d->box_outline = outline;
+}
+static void draw_rounded(jostle_vec2 centre, jostle_vec2 half, float radius, jostle_colour fill,
+                         jostle_colour outline, void* user) {
+    (void)centre, (void)half, (void)fill, (void)outline;
+    ((drawn*)user)->rounded++;
+    ((drawn*)user)->radius = radius;
+}
+static void draw_triangle(jostle_vec2 a, jostle_vec2 b, jostle_vec2 c, jostle_colour fill,
+                          jostle_colour outline, void* user) {
+    (void)a, (void)b, (void)c, (void)fill, (void)outline;
+    ((drawn*)user)->triangles++;
+}
+static void draw_point(jostle_vec2 at, float size, jostle_colour colour, void* user) {
+    (void)at, (void)size, (void)colour;
+    ((drawn*)user)->points++;
+}
+
+static void test_debug_draw(void) {
+    jostle_world_def wd = jostle_default_world_def();
+    wd.gravity = (jostle_vec2){0, 10};
+    wd.sleeping = false;
+    jostle_world* world = jostle_world_create(&wd);
+    jostle_body_def floor = jostle_default_body_def();
+    floor.type = JOSTLE_BODY_STATIC, floor.x = 0, floor.y = 1, floor.hw = 10, floor.hh = 1;
+    jostle_body_create(world, &floor);
+    jostle_body_def ball = jostle_default_body_def();
+    ball.x = 0, ball.y = -0.5f, ball.hw = 0.5f, ball.hh = 0.5f, ball.radius = 0.5f;
+    jostle_body_create(world, &ball);
+    jostle_body_def ramp = jostle_default_body_def();
+    ramp.type = JOSTLE_BODY_STATIC, ramp.x = 5, ramp.y = -1, ramp.hw = 1, ramp.hh = 1;
+    ramp.slope = (jostle_vec2){1, -1};
+    jostle_body_create(world, &ramp);
+    for (int i = 0; i < 60; ++i)
+        jostle_world_step(world, 1.0f / 60.0f);
+
+    // Every function given: a box (the floor), a rounded box (the ball), a triangle (the
+    // ramp), and with contacts asked for, one point and one normal line (ball on floor).
+    drawn d = {0};
+    const jostle_debug_draw all = {draw_line,     draw_box,   draw_rounded,
+                                   draw_triangle, draw_point, &d};
+    jostle_debug_draw_options options = jostle_default_debug_draw_options();
+    CHECK(options.shapes && !options.contacts && options.palette.outline_percent == 60,
+          "the defaults are C++'s");
+    options.contacts = true;
+    CHECK(jostle_world_debug_draw(world, &all, &options), "drawn");
+    CHECK(d.boxes == 1 && d.rounded == 1 && d.triangles == 1 && d.points == 1 && d.lines == 1,
+          "one call a shape, a point and a normal");
+    CHECK(d.box_centre.x == 0 && d.box_centre.y == 1 && d.box_half.x == 10 && d.box_half.y == 1,
+          "the floor's box");
+    CHECK(d.box_fill.r == 150 && d.box_fill.a == 255 && d.box_outline.r == 90, "static grey");
+    CHECK(d.radius == 0.5f, "the ball's radius");
+
+    // Lines alone: the box's four sides, the triangle's three, and the default options
+    // (NULL) draw no contacts.
+    drawn lines = {0};
+    const jostle_debug_draw only_lines = {draw_line, NULL, NULL, NULL, NULL, &lines};
+    CHECK(jostle_world_debug_draw(world, &only_lines, NULL), "drawn in lines");
+    CHECK(lines.lines > 4 + 3 && lines.boxes == 0 && lines.points == 0, "everything in lines");
+
+    // Misuse: nothing drawn.
+    drawn none = {0};
+    const jostle_debug_draw no_line = {NULL, draw_box, NULL, NULL, NULL, &none};
+    CHECK(!jostle_world_debug_draw(world, &no_line, NULL), "no line function");
+    CHECK_ERROR("jostle_world_debug_draw", "draw->line is NULL");
+    CHECK(!jostle_world_debug_draw(world, NULL, NULL), "no renderer");
+    CHECK_ERROR("jostle_world_debug_draw", "draw is NULL");
+    jostle_debug_draw_options zeroed;
+    memset(&zeroed, 0, sizeof zeroed);
+    const jostle_debug_draw counted = {draw_line, draw_box, NULL, NULL, NULL, &none};
+    CHECK(!jostle_world_debug_draw(world, &counted, &zeroed), "options not made by the maker");
+    CHECK_ERROR("jostle_world_debug_draw", "jostle_default_debug_draw_options");
+    options.mark_length = -1;
+    CHECK(!jostle_world_debug_draw(world, &counted, &options), "a negative mark");
+    CHECK_ERROR("jostle_world_debug_draw", "markLength must be >= 0");
+    options = jostle_default_debug_draw_options();
+    options.palette.sleeping_percent = 200;
+    CHECK(!jostle_world_debug_draw(world, &counted, &options), "a percentage above 100");
+    CHECK_ERROR("jostle_world_debug_draw", "sleepingPercent must be in [0, 100]");
+    CHECK(none.lines == 0 && none.boxes == 0, "nothing drawn on misuse");
+    jostle_world_destroy(world);
+}
+
 int main(void) {
     test_defaults();
     test_snapshots();
@@ -2348,6 +2448,7 @@ int main(void) {
     test_workers();
     test_a_job_system_that_breaks_the_contract();
     test_threads_that_cannot_start();
+    test_debug_draw();
     printf("test_c_api: all checks passed\n");
     return 0;
 }
