@@ -53,6 +53,52 @@ void DebugDraw::point(Vec2 at, float size, Colour colour) {
     line(at - Vec2{0.0f, h}, at + Vec2{0.0f, h}, colour);
 }
 
+// --- The list -----------------------------------------------------------------------------
+
+void DebugDrawList::line(Vec2 from, Vec2 to, Colour colour) {
+    commands_.push_back({{from.x, from.y, to.x, to.y}, colour, colour, Kind::Line});
+}
+
+void DebugDrawList::box(Vec2 centre, Vec2 half, Colour fill, Colour outline) {
+    commands_.push_back({{centre.x, centre.y, half.x, half.y}, fill, outline, Kind::Box});
+}
+
+void DebugDrawList::roundedBox(Vec2 centre, Vec2 half, float radius, Colour fill, Colour outline) {
+    commands_.push_back(
+        {{centre.x, centre.y, half.x, half.y, radius}, fill, outline, Kind::RoundedBox});
+}
+
+void DebugDrawList::triangle(Vec2 a, Vec2 b, Vec2 c, Colour fill, Colour outline) {
+    commands_.push_back({{a.x, a.y, b.x, b.y, c.x, c.y}, fill, outline, Kind::Triangle});
+}
+
+void DebugDrawList::point(Vec2 at, float size, Colour colour) {
+    commands_.push_back({{at.x, at.y, size}, colour, colour, Kind::Point});
+}
+
+void DebugDrawList::replay(DebugDraw& draw) const {
+    for (const Command& c : commands_) {
+        const float* v = c.values;
+        switch (c.kind) {
+        case Kind::Line:
+            draw.line({v[0], v[1]}, {v[2], v[3]}, c.fill);
+            break;
+        case Kind::Box:
+            draw.box({v[0], v[1]}, {v[2], v[3]}, c.fill, c.outline);
+            break;
+        case Kind::RoundedBox:
+            draw.roundedBox({v[0], v[1]}, {v[2], v[3]}, v[4], c.fill, c.outline);
+            break;
+        case Kind::Triangle:
+            draw.triangle({v[0], v[1]}, {v[2], v[3]}, {v[4], v[5]}, c.fill, c.outline);
+            break;
+        case Kind::Point:
+            draw.point({v[0], v[1]}, v[2], c.fill);
+            break;
+        }
+    }
+}
+
 // --- What the world draws -----------------------------------------------------------------
 
 namespace {

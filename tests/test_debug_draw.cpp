@@ -327,6 +327,35 @@ TEST(DebugDraw, WithLinesOnlyARampIsItsThreeSides) {
     EXPECT_EQ(draw.lines.size(), 3u);
 }
 
+// A list replays the calls in their order with their values: the same calls as drawing
+// straight away.
+TEST(DebugDraw, AListReplaysTheSameCalls) {
+    World world(WorldDef{.gravity = {0, 10}, .sleeping = false});
+    world.createBody({.type = BodyType::Static, .x = 0, .y = 1, .hw = 10, .hh = 1});
+    world.createBody({.x = 0, .y = -0.5f, .hw = 0.5f, .hh = 0.5f, .radius = 0.5f});
+    world.createBody(
+        {.type = BodyType::Static, .x = 4, .y = -1, .hw = 1, .hh = 1, .slope = {1, -1}});
+    for (int i = 0; i < 30; ++i)
+        world.step(kDt);
+    const DebugDrawOptions options{.contacts = true, .velocities = true};
+    Recorder direct, replayed;
+    DebugDrawList list;
+    world.debugDraw(direct, options);
+    world.debugDraw(list, options);
+    list.replay(replayed);
+    ASSERT_EQ(list.commands().size(), direct.calls.size());
+    ASSERT_EQ(replayed.calls.size(), direct.calls.size());
+    for (std::size_t i = 0; i < direct.calls.size(); ++i) {
+        EXPECT_EQ(replayed.calls[i].kind, direct.calls[i].kind);
+        EXPECT_EQ(replayed.calls[i].points, direct.calls[i].points);
+        EXPECT_EQ(replayed.calls[i].radius, direct.calls[i].radius);
+        EXPECT_EQ(replayed.calls[i].fill, direct.calls[i].fill);
+        EXPECT_EQ(replayed.calls[i].outline, direct.calls[i].outline);
+    }
+    list.clear();
+    EXPECT_TRUE(list.commands().empty());
+}
+
 TEST(DebugDraw, BadOptionsAreRefusedByName) {
     World world;
     Lines draw;

@@ -18,6 +18,8 @@
 #include "jostle/math.hpp"
 
 #include <cstdint>
+#include <span>
+#include <vector>
 
 namespace jostle {
 
@@ -82,6 +84,43 @@ public:
     virtual void triangle(Vec2 a, Vec2 b, Vec2 c, Colour fill, Colour outline);
     /// A point (a contact). Default: a cross of lines `size` wide.
     virtual void point(Vec2 at, float size, Colour colour);
+};
+
+/// A DebugDraw that keeps the calls, to draw them later (on a render thread, after the
+/// step) or to walk them (how the Lua and JavaScript bindings draw).
+///
+///     jostle::DebugDrawList list;
+///     world.debugDraw(list);    // during the update
+///     list.replay(myRenderer);  // when drawing
+class DebugDrawList final : public DebugDraw {
+public:
+    enum class Kind : std::uint32_t { Line, Box, RoundedBox, Triangle, Point };
+    /// One call. `values`: a line's ends (x1, y1, x2, y2); a box's centre and half extents
+    /// (x, y, hw, hh), a rounded box's then its radius; a triangle's corners (x1, y1, x2,
+    /// y2, x3, y3); a point's place and size (x, y, size). A line's and a point's colour is
+    /// `fill`.
+    struct Command {
+        float values[6];
+        Colour fill;
+        Colour outline;
+        Kind kind;
+    };
+
+    void line(Vec2 from, Vec2 to, Colour colour) override;
+    void box(Vec2 centre, Vec2 half, Colour fill, Colour outline) override;
+    void roundedBox(Vec2 centre, Vec2 half, float radius, Colour fill, Colour outline) override;
+    void triangle(Vec2 a, Vec2 b, Vec2 c, Colour fill, Colour outline) override;
+    void point(Vec2 at, float size, Colour colour) override;
+
+    /// The calls kept, in order, since the last clear().
+    std::span<const Command> commands() const { return commands_; }
+    /// Forgets the calls, keeping the memory for the next frame's.
+    void clear() { commands_.clear(); }
+    /// Makes the calls again on `draw`, in order.
+    void replay(DebugDraw& draw) const;
+
+private:
+    std::vector<Command> commands_;
 };
 
 } // namespace jostle

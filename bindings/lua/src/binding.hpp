@@ -94,6 +94,8 @@ struct WorldData {
     /// until the next call of the same method, or until the world goes.
     std::vector<Vec2> positionsBuffer;
     std::vector<Vec2> velocitiesBuffer;
+    /// What world:debugDraw draws, before the Lua functions draw it.
+    DebugDrawList drawList;
 };
 
 struct WorldHandle {
@@ -224,6 +226,12 @@ void registerTileMapMethods(lua_State* L, int worldMethods);
 void openTileMap(lua_State* L);
 /// Pushes the TileMap userdata of `id` (nil for the null handle); `env` as for pushBody.
 void pushTileMap(lua_State* L, int env, WorldHandle* world, TileMapId id);
+
+// --- debug_draw.cpp --------------------------------------------------------------------
+
+void registerDebugDrawMethods(lua_State* L, int worldMethods);
+/// jostle.rgba(colour) -> r, g, b, a from 0 to 1.
+int rgba(lua_State* L);
 
 // --- snapshot.cpp ----------------------------------------------------------------------
 

@@ -14,6 +14,7 @@ namespace {
 constexpr luaL_Reg kModuleFunctions[] = {
     {"newWorld", jostle::lua::newWorld},
     {"newFixedStep", jostle::lua::newFixedStep},
+    {"rgba", jostle::lua::rgba},
 #ifdef JOSTLE_LUA_LEVELS
     {"loadTiled", jostle::lua::loadTiled},
     {"loadLdtk", jostle::lua::loadLdtk},

@@ -490,6 +490,7 @@ void openWorld(lua_State* L) {
     registerQueryMethods(L, methods);
     registerTileMapMethods(L, methods);
     registerSnapshotMethods(L, methods);
+    registerDebugDrawMethods(L, methods);
     lua_setfield(L, -2, "__index");
     lua_pushcfunction(L, worldGc);
     lua_setfield(L, -2, "__gc");
