@@ -397,6 +397,12 @@ export class World {
    * shape is fixed when its body is made: read them when bodies come and go.
    */
   readShapes(out: Float32Array): number;
+  /**
+   * Draws the world as the engine sees it through the game's renderer: every body in its
+   * shape and colour (tile maps' merged boxes among them), and what `options` asks for
+   * (docs/debug-draw.md). One call a frame, over the game's sprites.
+   */
+  debugDraw(draw: DebugDraw, options?: DebugDrawOptions): void;
 
   /** Advances the world by dt seconds (> 0). */
   step(dt: number): void;
@@ -514,6 +520,71 @@ export class Jostle {
    */
   loadLdtk(text: string, level: string, options?: LevelOptions & { kinds?: Record<number, string> }): LoadedLevel;
 }
+
+/**
+ * A colour: 0xRRGGBBAA, red, green, blue and opacity 0 to 255 each (cssColour makes it a
+ * canvas's style).
+ */
+export type Colour = number;
+
+/**
+ * The game's renderer, as debugDraw calls it, in world units. `line` is required; the
+ * others, when absent, are drawn with lines. A fill of opacity 0 is not filled.
+ */
+export interface DebugDraw {
+  line(x1: number, y1: number, x2: number, y2: number, colour: Colour): void;
+  /** An axis-aligned box by its centre and half extents. */
+  box?(x: number, y: number, hw: number, hh: number, fill: Colour, outline: Colour): void;
+  /** A box with corners rounded by `radius`: a circle when hw = hh = radius, a capsule when one is. */
+  roundedBox?(x: number, y: number, hw: number, hh: number, radius: number, fill: Colour, outline: Colour): void;
+  /** A triangle (a ramp), its corners in order around it. */
+  triangle?(x1: number, y1: number, x2: number, y2: number, x3: number, y3: number, fill: Colour, outline: Colour): void;
+  /** A point (a contact), `size` wide. */
+  point?(x: number, y: number, size: number, colour: Colour): void;
+}
+
+/** The colours debugDraw uses; a body's outline is its fill scaled by outlinePercent. */
+export interface DebugPalette {
+  staticBody?: Colour;
+  kinematicBody?: Colour;
+  dynamicBody?: Colour;
+  /** A sleeping body's fill: its type's colour scaled so, 0 to 100 (55). */
+  sleepingPercent?: number;
+  /** An outline: its fill scaled so, 0 to 100 (60). */
+  outlinePercent?: number;
+  bulletOutline?: Colour;
+  /** The face a one-way body blocks from. */
+  oneWayFace?: Colour;
+  contact?: Colour;
+  velocity?: Colour;
+  /** The sides a dynamic body touched. */
+  touching?: Colour;
+  gridCell?: Colour;
+  gridBox?: Colour;
+}
+
+/** What debugDraw draws. */
+export interface DebugDrawOptions {
+  /** Every body, tile maps' merged boxes among them (true). */
+  shapes?: boolean;
+  /** Every touching pair: where it touches, and its normal into the body it pushes. */
+  contacts?: boolean;
+  /** Awake dynamic bodies: a tenth of a second of their motion. */
+  velocities?: boolean;
+  /** The sides each dynamic body touched in the last step. */
+  touching?: boolean;
+  /** The broadphase's occupied cells and its moving boxes. */
+  grid?: boolean;
+  /** The longest a normal, a segment's tick or a point's cross is, in world units (0.25). */
+  markLength?: number;
+  /** Only what touches this box is drawn (a view); min > max on either axis draws everything. */
+  viewMin?: Vec2 | [number, number];
+  viewMax?: Vec2 | [number, number];
+  palette?: DebugPalette;
+}
+
+/** A colour as CSS writes it, "#rrggbbaa", for a canvas's fillStyle and strokeStyle. */
+export function cssColour(colour: Colour): string;
 
 export interface LoadOptions {
   /**

@@ -8,6 +8,7 @@
 #include <emscripten/emscripten.h>
 
 #include <cstddef>
+#include <cstdint>
 #include <initializer_list>
 #include <string>
 #include <utility>
@@ -99,6 +100,29 @@ std::string layoutJson() {
                JOSTLE_MEMBER(jostle_physical_options, restitution_threshold),
                JOSTLE_MEMBER(jostle_physical_options, friction_mix),
                JOSTLE_MEMBER(jostle_physical_options, max_contacts_per_body)});
+    addStruct(out, "debug_draw_options", sizeof(jostle_debug_draw_options),
+              {JOSTLE_MEMBER(jostle_debug_draw_options, shapes),
+               JOSTLE_MEMBER(jostle_debug_draw_options, contacts),
+               JOSTLE_MEMBER(jostle_debug_draw_options, velocities),
+               JOSTLE_MEMBER(jostle_debug_draw_options, touching),
+               JOSTLE_MEMBER(jostle_debug_draw_options, grid),
+               JOSTLE_MEMBER(jostle_debug_draw_options, mark_length),
+               JOSTLE_MEMBER(jostle_debug_draw_options, view_min),
+               JOSTLE_MEMBER(jostle_debug_draw_options, view_max),
+               JOSTLE_MEMBER(jostle_debug_draw_options, palette)});
+    addStruct(out, "debug_palette", sizeof(jostle_debug_palette),
+              {JOSTLE_MEMBER(jostle_debug_palette, static_body),
+               JOSTLE_MEMBER(jostle_debug_palette, kinematic_body),
+               JOSTLE_MEMBER(jostle_debug_palette, dynamic_body),
+               JOSTLE_MEMBER(jostle_debug_palette, sleeping_percent),
+               JOSTLE_MEMBER(jostle_debug_palette, outline_percent),
+               JOSTLE_MEMBER(jostle_debug_palette, bullet_outline),
+               JOSTLE_MEMBER(jostle_debug_palette, one_way_face),
+               JOSTLE_MEMBER(jostle_debug_palette, contact),
+               JOSTLE_MEMBER(jostle_debug_palette, velocity),
+               JOSTLE_MEMBER(jostle_debug_palette, touching),
+               JOSTLE_MEMBER(jostle_debug_palette, grid_cell),
+               JOSTLE_MEMBER(jostle_debug_palette, grid_box)});
     // The profile's stages, by the names StepProfile gives them, each a float in order.
     out += ",\"profile\":[";
     for (const jostle::StepProfileField& field : jostle::kStepProfileFields)
@@ -124,9 +148,66 @@ jostle_response moveFilter(jostle_body_id other, void* context) {
     return static_cast<jostle_response>(jostle_js_move_filter(&other, context));
 }
 
+/// One call of the game's renderer, as the package reads it: nine 32-bit words.
+struct DrawCall {
+    std::uint32_t kind; ///< 0 line, 1 box, 2 rounded box, 3 triangle, 4 point
+    float values[6];    ///< as jostle::DebugDrawList::Command's
+    std::uint32_t fill; ///< 0xRRGGBBAA; a line's or a point's colour
+    std::uint32_t outline;
+};
+static_assert(sizeof(DrawCall) == 36);
+
+std::vector<DrawCall> drawCalls; ///< the last jostle_web_debug_draw's
+
+std::uint32_t packed(jostle_colour c) {
+    return std::uint32_t{c.r} << 24 | std::uint32_t{c.g} << 16 | std::uint32_t{c.b} << 8 | c.a;
+}
+
+void keepLine(jostle_vec2 from, jostle_vec2 to, jostle_colour colour, void*) {
+    drawCalls.push_back({0, {from.x, from.y, to.x, to.y}, packed(colour), packed(colour)});
+}
+void keepBox(jostle_vec2 centre, jostle_vec2 half, jostle_colour fill, jostle_colour outline,
+             void*) {
+    drawCalls.push_back({1, {centre.x, centre.y, half.x, half.y}, packed(fill), packed(outline)});
+}
+void keepRoundedBox(jostle_vec2 centre, jostle_vec2 half, float radius, jostle_colour fill,
+                    jostle_colour outline, void*) {
+    drawCalls.push_back(
+        {2, {centre.x, centre.y, half.x, half.y, radius}, packed(fill), packed(outline)});
+}
+void keepTriangle(jostle_vec2 a, jostle_vec2 b, jostle_vec2 c, jostle_colour fill,
+                  jostle_colour outline, void*) {
+    drawCalls.push_back({3, {a.x, a.y, b.x, b.y, c.x, c.y}, packed(fill), packed(outline)});
+}
+void keepPoint(jostle_vec2 at, float size, jostle_colour colour, void*) {
+    drawCalls.push_back({4, {at.x, at.y, size}, packed(colour), packed(colour)});
+}
+
 } // namespace
 
 extern "C" {
+
+/// jostle_world_debug_draw into a list of DrawCall that the package walks, calling the
+/// game's functions: *count of them at the address returned (NULL on misuse). `functions`
+/// says which the game has beside line (1 box, 2 rounded box, 4 triangle, 8 point): the
+/// others come as lines.
+EMSCRIPTEN_KEEPALIVE const DrawCall* jostle_web_debug_draw(const jostle_world* world,
+                                                           const jostle_debug_draw_options* options,
+                                                           int functions, int* count) {
+    drawCalls.clear();
+    const jostle_debug_draw draw{keepLine,
+                                 (functions & 1) != 0 ? keepBox : nullptr,
+                                 (functions & 2) != 0 ? keepRoundedBox : nullptr,
+                                 (functions & 4) != 0 ? keepTriangle : nullptr,
+                                 (functions & 8) != 0 ? keepPoint : nullptr,
+                                 nullptr};
+    *count = 0;
+    if (!jostle_world_debug_draw(world, &draw, options))
+        return nullptr;
+    *count = static_cast<int>(drawCalls.size());
+    // Never NULL when it worked, nothing drawn or not.
+    return drawCalls.empty() ? reinterpret_cast<const DrawCall*>(&drawCalls) : drawCalls.data();
+}
 
 /// jostle.h's structs as JSON: {"contact_event": {"size": 44, "a": 0, "normal": 24, ...},
 /// ..., "profile": [stage names]}, read once by the package when it loads.

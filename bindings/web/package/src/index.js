@@ -19,6 +19,12 @@ export {Body} from "./body.js";
 export {TileMap} from "./tile_map.js";
 export {FixedStep} from "./fixed_step.js";
 
+/// A debug-draw colour (0xRRGGBBAA) as CSS writes it, "#rrggbbaa": for a canvas's
+/// fillStyle and strokeStyle.
+export function cssColour(colour) {
+  return `#${(args.bits("cssColour", "colour", colour) >>> 0).toString(16).padStart(8, "0")}`;
+}
+
 /// Loads the module. `options.wasm`: jostle.wasm's bytes (an ArrayBuffer or a typed
 /// array), a compiled WebAssembly.Module, its URL (a URL or a string) or a Response (or a
 /// promise of one); by default the jostle.wasm beside this file, found through

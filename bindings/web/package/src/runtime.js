@@ -12,6 +12,11 @@ const FILTER = 56; // a jostle_query_filter
 const OUT = 96; // a result: a struct, a vector, two ints...
 const SCRATCH = 256;
 
+import * as args from "./args.js";
+
+/// camelCase as jostle.h's snake_case: markLength is mark_length.
+const snake = (name) => name.replace(/[A-Z]/g, (c) => `_${c.toLowerCase()}`);
+
 export class Runtime {
   constructor(module) {
     this.m = module;
@@ -103,6 +108,48 @@ export class Runtime {
         words[to + 2] = value.serial;
       } else {
         throw new TypeError(`${fn}: filter has no field "${key}" (mask, category, includeSensors, ignore)`);
+      }
+    }
+    return at;
+  }
+
+  /// The address of a jostle_debug_draw_options from the game's options (each optional),
+  /// kept for the next call. Names as in JavaScript (markLength), checked as to type here
+  /// and as to range by the module.
+  debugDrawOptions(fn, options = {}) {
+    args.object(fn, "options", options);
+    const m = this.m, L = this.layout.debug_draw_options, P = this.layout.debug_palette;
+    this.drawOptions ??= m._malloc(L.size);
+    const at = this.drawOptions;
+    m._jostle_default_debug_draw_options(at);
+    for (const key of Object.keys(options)) {
+      const value = options[key], name = `options.${key}`;
+      if (["shapes", "contacts", "velocities", "touching", "grid"].includes(key)) {
+        m.HEAPU8[at + L[key]] = args.boolean(fn, name, value) ? 1 : 0;
+      } else if (key === "markLength") {
+        m.HEAPF32[(at + L.mark_length) >> 2] = args.number(fn, name, value);
+      } else if (key === "viewMin" || key === "viewMax") {
+        const [x, y] = args.vector(fn, name, value), to = (at + L[snake(key)]) >> 2;
+        m.HEAPF32[to] = x;
+        m.HEAPF32[to + 1] = y;
+      } else if (key === "palette") {
+        const palette = args.object(fn, name, value), base = at + L.palette;
+        for (const colour of Object.keys(palette)) {
+          const member = P[snake(colour)], field = `${name}.${colour}`;
+          if (member === undefined || colour === "size")
+            throw new TypeError(`${fn}: ${name} has no field "${colour}"`);
+          if (colour.endsWith("Percent")) {
+            m.HEAP32[(base + member) >> 2] = args.integer(fn, field, palette[colour]);
+          } else { // 0xRRGGBBAA as jostle_colour's bytes r, g, b, a
+            const c = args.bits(fn, field, palette[colour]), bytes = m.HEAPU8, to = base + member;
+            bytes[to] = c >>> 24;
+            bytes[to + 1] = (c >>> 16) & 255;
+            bytes[to + 2] = (c >>> 8) & 255;
+            bytes[to + 3] = c & 255;
+          }
+        }
+      } else {
+        throw new TypeError(`${fn}: options has no field "${key}" (shapes, contacts, velocities, touching, grid, markLength, viewMin, viewMax, palette)`);
       }
     }
     return at;

@@ -8,6 +8,8 @@ import * as queries from "./queries.js";
 
 const SOLVERS = ["classic", "physical"];
 const FRICTION_MIXES = ["min", "geometricMean"];
+/// The renderer's functions beside line, by their bit in jostle_web_debug_draw's `functions`.
+const DRAWN = ["box", "roundedBox", "triangle", "point"];
 
 export class World {
   constructor(jostle, pointer) {
@@ -206,6 +208,40 @@ export class World {
     const count = rt.m._jostle_web_read_shapes(world, at, capacity);
     out.set(rt.floatsAt(at, 6 * Math.min(count, capacity)));
     return count;
+  }
+
+  /// Draws the world as the engine sees it through `draw`, the game's renderer: an object
+  /// whose line(x1, y1, x2, y2, colour) is required and whose box(x, y, hw, hh, fill,
+  /// outline), roundedBox(x, y, hw, hh, radius, fill, outline), triangle(x1, y1, x2, y2,
+  /// x3, y3, fill, outline) and point(x, y, size, colour) are drawn with lines when it has
+  /// none. World units; colours 0xRRGGBBAA (a fill of opacity 0 is not filled). `options`:
+  /// {shapes, contacts, velocities, touching, grid, markLength, viewMin, viewMax, palette}
+  /// (docs/debug-draw.md).
+  debugDraw(draw, options) {
+    const fn = "debugDraw";
+    args.object(fn, "draw", draw);
+    args.func(fn, "draw.line", draw.line);
+    let functions = 0;
+    DRAWN.forEach((name, i) => {
+      if (draw[name] === undefined) return;
+      args.func(fn, `draw.${name}`, draw[name]);
+      functions |= 1 << i;
+    });
+    const world = this.live(fn), rt = this.rt, m = rt.m;
+    const at = m._jostle_web_debug_draw(world, rt.debugDrawOptions(fn, options), functions, rt.out);
+    rt.check(fn, at !== 0);
+    const count = m.HEAP32[rt.out >> 2];
+    for (let i = 0; i < count; ++i) {
+      // The views are taken afresh for each call: the game's function may grow the memory.
+      const p = (at >> 2) + 9 * i, f = m.HEAPF32, u = m.HEAPU32;
+      switch (u[p]) {
+        case 0: draw.line(f[p + 1], f[p + 2], f[p + 3], f[p + 4], u[p + 7]); break;
+        case 1: draw.box(f[p + 1], f[p + 2], f[p + 3], f[p + 4], u[p + 7], u[p + 8]); break;
+        case 2: draw.roundedBox(f[p + 1], f[p + 2], f[p + 3], f[p + 4], f[p + 5], u[p + 7], u[p + 8]); break;
+        case 3: draw.triangle(f[p + 1], f[p + 2], f[p + 3], f[p + 4], f[p + 5], f[p + 6], u[p + 7], u[p + 8]); break;
+        default: draw.point(f[p + 1], f[p + 2], f[p + 3], u[p + 7]);
+      }
+    }
   }
 
   readVectors(fn, name, out) {

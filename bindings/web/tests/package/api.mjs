@@ -18,7 +18,7 @@ if (!existsSync(path.join(packageDir, "jostle.mjs"))) {
   console.log(`SKIPPED: no package in ${packageDir} (the web build makes it where esbuild is installed)`);
   process.exit(77);
 }
-const {load, Body, World, TileMap} = await import(pathToFileURL(path.join(packageDir, "jostle.mjs")).href);
+const {load, cssColour, Body, World, TileMap} = await import(pathToFileURL(path.join(packageDir, "jostle.mjs")).href);
 
 let failures = 0;
 function check(ok, what) {
@@ -334,6 +334,62 @@ await rejects("an unknown option", load({wasmBinary: bytes}), "load: no option \
   check(shapes.slice(0, 6).join() === "4,2,0,0,0,16", "a static box, awake: 4, 2, no radius, no slope, flags 16");
   check(shapes.slice(6, 12).join() === "3,3,3,0,0,22", "a dynamic circle sensor, awake: radius 3, flags 2 + 4 + 16");
   check(shapes.slice(12, 18).join() === "5,5,0,-1,-1,24", "a segment: slope -1, -1, flags 8 + 16");
+  world.destroy();
+}
+
+// --- Debug drawing (docs/debug-draw.md) ----------------------------------------------------
+{
+  const world = jostle.createWorld({gravity: [0, 10], sleeping: false});
+  world.createBody({type: "static", x: 0, y: 1, hw: 10, hh: 1});
+  world.createBody({x: 0, y: -0.5, hw: 0.5, hh: 0.5, radius: 0.5});
+  world.createBody({type: "static", x: 10, y: 20, hw: 2, hh: 1, slope: [1, -1]});
+  for (let i = 0; i < 60; i++) world.step(1 / 60);
+  const calls = [];
+  const recorder = {
+    line: (...a) => calls.push(["line", ...a]),
+    box: (...a) => calls.push(["box", ...a]),
+    roundedBox: (...a) => calls.push(["roundedBox", ...a]),
+    triangle: (...a) => calls.push(["triangle", ...a]),
+    point: (...a) => calls.push(["point", ...a]),
+  };
+  world.debugDraw(recorder);
+  check(calls.length === 3, "debugDraw: a call a body");
+  // Static grey 150 150 150 opaque, outlined at 60 %: 90 90 90.
+  check(calls[0].join() === ["box", 0, 1, 10, 1, 0x969696ff, 0x5a5a5aff].join(), "the floor: its box and colours");
+  check(calls[1][0] === "roundedBox" && calls[1][5] === 0.5, "the ball: a rounded box of radius 0.5");
+  // The slope names the corner (+x, -y): the face runs (12, 21) to (8, 19), the right angle at (8, 21).
+  check(calls[2].slice(0, 7).join() === "triangle,12,21,8,19,8,21", "the ramp: the triangle its slope leaves");
+  calls.length = 0;
+  world.debugDraw(recorder, {shapes: false, contacts: true, markLength: 0.25});
+  const point = calls.find((c) => c[0] === "point"), normal = calls.find((c) => c[0] === "line");
+  check(calls.length === 2 && near(point[2], 0, 1e-2) && near(normal[4] - normal[2], -0.25, 1e-6),
+        "a contact: its point on the floor and its normal up into the ball, markLength long");
+  let lines = 0;
+  world.debugDraw({line: () => lines++});
+  check(lines >= 4 + 3 + 12, "a renderer of lines alone gets every shape in lines");
+  calls.length = 0;
+  world.debugDraw(recorder, {viewMin: [-1, -1], viewMax: {x: 1, y: 1}, palette: {staticBody: 0x102030ff, outlinePercent: 50}});
+  check(calls.length === 2 && calls[0][5] === 0x102030ff && calls[0][6] === 0x081018ff,
+        "the view leaves the ramp out; the palette's colour and percentage");
+  check(cssColour(0xff8000ff) === "#ff8000ff" && cssColour(0x10) === "#00000010", "cssColour: #rrggbbaa");
+  refuses("no line", () => world.debugDraw({}), "TypeError", "debugDraw: draw.line must be a function, got undefined");
+  refuses("a box that is not a function", () => world.debugDraw({line() {}, box: 3}), "TypeError",
+          "debugDraw: draw.box must be a function, got 3");
+  refuses("a negative mark", () => world.debugDraw({line() {}}, {markLength: -1}), "Error",
+          "debugDraw: options.markLength must be >= 0");
+  refuses("a percentage past 100", () => world.debugDraw({line() {}}, {palette: {sleepingPercent: 101}}), "Error",
+          "debugDraw: options.palette.sleepingPercent must be in [0, 100]");
+  refuses("an unknown option", () => world.debugDraw({line() {}}, {grd: true}), "TypeError",
+          "debugDraw: options has no field \"grd\" (shapes, contacts, velocities, touching, grid, markLength, viewMin, viewMax, palette)");
+  refuses("an unknown colour", () => world.debugDraw({line() {}}, {palette: {floor: 1}}), "TypeError",
+          "debugDraw: options.palette has no field \"floor\"");
+  let thrown = null;
+  try {
+    world.debugDraw({line() {}, box() { throw new Error("from the renderer"); }});
+  } catch (error) {
+    thrown = error;
+  }
+  check(thrown?.message === "from the renderer", "the renderer's own error comes out of debugDraw");
   world.destroy();
 }
 
