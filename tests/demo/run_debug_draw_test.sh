@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Checks that jostle-demo's debug drawing draws what it says (docs/demo.md): the pairs
 # that touch, counted by --report and drawn as dots and normals where the boxes meet, the
-# broadphase picture (which grid, its cell size, its lines on screen) and sleeping bodies
-# dimmed. Every expected number is worked out below from the samples' bodies and the
+# broadphase picture (which grid, its cell size) and the library's drawing of its cells,
+# and sleeping bodies dimmed. Every expected number is worked out below from the samples' bodies and the
 # documented rules; the screenshots are read back with check_screenshot --count.
 #
 #   run_debug_draw_test.sh DEMO CHECKER OUT_DIR
@@ -73,8 +73,8 @@ expect grid_level_boxes 4 "crates at rest: the 4 crates in level 1"
 scale="1272 / 1100"
 pixel_x() { awk -v x="$1" "BEGIN { s = $scale; printf \"%d\", x * s + (4 + 636 - 500 * s) + 0.5 }"; }
 pixel_y() { awk -v y="$1" "BEGIN { s = $scale; printf \"%d\", y * s + (48 + 324 - 395 * s) + 0.5 }"; }
-contact_colour=fafa78   # kContact (palette.hpp)
-grid_colour=282c3a      # kGridLine
+contact_colour=fafa78   # DebugPalette::contact
+grid_colour=326e8c      # DebugPalette::gridCell
 crate_colour=f0963c     # dynamic bodies
 asleep_colour=845221    # dynamic bodies at 55%, asleep with debug drawing on
 on="$out/crates-debug-on.bmp" off="$out/crates-debug-off.bmp"
@@ -106,19 +106,23 @@ pixels "debug on: contact marks at the five contacts and nowhere else" "$on" $co
   4 100 1275 695 "$at_contacts"
 pixels "debug off: no contact marks anywhere" "$off" $contact_colour 4 48 1275 695 0
 
-# Grid: the resting grid's main level has cells of 110 (above), so there are lines at
-# x = 110 k and y = 110 k. Between y 300 and 400 (above every body), the column of x 110
-# is all line: nothing else is drawn there (the player's level-0 cell reaches x 110 only
-# from y 440; the tinted crate cells start at y 440 too). The column of x 165, halfway
-# between lines, meets only the line of y 330.
+# Grid: the library draws the outline of each cell that holds a box (World::debugDraw),
+# under the bodies. A box is filed in the cell of its level that holds its min corner:
+# the 0.5 kg crate (min corner (212, 442), level 1, cells of 110) in the cell from x 110
+# to 220 and y 440 to 550. So the column of x 110 is that cell's edge from y 440 down to
+# the floor's top at 500 (the floor is drawn over the rest), and its row of y 440 runs
+# from x 110 to 220. Above every body, between y 300 and 400, no box and so no cell.
 top=$(pixel_y 300) bottom=$(pixel_y 400)
-column=$(pixel_x 110) between=$(pixel_x 165)
-pixels "debug on: the grid line at x 110, from y 300 to 400" "$on" $grid_colour \
-  "$column" "$top" "$column" "$bottom" $((bottom - top + 1))
-pixels "debug on: at x 165 only the crossing with the line at y 330" "$on" $grid_colour \
-  "$between" "$top" "$between" "$bottom" 1
-pixels "debug off: no grid line at x 110" "$off" $grid_colour \
+column=$(pixel_x 110) edge_top=$(pixel_y 445) edge_bottom=$(pixel_y 495)
+row=$(pixel_y 440) row_left=$(pixel_x 115) row_right=$(pixel_x 205)
+pixels "debug on: the cell's left edge at x 110, from y 445 to 495" "$on" $grid_colour \
+  "$column" "$edge_top" "$column" "$edge_bottom" $((edge_bottom - edge_top + 1))
+pixels "debug on: the cell's top edge at y 440, from x 115 to 205" "$on" $grid_colour \
+  "$row_left" "$row" "$row_right" "$row" $((row_right - row_left + 1))
+pixels "debug on: no cell above the bodies at x 110" "$on" $grid_colour \
   "$column" "$top" "$column" "$bottom" 0
+pixels "debug off: no cell edge at x 110" "$off" $grid_colour \
+  "$column" "$edge_top" "$column" "$edge_bottom" 0
 
 # Sleeping bodies: the 0.5 kg crate (x 212 to 268, y 442 to 498) is asleep by frame 90.
 # Inside it, left of its normal and above its bottom edge, from (220, 450) to (232, 490):

@@ -237,7 +237,10 @@ int main(int argc, char** argv) {
     RunOptions options;
     CLI::App* runCommand =
         app.add_subcommand("run", "Load a scene file and step it; print a summary or a trace.");
-    runCommand->add_option("scene", options.scene, "The scene file (docs/scene-format.md), or a Tiled map: .tmj, .tmx (docs/levels.md)")
+    runCommand
+        ->add_option(
+            "scene", options.scene,
+            "The scene file (docs/scene-format.md), or a Tiled map: .tmj, .tmx (docs/levels.md)")
         ->required();
     runCommand->add_option("-n,--steps", options.steps, "How many steps to take, >= 0")
         ->required()
@@ -256,7 +259,10 @@ int main(int argc, char** argv) {
     jostle::cli::RenderOptions renderOptions;
     CLI::App* renderCommand = app.add_subcommand(
         "render", "Step a scene file headless and draw it: an animated GIF or a PNG.");
-    renderCommand->add_option("scene", renderOptions.scene, "The scene file (docs/scene-format.md), or a Tiled map: .tmj, .tmx (docs/levels.md)")
+    renderCommand
+        ->add_option(
+            "scene", renderOptions.scene,
+            "The scene file (docs/scene-format.md), or a Tiled map: .tmj, .tmx (docs/levels.md)")
         ->required();
     renderCommand
         ->add_option("-o,--out", renderOptions.out,
@@ -291,7 +297,10 @@ int main(int argc, char** argv) {
     CLI::App* syncCommand = app.add_subcommand(
         "synctest", "Roll a scene back at every step and step it again: the same bits, or the "
                     "first step, body and field that differ (exit 1).");
-    syncCommand->add_option("scene", syncOptions.scene, "The scene file (docs/scene-format.md), or a Tiled map: .tmj, .tmx (docs/levels.md)")
+    syncCommand
+        ->add_option(
+            "scene", syncOptions.scene,
+            "The scene file (docs/scene-format.md), or a Tiled map: .tmj, .tmx (docs/levels.md)")
         ->required();
     syncCommand->add_option("-n,--steps", syncOptions.steps, "How many steps to take, >= 1")
         ->capture_default_str()

@@ -4,6 +4,7 @@
 
 #include "camera.hpp"
 #include "canvas.hpp"
+#include "canvas_draw.hpp"
 #include "errors.hpp"
 #include "image_files.hpp"
 #include "legend.hpp"
@@ -11,7 +12,6 @@
 #include "progress.hpp"
 
 #include "jostle/scene.hpp"
-#include "shared/drawn_shape.hpp"
 
 #include <algorithm>
 #include <array>
@@ -37,26 +37,10 @@ bool endsWith(const std::string& text, const std::string& suffix) {
 }
 
 // The palette: the background, then for each body type (static, kinematic, dynamic, as
-// BodyType numbers them) its fill and outline awake, and its fill and outline asleep; then
-// the key's words and the line above it (--legend).
+// BodyType numbers them) its fill and outline awake, and its fill and outline asleep, in
+// the library's colours and by its rules (jostle::DebugPalette); the key's line and words
+// (--legend); then the other colours World::debugDraw draws shapes with.
 constexpr Rgb kBackground{24, 26, 33};
-constexpr std::array<Rgb, 3> kTypeColours{{
-    {150, 150, 150}, // static: grey
-    {70, 130, 230},  // kinematic: blue
-    {240, 150, 60},  // dynamic: orange
-}};
-
-Rgb scaled(Rgb colour, int percent) {
-    auto channel = [percent](std::uint8_t value) {
-        return static_cast<std::uint8_t>(value * percent / 100);
-    };
-    return {channel(colour.r), channel(colour.g), channel(colour.b)};
-}
-
-// Outlines are darker so that boxes side by side (a pyramid, a tile floor) stay apart;
-// sleeping bodies dimmer so that one can see which have come to rest.
-constexpr int kOutlinePercent = 60;
-constexpr int kSleepingPercent = 55;
 
 // The key's words, and the line between it and the scene: the demo's text and pane border
 // (demo/palette.hpp).
@@ -64,15 +48,33 @@ constexpr Rgb kLegendText{230, 230, 230};
 constexpr Rgb kLegendLine{60, 64, 76};
 constexpr LegendColours kLegendColours{0, 13, 14};
 
+/// The pixels of marks with no length of their own: a segment's tick.
+constexpr double kMarkPixels = 8.0;
+
+Rgb rgb(Colour c) {
+    return {c.r, c.g, c.b};
+}
+
+Colour scaled(Colour colour, int percent) {
+    const auto channel = [percent](std::uint8_t value) {
+        return static_cast<std::uint8_t>(value * percent / 100);
+    };
+    return {channel(colour.r), channel(colour.g), channel(colour.b), colour.a};
+}
+
 std::vector<Rgb> makePalette() {
+    const DebugPalette colours;
     std::vector<Rgb> palette{kBackground};
-    for (Rgb colour : kTypeColours)
-        for (int percent : {100, kSleepingPercent}) {
-            palette.push_back(scaled(colour, percent));
-            palette.push_back(scaled(colour, percent * kOutlinePercent / 100));
+    for (Colour colour : {colours.staticBody, colours.kinematicBody, colours.dynamicBody})
+        for (int percent : {100, colours.sleepingPercent}) {
+            const Colour fill = scaled(colour, percent);
+            palette.push_back(rgb(fill));
+            palette.push_back(rgb(scaled(fill, colours.outlinePercent)));
         }
     palette.push_back(kLegendLine); // 13
     palette.push_back(kLegendText); // 14
+    palette.push_back(rgb(colours.bulletOutline));
+    palette.push_back(rgb(colours.oneWayFace));
     return palette;
 }
 
@@ -145,58 +147,11 @@ void imageSize(const RenderOptions& options, const View& view, int& width, int& 
         width = fittedSide(height, view.height(), view.width());
 }
 
-/// The tick on a segment's blocking side: a sixth of its length, 3 to 8 pixels.
-float tickLength(float faceLength) {
-    return std::clamp(faceLength / 6.0f, 3.0f, 8.0f);
-}
-
-/// One body in its shape (shared/drawn_shape.hpp): a box, a rounded box or a ramp filled
-/// with `fill` (none: a sensor, outlined only) and outlined with `outline`; a segment as a
-/// line, with a tick from its middle towards the side it blocks, in `fill` (a sensor's in
-/// `outline`).
-void drawBody(Canvas& canvas, const Camera& camera, const World& world, BodyId body,
-              std::optional<std::uint8_t> fill, std::uint8_t outline) {
-    const PixelRect rect = camera.toPixels(boxOf(world, body));
-    const shared::DrawnShape shape = shared::DrawnShape::of(world, body);
-    if (shape.kind == shared::DrawnKind::Box) {
-        if (fill)
-            canvas.fill(rect, *fill);
-        canvas.outline(rect, outline);
-        return;
-    }
-    const shared::DrawnShape seen =
-        shape.mapped(camera.toImage(shape.centre), static_cast<float>(camera.scale()));
-    if (shape.kind != shared::DrawnKind::Segment) {
-        const auto inside = [&](double x, double y) {
-            return seen.contains({static_cast<float>(x), static_cast<float>(y)});
-        };
-        canvas.shape(rect, inside, fill, outline);
-        return;
-    }
-    const auto ends = seen.triangle();
-    const std::uint8_t colour = fill.value_or(outline);
-    canvas.line(ends[0].x, ends[0].y, ends[1].x, ends[1].y, colour);
-    const Vec2 middle = (ends[0] + ends[1]) * 0.5f;
-    const Vec2 tip = middle + seen.faceNormal() * tickLength(length(ends[1] - ends[0]));
-    canvas.line(middle.x, middle.y, tip.x, tip.y, colour);
-}
-
-void draw(Canvas& canvas, const Camera& camera, const World& world) {
+/// The world's shapes as the library draws them (World::debugDraw), in this palette.
+void draw(Canvas& canvas, const Camera& camera, const World& world, std::span<const Rgb> palette) {
     canvas.clear(0);
-    std::vector<BodyId> sensors;
-    for (BodyId body : world.bodies()) {
-        if (world.isSensor(body)) {
-            sensors.push_back(body);
-            continue;
-        }
-        const BodyType type = world.type(body);
-        const bool sleeping = type != BodyType::Static && !world.isAwake(body);
-        const std::uint8_t fill = fillIndex(type, sleeping);
-        drawBody(canvas, camera, world, body, fill, static_cast<std::uint8_t>(fill + 1));
-    }
-    // Last, so that what a sensor overlaps does not hide its outline.
-    for (BodyId body : sensors)
-        drawBody(canvas, camera, world, body, std::nullopt, fillIndex(world.type(body), false));
+    CanvasDraw drawing(canvas, camera, palette);
+    world.debugDraw(drawing, {.markLength = static_cast<float>(kMarkPixels / camera.scale())});
 }
 
 /// A GIF frame's delay: the simulated time between frames, in the centiseconds GIF counts
@@ -239,7 +194,7 @@ int render(const RenderOptions& options) {
     Canvas canvas(width, height);
     const std::vector<Rgb> palette = makePalette();
     const auto drawFrame = [&] {
-        draw(canvas, camera, world);
+        draw(canvas, camera, world, palette);
         legend.draw(canvas, sceneHeight, kLegendColours);
     };
 
