@@ -5,7 +5,8 @@
 -- jumps, Down + Up drops through the one-way platform; click to drop a box, right-click
 -- to remove one, R to start again, M to switch between jostle's two models (physical, the
 -- default; classic, the tutorial to the letter), I to draw the positions as they are
--- (read through LuaJIT's FFI) instead of between the last two steps, Space to pause.
+-- (read through LuaJIT's FFI) instead of between the last two steps, Tab to draw the
+-- physics as jostle sees it over the game's own drawing (world:debugDraw), Space to pause.
 --
 -- Run it from the repository, after building:   love bindings/lua/example
 -- jostle.so is looked for next to this file, then through LUA_CPATH, then in the build
@@ -14,7 +15,8 @@
 -- For tests: `love bindings/lua/example --seconds 3` simulates 3 seconds, with the player
 -- following a short script (walk right, jump), prints a summary and quits (exit status 0
 -- if every box landed and the player walked and jumped as it should, 1 if not);
--- `--model classic` starts in the classic model.
+-- `--model classic` starts in the classic model; `--debug` starts with Tab's view on, and
+-- the summary says how many shapes it drew in the last frame.
 
 -- --- Finding jostle.so -------------------------------------------------------------------
 
@@ -73,6 +75,8 @@ local G, SPEED, JUMP = 800, 150, 420
 local world, clock
 local solver = "physical"
 local paused, interpolate = false, true
+local debugView = false -- Tab: world:debugDraw over the game's own drawing
+local drawnShapes = 0 -- by it, in the last frame
 -- What the game keeps about each body, keyed by the body itself (the same body is always
 -- the same Lua value, so bodies make good table keys): its look, and for boxes whether it
 -- landed and how bright it flashes.
@@ -227,6 +231,8 @@ function love.load(args)
     if args[i] == "--seconds" then
       stopAfter = tonumber(args[i + 1])
       assert(stopAfter and stopAfter > 0, "--seconds needs a number of seconds > 0")
+    elseif args[i] == "--debug" then
+      debugView = true
     elseif args[i] == "--model" then
       solver = args[i + 1]
       assert(solver == "physical" or solver == "classic", "--model: physical or classic")
@@ -259,6 +265,10 @@ local function summary()
   -- (31 x 420 - 13.33 x 31 x 32 / 2) / 60 = 106.78.
   print(string.format("jostle example: the player walked at %.1f to %.1f and jumped %.2f high",
     check.minWalk, check.maxWalk, check.highest))
+  if debugView then
+    print(string.format("jostle example: debug drawing drew %d shapes for %d bodies",
+      drawnShapes, world:getBodyCount()))
+  end
   local walked = check.minWalk == SPEED and check.maxWalk == SPEED
   local jumped = math.abs(check.highest - 106.78) < 0.01
   return landed == total and walked and jumped
@@ -302,10 +312,64 @@ function love.keypressed(key)
     reset()
   elseif key == "i" then
     interpolate = not interpolate
+  elseif key == "tab" then
+    debugView = not debugView
   elseif key == "space" then
     paused = not paused
   end
 end
+
+-- --- The physics as jostle sees it (Tab) -----------------------------------------------------
+
+-- world:debugDraw calls these with what to draw, in world units (pixels here) and colours
+-- 0xRRGGBBAA; jostle.rgba gives LÖVE's 0-to-1 parts. Fills are see-through, so that the
+-- game's own drawing shows under them. Shapes drawn in the last frame are counted for
+-- --debug's summary (drawnShapes).
+local function fillWith(colour)
+  local r, g, b, a = jostle.rgba(colour)
+  love.graphics.setColor(r, g, b, a * 0.35)
+end
+local function outlineWith(colour)
+  love.graphics.setColor(jostle.rgba(colour))
+end
+local debugDrawer = {
+  line = function(x1, y1, x2, y2, colour)
+    outlineWith(colour)
+    love.graphics.line(x1, y1, x2, y2)
+  end,
+  box = function(x, y, hw, hh, fill, outline)
+    drawnShapes = drawnShapes + 1
+    if fill % 256 ~= 0 then
+      fillWith(fill)
+      love.graphics.rectangle("fill", x - hw, y - hh, 2 * hw, 2 * hh)
+    end
+    outlineWith(outline)
+    love.graphics.rectangle("line", x - hw, y - hh, 2 * hw, 2 * hh)
+  end,
+  roundedBox = function(x, y, hw, hh, radius, fill, outline)
+    drawnShapes = drawnShapes + 1
+    if fill % 256 ~= 0 then
+      fillWith(fill)
+      love.graphics.rectangle("fill", x - hw, y - hh, 2 * hw, 2 * hh, radius, radius)
+    end
+    outlineWith(outline)
+    love.graphics.rectangle("line", x - hw, y - hh, 2 * hw, 2 * hh, radius, radius)
+  end,
+  triangle = function(x1, y1, x2, y2, x3, y3, fill, outline)
+    drawnShapes = drawnShapes + 1
+    if fill % 256 ~= 0 then
+      fillWith(fill)
+      love.graphics.polygon("fill", x1, y1, x2, y2, x3, y3)
+    end
+    outlineWith(outline)
+    love.graphics.polygon("line", x1, y1, x2, y2, x3, y3)
+  end,
+  point = function(x, y, size, colour)
+    outlineWith(colour)
+    love.graphics.rectangle("fill", x - 1.5, y - 1.5, 3, 3)
+  end,
+}
+local debugOptions = {contacts = true, velocities = true, touching = true, markLength = 12}
 
 -- Every body is drawn from one read of the whole world: between its last two steps
 -- (clock:getDrawPositions, into a table reused frame after frame), or as it is now,
@@ -341,10 +405,15 @@ function love.draw()
     love.graphics.setLineWidth(l.line or 1)
     love.graphics.rectangle("line", x - l.hw, y - l.hh, 2 * l.hw, 2 * l.hh)
   end
+  if debugView then
+    drawnShapes = 0
+    love.graphics.setLineWidth(1)
+    world:debugDraw(debugDrawer, debugOptions)
+  end
   love.graphics.setColor(230 / 255, 230 / 255, 230 / 255)
   love.graphics.print(string.format("%s model   %d bodies   coins %d   %s%s\n" ..
     "arrows: walk   up: jump   down+up: drop through   click: drop a box   R: reset   " ..
-    "M: switch model   I: interpolation   space: pause", solver, world:getBodyCount(), coins,
+    "M: switch model   I: interpolation   tab: physics   space: pause", solver, world:getBodyCount(), coins,
     interpolate and "interpolated" or "as stepped (FFI buffer)", paused and "   paused" or ""),
     10, 10)
 end

@@ -2,7 +2,7 @@
 # Runs the LÖVE example (bindings/lua/example) for 3 simulated seconds under a virtual X
 # server and checks that it started, loaded jostle.so and saw every box land, and that its
 # scripted player (a character) walked at exactly 150 and jumped as high as worked out by
-# hand (106.78).
+# hand (106.78); and that with --debug, world:debugDraw drew one shape a body.
 #
 #   run_love_example.sh EXAMPLE_DIR MODULE_DIR
 #
@@ -43,4 +43,14 @@ for model in physical classic; do
     failed=1
   fi
 done
+
+# Debug drawing (world:debugDraw through LÖVE's functions): every body one shape, the
+# world's bodies all in view (the example's walls and floor frame it).
+output=$(LUA_CPATH="$module_dir/?.so" SDL_AUDIODRIVER=dummy \
+  timeout 25 xvfb-run -a -s "-screen 0 1024x768x24" love "$example" --seconds 1 --debug 2>&1)
+echo "$output"
+if ! grep -Eq "jostle example: debug drawing drew ([0-9]+) shapes for \1 bodies" <<<"$output"; then
+  echo "debug drawing: the line is missing or it did not draw one shape a body" >&2
+  failed=1
+fi
 exit $failed
