@@ -5,6 +5,7 @@
 //
 //     const {jostle, page} = await loadPage();   // jostle: the package's Jostle
 import {load} from "../package/src/index.js";
+import {drawCalls} from "../package/src/world.js";
 
 /// The package over the page's module (jostle-web.wasm, beside the bundle), and its samples.
 export async function loadPage() {
@@ -58,8 +59,29 @@ export class JostlePage {
   bodyCount(pane) { return this.m._jostle_page_body_count(pane); }
   /// Every body of a pane: 12 floats each, as jostle_page_read_bodies (page_api.cpp).
   bodies(pane) { return this.read("_jostle_page_read_bodies", 12, pane); }
-  /// The touching pairs: point x, y, normal x, y, extent (jostle_page_read_contacts).
-  contacts(pane) { return this.read("_jostle_page_read_contacts", 5, pane); }
+  /// Draws a pane's world through `draw` as world.debugDraw does (docs/debug-draw.md): with
+  /// `debug`, its contacts, velocities, touched sides and broadphase cells too; marks
+  /// `markLength` long; what touches `view` ({minX, minY, maxX, maxY}) only.
+  debugDraw(pane, draw, debug, markLength, view) {
+    const count = this.m._jostle_page_debug_draw(pane, debug, markLength, view.minX, view.minY,
+                                                 view.maxX, view.maxY);
+    drawCalls(this.m, this.m._jostle_page_draw_calls(), count, draw);
+  }
+
+  /// The library's debug-draw colours (jostle::DebugPalette) as 0xRRGGBBAA, by their names
+  /// in JavaScript, and its two percentages: for a legend of what the marks mean.
+  palette() {
+    const rt = this.rt, m = this.m, L = rt.layout.debug_palette;
+    const at = rt.debugDrawOptions("palette") + rt.layout.debug_draw_options.palette;
+    const palette = {};
+    for (const name of Object.keys(L)) {
+      if (name === "size") continue;
+      const key = name.replace(/_(.)/g, (_, c) => c.toUpperCase()), p = at + L[name];
+      palette[key] = name.endsWith("percent") ? m.HEAP32[p >> 2]
+        : ((m.HEAPU8[p] << 24) | (m.HEAPU8[p + 1] << 16) | (m.HEAPU8[p + 2] << 8) | m.HEAPU8[p + 3]) >>> 0;
+    }
+    return palette;
+  }
 
   /// The picture of a pane's broadphase grid (demo/grid_picture.hpp) for steps of `dt`:
   /// {name, mainLevel, levelZero, inMainLevel, boxes: [{minX, minY, maxX, maxY, growX,

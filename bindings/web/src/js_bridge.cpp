@@ -148,53 +148,52 @@ jostle_response moveFilter(jostle_body_id other, void* context) {
     return static_cast<jostle_response>(jostle_js_move_filter(&other, context));
 }
 
-/// One call of the game's renderer, as the package reads it: nine 32-bit words.
-struct DrawCall {
-    std::uint32_t kind; ///< 0 line, 1 box, 2 rounded box, 3 triangle, 4 point
-    float values[6];    ///< as jostle::DebugDrawList::Command's
-    std::uint32_t fill; ///< 0xRRGGBBAA; a line's or a point's colour
-    std::uint32_t outline;
-};
-static_assert(sizeof(DrawCall) == 36);
+// The calls of the last jostle_web_debug_draw, kept by the C renderer's functions. The
+// package reads each Command as nine 32-bit words: values[0..5] (floats), fill and outline
+// (bytes r, g, b, a), kind (0 line, 1 box, 2 rounded box, 3 triangle, 4 point).
+using Command = jostle::DebugDrawList::Command;
+static_assert(sizeof(Command) == 36 && offsetof(Command, fill) == 24 &&
+              offsetof(Command, outline) == 28 && offsetof(Command, kind) == 32);
+jostle::DebugDrawList drawn;
 
-std::vector<DrawCall> drawCalls; ///< the last jostle_web_debug_draw's
-
-std::uint32_t packed(jostle_colour c) {
-    return std::uint32_t{c.r} << 24 | std::uint32_t{c.g} << 16 | std::uint32_t{c.b} << 8 | c.a;
+jostle::Vec2 vec(jostle_vec2 v) {
+    return {v.x, v.y};
+}
+jostle::Colour colour(jostle_colour c) {
+    return {c.r, c.g, c.b, c.a};
 }
 
-void keepLine(jostle_vec2 from, jostle_vec2 to, jostle_colour colour, void*) {
-    drawCalls.push_back({0, {from.x, from.y, to.x, to.y}, packed(colour), packed(colour)});
+void keepLine(jostle_vec2 from, jostle_vec2 to, jostle_colour c, void*) {
+    drawn.line(vec(from), vec(to), colour(c));
 }
 void keepBox(jostle_vec2 centre, jostle_vec2 half, jostle_colour fill, jostle_colour outline,
              void*) {
-    drawCalls.push_back({1, {centre.x, centre.y, half.x, half.y}, packed(fill), packed(outline)});
+    drawn.box(vec(centre), vec(half), colour(fill), colour(outline));
 }
 void keepRoundedBox(jostle_vec2 centre, jostle_vec2 half, float radius, jostle_colour fill,
                     jostle_colour outline, void*) {
-    drawCalls.push_back(
-        {2, {centre.x, centre.y, half.x, half.y, radius}, packed(fill), packed(outline)});
+    drawn.roundedBox(vec(centre), vec(half), radius, colour(fill), colour(outline));
 }
 void keepTriangle(jostle_vec2 a, jostle_vec2 b, jostle_vec2 c, jostle_colour fill,
                   jostle_colour outline, void*) {
-    drawCalls.push_back({3, {a.x, a.y, b.x, b.y, c.x, c.y}, packed(fill), packed(outline)});
+    drawn.triangle(vec(a), vec(b), vec(c), colour(fill), colour(outline));
 }
-void keepPoint(jostle_vec2 at, float size, jostle_colour colour, void*) {
-    drawCalls.push_back({4, {at.x, at.y, size}, packed(colour), packed(colour)});
+void keepPoint(jostle_vec2 at, float size, jostle_colour c, void*) {
+    drawn.point(vec(at), size, colour(c));
 }
 
 } // namespace
 
 extern "C" {
 
-/// jostle_world_debug_draw into a list of DrawCall that the package walks, calling the
+/// jostle_world_debug_draw into a list of Command that the package walks, calling the
 /// game's functions: *count of them at the address returned (NULL on misuse). `functions`
 /// says which the game has beside line (1 box, 2 rounded box, 4 triangle, 8 point): the
 /// others come as lines.
-EMSCRIPTEN_KEEPALIVE const DrawCall* jostle_web_debug_draw(const jostle_world* world,
-                                                           const jostle_debug_draw_options* options,
-                                                           int functions, int* count) {
-    drawCalls.clear();
+EMSCRIPTEN_KEEPALIVE const Command* jostle_web_debug_draw(const jostle_world* world,
+                                                          const jostle_debug_draw_options* options,
+                                                          int functions, int* count) {
+    drawn.clear();
     const jostle_debug_draw draw{keepLine,
                                  (functions & 1) != 0 ? keepBox : nullptr,
                                  (functions & 2) != 0 ? keepRoundedBox : nullptr,
@@ -204,9 +203,10 @@ EMSCRIPTEN_KEEPALIVE const DrawCall* jostle_web_debug_draw(const jostle_world* w
     *count = 0;
     if (!jostle_world_debug_draw(world, &draw, options))
         return nullptr;
-    *count = static_cast<int>(drawCalls.size());
+    const auto commands = drawn.commands();
+    *count = static_cast<int>(commands.size());
     // Never NULL when it worked, nothing drawn or not.
-    return drawCalls.empty() ? reinterpret_cast<const DrawCall*>(&drawCalls) : drawCalls.data();
+    return commands.empty() ? reinterpret_cast<const Command*>(&drawn) : commands.data();
 }
 
 /// jostle.h's structs as JSON: {"contact_event": {"size": 44, "a": 0, "normal": 24, ...},

@@ -1,9 +1,8 @@
 // The page's side of the module: the demo's samples (demo/sample_*.cpp) behind a C
-// surface that bindings/web/page/jostle.js wraps. One page, one set of samples: the state
-// is a single Page. What is read back (bodies, contacts, labels) is written into one
+// surface that bindings/web/page/page_module.js wraps. One page, one set of samples: the
+// state is a single Page. What is read back (bodies, labels, drawing) is written into one
 // float buffer and read from the module's memory: a frame costs a few calls per pane,
 // not a call per body.
-#include "drawn_contact.hpp"
 #include "grid_picture.hpp"
 #include "mouse_drag.hpp"
 #include "sample_check.hpp"
@@ -48,6 +47,7 @@ struct Page {
     demo::Sample* current = nullptr;
     demo::MouseDrag drag;
     std::vector<float> out; ///< what the last read wrote
+    DebugDrawList drawn;    ///< what the last jostle_page_debug_draw drew
     std::string text;       ///< what the last call that returns text returned
 };
 
@@ -233,28 +233,33 @@ EMSCRIPTEN_KEEPALIVE int jostle_page_read_bodies(int index) {
     return static_cast<int>(world.bodyCount());
 }
 
-/// The pairs touching now, 5 floats each: the contact point x, y; the unit direction to
-/// draw the normal in, into the body it pushes, x, y; that body's extent along it.
-EMSCRIPTEN_KEEPALIVE int jostle_page_read_contacts(int index) {
+/// The pane's world drawn as the SDL demo draws it (World::debugDraw): with `debug`, the
+/// contacts, velocities, touched sides and the broadphase's cells too, and sleeping bodies
+/// dimmed; marks `markLength` long at most; only what touches the box (minX, minY) to
+/// (maxX, maxY). Returns the number of calls, jostle_page_draw_calls their address.
+EMSCRIPTEN_KEEPALIVE int jostle_page_debug_draw(int index, bool debug, float markLength, float minX,
+                                                float minY, float maxX, float maxY) {
     const demo::Pane* pane = paneAt(index);
+    DebugDrawList& list = page().drawn;
+    list.clear();
     if (pane == nullptr)
         return 0;
-    const World& world = *pane->world;
-    std::vector<float>& out = page().out;
-    out.clear();
-    pane->contacts.forEach(world, [&](const demo::TouchingPair& pair) {
-        const demo::DrawnContact contact = demo::drawnContact(world, pair);
-        // The normal points from b towards a: drawn into a, unless a is a body that no
-        // contact moves (a floor made first), as the SDL demo draws it.
-        const bool intoA = world.type(pair.a) == BodyType::Dynamic;
-        const Vec2 direction = intoA ? contact.normal : -contact.normal;
-        const Vec2 half = world.halfExtents(intoA ? pair.a : pair.b);
-        const float along = direction.y == 0.0f   ? half.x
-                            : direction.x == 0.0f ? half.y
-                                                  : std::min(half.x, half.y);
-        out.insert(out.end(), {contact.point.x, contact.point.y, direction.x, direction.y, along});
-    });
-    return static_cast<int>(out.size() / 5);
+    DebugDrawOptions options{.contacts = debug,
+                             .velocities = debug,
+                             .touching = debug,
+                             .grid = debug,
+                             .markLength = markLength,
+                             .viewMin = {minX, minY},
+                             .viewMax = {maxX, maxY}};
+    if (!debug)
+        options.palette.sleepingPercent = 100;
+    pane->world->debugDraw(list, options);
+    return static_cast<int>(list.commands().size());
+}
+
+/// The calls the last jostle_page_debug_draw kept (jostle::DebugDrawList::Command each).
+EMSCRIPTEN_KEEPALIVE const DebugDrawList::Command* jostle_page_draw_calls() {
+    return page().drawn.commands().data();
 }
 
 /// The picture of the pane's broadphase grid (demo/grid_picture.hpp), for steps of `dt`:

@@ -11,6 +11,27 @@ const FRICTION_MIXES = ["min", "geometricMean"];
 /// The renderer's functions beside line, by their bit in jostle_web_debug_draw's `functions`.
 const DRAWN = ["box", "roundedBox", "triangle", "point"];
 
+/// A colour's bytes r, g, b, a at `at` as 0xRRGGBBAA.
+const colourAt = (bytes, at) =>
+  ((bytes[at] << 24) | (bytes[at + 1] << 16) | (bytes[at + 2] << 8) | bytes[at + 3]) >>> 0;
+
+/// Makes `count` calls of a DebugDrawList at `at` (jostle::DebugDrawList::Command, nine
+/// 32-bit words each: six floats, the fill's and the outline's bytes, the kind) on `draw`.
+export function drawCalls(m, at, count, draw) {
+  for (let i = 0; i < count; ++i) {
+    // The views are taken afresh for each call: the game's function may grow the memory.
+    const p = (at >> 2) + 9 * i, f = m.HEAPF32, bytes = m.HEAPU8;
+    const fill = colourAt(bytes, 4 * (p + 6)), outline = colourAt(bytes, 4 * (p + 7));
+    switch (m.HEAPU32[p + 8]) {
+      case 0: draw.line(f[p], f[p + 1], f[p + 2], f[p + 3], fill); break;
+      case 1: draw.box(f[p], f[p + 1], f[p + 2], f[p + 3], fill, outline); break;
+      case 2: draw.roundedBox(f[p], f[p + 1], f[p + 2], f[p + 3], f[p + 4], fill, outline); break;
+      case 3: draw.triangle(f[p], f[p + 1], f[p + 2], f[p + 3], f[p + 4], f[p + 5], fill, outline); break;
+      default: draw.point(f[p], f[p + 1], f[p + 2], fill);
+    }
+  }
+}
+
 export class World {
   constructor(jostle, pointer) {
     this.jostle = jostle;
@@ -230,18 +251,7 @@ export class World {
     const world = this.live(fn), rt = this.rt, m = rt.m;
     const at = m._jostle_web_debug_draw(world, rt.debugDrawOptions(fn, options), functions, rt.out);
     rt.check(fn, at !== 0);
-    const count = m.HEAP32[rt.out >> 2];
-    for (let i = 0; i < count; ++i) {
-      // The views are taken afresh for each call: the game's function may grow the memory.
-      const p = (at >> 2) + 9 * i, f = m.HEAPF32, u = m.HEAPU32;
-      switch (u[p]) {
-        case 0: draw.line(f[p + 1], f[p + 2], f[p + 3], f[p + 4], u[p + 7]); break;
-        case 1: draw.box(f[p + 1], f[p + 2], f[p + 3], f[p + 4], u[p + 7], u[p + 8]); break;
-        case 2: draw.roundedBox(f[p + 1], f[p + 2], f[p + 3], f[p + 4], f[p + 5], u[p + 7], u[p + 8]); break;
-        case 3: draw.triangle(f[p + 1], f[p + 2], f[p + 3], f[p + 4], f[p + 5], f[p + 6], u[p + 7], u[p + 8]); break;
-        default: draw.point(f[p + 1], f[p + 2], f[p + 3], u[p + 7]);
-      }
-    }
+    drawCalls(m, at, m.HEAP32[rt.out >> 2], draw);
   }
 
   readVectors(fn, name, out) {
