@@ -10,8 +10,8 @@ namespace jostle::demo {
 std::optional<Options> parseOptions(int argc, char** argv, int& exitCode) {
     Options options;
     CLI::App app{"jostle-demo: jostle's samples in a window (docs/demo.md)", "jostle-demo"};
-    app.add_option("--sample", options.sample, "the sample to start with, 1 to 8")
-        ->check(CLI::Range(1, 8));
+    app.add_option("--sample", options.sample, "the sample to start with, 1 to 9")
+        ->check(CLI::Range(1, 9));
     app.add_option("--frames", options.frames,
                    "run this many frames (each counted as 1/60 s) and exit")
         ->check(CLI::Range(1, 1000000));

@@ -7,7 +7,7 @@
 namespace jostle::demo {
 
 struct Options {
-    int sample = 1; ///< 1 to 8, as the keys
+    int sample = 1; ///< 1 to 9, as the keys
     /// Run this many frames, then exit (0: until the window is closed). Frames then count
     /// as 1/60 s each, whatever they really take, so that a run is the same every time.
     int frames = 0;

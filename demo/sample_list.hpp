@@ -1,4 +1,4 @@
-// The demo's samples, in the order of the keys 1 to 8; each is defined in its own file.
+// The demo's samples, in the order of the keys 1 to 9; each is defined in its own file.
 #pragma once
 
 #include "sample.hpp"
@@ -16,6 +16,7 @@ std::unique_ptr<Sample> makeBulletsSample();    // sample_bullets.cpp
 std::unique_ptr<Sample> makeCratesSample();     // sample_crates.cpp
 std::unique_ptr<Sample> makeSlopesSample();     // sample_slopes.cpp
 std::unique_ptr<Sample> makeRollbackSample();   // sample_rollback.cpp
+std::unique_ptr<Sample> makeLevelSample();      // sample_level.cpp
 
 inline std::vector<std::unique_ptr<Sample>> makeSamples() {
     std::vector<std::unique_ptr<Sample>> samples;
@@ -27,6 +28,7 @@ inline std::vector<std::unique_ptr<Sample>> makeSamples() {
     samples.push_back(makeCratesSample());
     samples.push_back(makeSlopesSample());
     samples.push_back(makeRollbackSample());
+    samples.push_back(makeLevelSample());
     return samples;
 }
 

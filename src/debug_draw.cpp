@@ -293,11 +293,14 @@ private:
 
 void World::debugDraw(DebugDraw& draw, const DebugDrawOptions& options) const {
     constexpr const char* kFunction = "debugDraw";
-    requireFinite(kFunction, "options.markLength", options.markLength);
-    if (options.markLength < 0.0f)
-        fail(kFunction, "options.markLength must be >= 0");
-    requireFinite(kFunction, "options.viewMin", options.viewMin);
-    requireFinite(kFunction, "options.viewMax", options.viewMax);
+    // Any finite size: a view may reach past the world's range, a mark be long in a view
+    // of tiny bodies.
+    if (!(options.markLength >= 0.0f && std::isfinite(options.markLength)))
+        fail(kFunction, "options.markLength must be a finite number >= 0");
+    for (const auto& [corner, name] :
+         {std::pair{options.viewMin, "viewMin"}, std::pair{options.viewMax, "viewMax"}})
+        if (!std::isfinite(corner.x) || !std::isfinite(corner.y))
+            fail(kFunction, std::string("options.") + name + " must be finite");
     for (const auto& [percent, name] :
          {std::pair{options.palette.sleepingPercent, "sleepingPercent"},
           std::pair{options.palette.outlinePercent, "outlinePercent"}})

@@ -364,7 +364,8 @@ TEST(DebugDraw, BadOptionsAreRefusedByName) {
             try {
                 world.debugDraw(draw, {.markLength = -1});
             } catch (const Error& error) {
-                EXPECT_STREQ(error.what(), "debugDraw: options.markLength must be >= 0");
+                EXPECT_STREQ(error.what(),
+                             "debugDraw: options.markLength must be a finite number >= 0");
                 throw;
             }
         },

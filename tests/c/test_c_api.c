@@ -2403,7 +2403,7 @@ static void test_debug_draw(void) {
     CHECK_ERROR("jostle_world_debug_draw", "jostle_default_debug_draw_options");
     options.mark_length = -1;
     CHECK(!jostle_world_debug_draw(world, &counted, &options), "a negative mark");
-    CHECK_ERROR("jostle_world_debug_draw", "markLength must be >= 0");
+    CHECK_ERROR("jostle_world_debug_draw", "markLength must be a finite number >= 0");
     options = jostle_default_debug_draw_options();
     options.palette.sleeping_percent = 200;
     CHECK(!jostle_world_debug_draw(world, &counted, &options), "a percentage above 100");

@@ -50,6 +50,27 @@ expect player_floor 1 "standing on the jump-through platform"
 run --sample 2 --frames 130 --input "$jump"
 near player_y 492 0.01 "Down + space drops through the platform, back to the floor"
 
+# --- The example level (sample 9): examples/levels/level.tmj, drawn in Tiled, read by
+# jostle::parseTiled. Tiles are 16 px; the floor is row 14 (top y 224). The character
+# (10 x 14 px) starts on the map's "spawn" point (40, 200) and falls to stand at y 224 - 7.
+run --sample 9 --frames 30
+expect sample level "sample 9 is the Tiled level"
+level_bodies=$(value bodies)
+expect player_x 40.000 "the character starts at the spawn point's x"
+near player_y 217 0.01 "and stands on the floor (224 - 7)"
+expect coins 0 "no coin yet"
+# Right held 0.5 s at 120 px/s: 60 px along the flat floor.
+run --sample 9 --frames 90 --input "30 key-down Right; 60 key-up Right"
+near player_x 100 0.01 "Right held 0.5 s runs 120 px/s x 0.5 s"
+# Right held 2.5 s: up the ramp of column 8 onto the block of row 13 (top y 208), through
+# the first coin (a sensor from x 172 to 180, y 204 to 212, the map's "coin" object),
+# which is collected and destroyed, and down the block's far ramp to the floor.
+run --sample 9 --frames 200 --input "30 key-down Right; 180 key-up Right"
+expect coins 1 "walking over the block collects its coin"
+expect bodies $((level_bodies - 1)) "the coin's body is gone"
+near player_y 217 0.01 "back on the floor beyond the block"
+expect player_floor 1 "standing"
+
 # Right-click drops a box (the centre of the pane is empty space in the level): one body
 # more per click. R rebuilds the sample: the initial count, the player back at x 100.
 run --sample 2 --frames 20 --input "10 mouse-click right 640 372"

@@ -36,8 +36,8 @@ async function main() {
     process.exit(1);
   }
   // Eight samples, each hashed: a page that ran none would not get here.
-  if (native.split(" ").length !== 8) {
-    console.log("FAILED: expected the eight samples of jostle-demo");
+  if (native.split(" ").length !== 9) {
+    console.log("FAILED: expected the nine samples of jostle-demo");
     process.exit(1);
   }
   console.log("the page's samples give the native hashes");

@@ -376,7 +376,7 @@ await rejects("an unknown option", load({wasmBinary: bytes}), "load: no option \
   refuses("a box that is not a function", () => world.debugDraw({line() {}, box: 3}), "TypeError",
           "debugDraw: draw.box must be a function, got 3");
   refuses("a negative mark", () => world.debugDraw({line() {}}, {markLength: -1}), "Error",
-          "debugDraw: options.markLength must be >= 0");
+          "debugDraw: options.markLength must be a finite number >= 0");
   refuses("a percentage past 100", () => world.debugDraw({line() {}}, {palette: {sleepingPercent: 101}}), "Error",
           "debugDraw: options.palette.sleepingPercent must be in [0, 100]");
   refuses("an unknown option", () => world.debugDraw({line() {}}, {grd: true}), "TypeError",
