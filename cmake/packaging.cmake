@@ -48,8 +48,11 @@ set(CPACK_DEBIAN_PACKAGE_DESCRIPTION "Axis-aligned boxes, slopes and round shape
 kinematic and dynamic bodies; stable stacks, characters, one-way platforms,
 sensors, events, queries and tile maps, with the same results bit for bit on
 every machine. For C++20, C (jostle.h), Lua 5.4 and LuaJIT (LOVE), with the
-jostle program for scene files.")
+jostle program for scene files and levels from Tiled and LDtk.")
 set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
+# The static level library links with these where a program uses it (jostle-level.pc,
+# find_package(jostle COMPONENTS level)); the rest of the package needs none of them.
+set(CPACK_DEBIAN_PACKAGE_RECOMMENDS "libpugixml-dev, zlib1g-dev, libzstd-dev")
 # The shared library: what a package built against it depends on (shlibs), and ld.so's
 # cache refreshed by a trigger, as Debian wants, not by maintainer scripts.
 configure_file(${PROJECT_SOURCE_DIR}/cmake/debian/shlibs.in ${PROJECT_BINARY_DIR}/debian/shlibs

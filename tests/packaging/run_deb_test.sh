@@ -4,7 +4,8 @@
 # touching the machine), then, against that tree alone,
 #   - builds and runs the C and the C++ consumer with pkg-config (the shared library),
 #     and the C one linked with the static library too;
-#   - configures, builds and runs the C++ consumer with CMake (find_package(jostle));
+#   - configures, builds and runs the C++ consumer with CMake (find_package(jostle)), and
+#     the level library's (tests/consumer/level.cpp) with CMake and pkg-config;
 #   - requires the module in Lua 5.4 and in LuaJIT from Debian's module paths;
 #   - runs the jostle program.
 #   run_deb_test.sh SOURCE_DIR WORK_DIR VERSION
@@ -26,6 +27,8 @@ arch=$(dpkg-architecture -qDEB_HOST_MULTIARCH)
 libdir=$root/usr/lib/$arch
 for f in "$libdir/libjostle.so.0.1" "$libdir/libjostle.a" "$libdir/pkgconfig/jostle.pc" \
          "$libdir/cmake/jostle/jostleConfig.cmake" "$root/usr/include/jostle/jostle.h" \
+         "$libdir/libjostle_level.a" "$libdir/pkgconfig/jostle-level.pc" \
+         "$root/usr/include/jostle/level.hpp" "$root/usr/include/jostle/level.h" \
          "$libdir/lua/5.1/jostle.so" "$libdir/lua/5.4/jostle.so" "$root/usr/bin/jostle" \
          "$root/usr/share/doc/jostle/copyright" "$root/usr/share/doc/jostle/changelog.gz"; do
   [ -e "$f" ] || { echo "missing from the package: ${f#"$root"}"; exit 1; }
@@ -46,11 +49,14 @@ loaded=$(LD_LIBRARY_PATH=$libdir ldd "$work/c_consumer")
 LD_LIBRARY_PATH=$libdir "$work/c_consumer"
 LD_LIBRARY_PATH=$libdir "$work/cxx_consumer"
 "$work/c_static"
+build_pkgconfig_level_consumer "$source" "$work" c++ "" ""
+LD_LIBRARY_PATH=$libdir "$work/level_consumer"
 
 cmake -S "$source/tests/consumer" -B "$work/cmake_consumer" -DCMAKE_PREFIX_PATH="$root/usr" \
   -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build "$work/cmake_consumer" >/dev/null
 "$work/cmake_consumer/consumer"
+"$work/cmake_consumer/level_consumer"
 
 for lua in lua5.4 luajit; do
   if command -v $lua >/dev/null; then
@@ -60,4 +66,4 @@ for lua in lua5.4 luajit; do
 done
 
 [ "$("$root/usr/bin/jostle" --version)" = "jostle $version" ]
-echo "the package works: C, C++ (pkg-config and CMake), Lua 5.4, LuaJIT, jostle $version"
+echo "the package works: C, C++ (pkg-config and CMake), levels, Lua 5.4, LuaJIT, jostle $version"

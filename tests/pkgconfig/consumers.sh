@@ -18,3 +18,14 @@ build_pkgconfig_consumers() {
   $cxx -std=c++20 $cxxflags "$source/tests/consumer/main.cpp" -o "$work/cxx_consumer" $ldflags \
     $(pkg-config --cflags --libs jostle)
 }
+
+# The level library's consumer (tests/consumer/level.cpp) with `pkg-config --cflags --libs
+# jostle-level`: a static library, with pugixml, zlib and zstd after it.
+#   build_pkgconfig_level_consumer SOURCE_DIR WORK_DIR CXX "CXXFLAGS" "LDFLAGS"
+# makes WORK_DIR/level_consumer.
+build_pkgconfig_level_consumer() {
+  local source=$1 work=$2 cxx=$3 cxxflags=$4 ldflags=$5
+  # shellcheck disable=SC2046,SC2086
+  $cxx -std=c++20 $cxxflags "$source/tests/consumer/level.cpp" -o "$work/level_consumer" \
+    $ldflags $(pkg-config --cflags --libs jostle-level)
+}

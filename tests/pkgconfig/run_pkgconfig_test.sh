@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Installs the built jostle into a scratch prefix, then builds the C and the C++ consumer
 # programs (tests/c/consumer, tests/consumer) with nothing but the compiler and
-# `pkg-config --cflags --libs jostle`, and runs them: each drops a box on a floor.
+# `pkg-config --cflags --libs jostle`, and runs them: each drops a box on a floor; and the
+# level library's consumer with jostle-level's, which reads a Tiled map.
 #   run_pkgconfig_test.sh BUILD_DIR SOURCE_DIR WORK_DIR CC CXX "CFLAGS" "CXXFLAGS" "LDFLAGS"
 set -euo pipefail
 build=$1 source=$2 work=$3 cc=$4 cxx=$5 cflags=$6 cxxflags=$7 ldflags=$8
@@ -22,4 +23,8 @@ export LD_LIBRARY_PATH=$(dirname "$pc_dir")
 if [ -f "$pc_dir/jostle-scene.pc" ]; then
   pkg-config --exists --print-errors "jostle-scene = $(pkg-config --modversion jostle)"
   echo "jostle-scene: $(pkg-config --libs jostle-scene)"
+fi
+if [ -f "$pc_dir/jostle-level.pc" ]; then
+  build_pkgconfig_level_consumer "$source" "$work" "$cxx" "$cxxflags" "$ldflags"
+  "$work/level_consumer"
 fi
