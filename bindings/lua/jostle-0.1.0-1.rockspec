@@ -1,8 +1,11 @@
 -- luarocks: the jostle module for the Lua luarocks runs for (Lua 5.1/LuaJIT, 5.4, ...).
 -- From the root of a checkout:   luarocks make bindings/lua/jostle-0.1.0-1.rockspec
 -- Its version is the library's (include/jostle/version.h); the test versions_agree checks.
--- The build needs cmake and a C++20 compiler: CMake builds the core and this one module
--- (JOSTLE_LUA_ROCK) and installs the module alone into the rock's tree.
+-- The build needs cmake, a C++20 compiler and nlohmann-json's header (Debian's
+-- nlohmann-json3-dev): CMake builds the core, the scene and level libraries and this one
+-- module (JOSTLE_LUA_ROCK) and installs the module alone into the rock's tree. With
+-- pugixml, zlib and zstd (libpugixml-dev zlib1g-dev libzstd-dev) levels are read in every
+-- format Tiled saves; without them, JSON maps with plain or base64 data.
 rockspec_format = "3.0"
 package = "jostle"
 version = "0.1.0-1"
@@ -15,13 +18,17 @@ description = {
    summary = "2D collision detection and response for simple games",
    detailed = [[
 Axis-aligned boxes, slopes and round shapes; static, kinematic and dynamic bodies;
-stable stacks, characters, one-way platforms, sensors, events, queries and tile maps.
+stable stacks, characters, one-way platforms, sensors, events, queries, tile maps
+and levels drawn in Tiled or LDtk.
 Same inputs, same results, bit for bit. docs/lua.md is the manual.]],
    license = "MIT",
    labels = { "physics", "collision", "games", "love2d" },
 }
 dependencies = {
    "lua >= 5.1",
+}
+external_dependencies = {
+   NLOHMANN_JSON = { header = "nlohmann/json.hpp" },
 }
 build = {
    type = "cmake",
