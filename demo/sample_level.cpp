@@ -53,7 +53,10 @@ public:
         const std::vector<BodyId> bodies = addBodies(world, level.scene);
         coins_.clear();
         collected_ = 0;
+        lift_ = {};
         for (const LevelObject& object : level.objects) {
+            if (object.body < 0)
+                continue; // a point, or an object made into no body
             if (object.type == "coin")
                 coins_.push_back(bodies[static_cast<std::size_t>(object.body)]);
             if (object.type == "lift") {
@@ -94,6 +97,8 @@ public:
                 ++collected_;
             }
         runner_.steer(world, controls);
+        if (!world.isValid(lift_))
+            return;
         // The lift turns round at either end of its ride.
         const float y = world.position(lift_).y;
         const float vy = world.velocity(lift_).y;

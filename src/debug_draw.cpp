@@ -306,6 +306,15 @@ void World::debugDraw(DebugDraw& draw, const DebugDrawOptions& options) const {
           std::pair{options.palette.outlinePercent, "outlinePercent"}})
         if (percent < 0 || percent > 100)
             fail(kFunction, std::string("options.palette.") + name + " must be in [0, 100]");
+    // The renderer may read the world, not change it (requireChangeable), while the walk
+    // below holds its lists.
+    const WorldState& state = WorldAccess::state(*this);
+    struct Drawing {
+        const WorldState& state;
+        bool before = state.drawing;
+        ~Drawing() { state.drawing = before; }
+    } scope{state};
+    state.drawing = true;
     WorldDrawing drawing(*this, draw, options);
     if (options.grid)
         drawing.grid();

@@ -61,6 +61,9 @@ inline void requireChangeable(const WorldState& world, const char* function) {
     if (world.moveUnderWay)
         fail(function, "called from move()'s filter (the world cannot change until the move "
                        "is done)");
+    if (world.drawing)
+        fail(function, "called from a DebugDraw function (the world cannot change until "
+                       "debugDraw is done)");
 }
 
 /// The live body `id` names, for a function that changes it.

@@ -54,6 +54,9 @@ struct WorldState {
     std::vector<std::uint32_t> pendingFree;
     /// True while move() walks the world: its filter may read the world, not change it.
     bool moveUnderWay = false;
+    /// True while debugDraw walks the world (a const function): its DebugDraw may read the
+    /// world, not change it.
+    mutable bool drawing = false;
 
     /// Last step's contacts of the physical model, by pairKey. Only looked up, never
     /// iterated, so its hash order cannot leak into the results.

@@ -7,6 +7,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
+#include <utility>
 #include <vector>
 
 namespace jostle {
@@ -56,7 +58,14 @@ struct Lines : DebugDraw {
     void line(Vec2 from, Vec2 to, Colour) override { lines.emplace_back(from, to); }
 };
 
-const DebugPalette kPalette;
+/// The palette's defaults as docs/debug-draw.md lists them.
+struct DocumentedPalette {
+    Colour staticBody{150, 150, 150}, kinematicBody{70, 130, 230}, dynamicBody{240, 150, 60};
+    Colour bulletOutline{255, 255, 255}, oneWayFace{230, 230, 230};
+    Colour contact{250, 250, 120}, velocity{90, 220, 120}, touching{230, 60, 60};
+    Colour gridCell{50, 110, 140}, gridBox{110, 220, 250};
+};
+const DocumentedPalette kPalette;
 
 TEST(DebugDraw, EachBodyTypeIsFilledInItsColourAndOutlinedDarker) {
     World world(WorldDef{.sleeping = false});
@@ -257,6 +266,54 @@ TEST(DebugDraw, TheTouchedFloorIsTheFaceGravityPullsTowards) {
     EXPECT_NEAR(std::abs(lines[0].points[1].y - lines[0].points[0].y), 1.0f, 1e-4f);
 }
 
+// Gravity pulling to -y: "down" is -y, and the body's right, looking along gravity, is
+// (down.y, -down.x) = (-1, 0). A wall at the box's -x side is on its right.
+TEST(DebugDraw, TheWallsAreLeftAndRightLookingAlongGravity) {
+    World world(WorldDef{.gravity = {0, -10}, .sleeping = false});
+    world.createBody({.type = BodyType::Static, .x = 0, .y = -1, .hw = 10, .hh = 1}); // floor
+    world.createBody({.type = BodyType::Static, .x = -1, .y = 5, .hw = 1, .hh = 5});  // wall
+    const BodyId box = world.createBody({.x = 0.5f, .y = 0.5f, .hw = 0.5f, .hh = 0.5f});
+    for (int i = 0; i < 30; ++i) { // pressed against the wall
+        world.applyForce(box, {-20, 0});
+        world.step(kDt);
+    }
+    ASSERT_TRUE(world.touching(box).wallRight);
+    Recorder draw;
+    world.debugDraw(draw, {.shapes = false, .touching = true});
+    const auto lines = draw.of(Recorder::Call::Line);
+    // The floor (the -y face) and the wall on the -x face.
+    ASSERT_EQ(lines.size(), 2u);
+    const Vec2 centre = world.position(box);
+    EXPECT_NEAR(lines[0].points[0].y, centre.y - 0.5f, 1e-5f);
+    EXPECT_NEAR(lines[0].points[1].y, centre.y - 0.5f, 1e-5f);
+    EXPECT_NEAR(lines[1].points[0].x, centre.x - 0.5f, 1e-5f);
+    EXPECT_NEAR(lines[1].points[1].x, centre.x - 0.5f, 1e-5f);
+}
+
+// A renderer that changes the world while it is walked is refused, and the walk ends.
+TEST(DebugDraw, ARendererThatChangesTheWorldIsRefused) {
+    World world;
+    world.createBody({.type = BodyType::Static, .x = 0, .y = 0, .hw = 1, .hh = 1});
+    struct Changer : DebugDraw {
+        World* world = nullptr;
+        void line(Vec2, Vec2, Colour) override {}
+        void box(Vec2, Vec2, Colour, Colour) override {
+            world->createBody({.x = 5, .y = 5, .hw = 1, .hh = 1});
+        }
+    } draw;
+    draw.world = &world;
+    try {
+        world.debugDraw(draw);
+        ADD_FAILURE() << "a body created from a DebugDraw function was accepted";
+    } catch (const Error& error) {
+        EXPECT_STREQ(error.what(), "createBody: called from a DebugDraw function (the world "
+                                   "cannot change until debugDraw is done)");
+    }
+    EXPECT_EQ(world.bodyCount(), 1u);
+    world.createBody({.x = 5, .y = 5, .hw = 1, .hh = 1}); // and after it, as ever
+    EXPECT_EQ(world.bodyCount(), 2u);
+}
+
 TEST(DebugDraw, OnlyWhatTouchesTheViewIsDrawn) {
     World world;
     world.createBody({.type = BodyType::Static, .x = 0, .y = 0, .hw = 1, .hh = 1});
@@ -281,8 +338,13 @@ TEST(DebugDraw, TheGridShowsACellHoldingEachMovingBox) {
     for (const auto& call : draw.of(Recorder::Call::Box)) {
         const Vec2 min = call.points[0] - call.points[1], max = call.points[0] + call.points[1];
         EXPECT_EQ(call.fill.a, 0);
-        if (call.outline == kPalette.gridCell)
-            cell = cell || (min.x <= low.x && low.x < max.x && min.y <= low.y && low.y < max.y);
+        // A cell of the level a lone 1 x 1 box goes to: square, at least as large as the box
+        // (a level's cells hold its boxes), at most 2.5 times (1.25 times the smallest box,
+        // doubled at most once: docs/broadphase.md).
+        const Vec2 size = max - min;
+        if (call.outline == kPalette.gridCell && min.x <= low.x && low.x < max.x &&
+            min.y <= low.y && low.y < max.y)
+            cell = cell || (std::abs(size.x - size.y) < 1e-5f && size.x >= 1.0f && size.x <= 2.5f);
         if (call.outline == kPalette.gridBox)
             grown =
                 grown || (min.x <= low.x && min.y <= low.y && max.x >= high.x && max.y >= high.y);
@@ -293,17 +355,26 @@ TEST(DebugDraw, TheGridShowsACellHoldingEachMovingBox) {
 
 // --- A renderer of lines alone ------------------------------------------------------------
 
+/// The lines as unordered pairs of ends, sorted: comparable whatever their order.
+std::vector<std::pair<Vec2, Vec2>> sortedLines(std::vector<std::pair<Vec2, Vec2>> lines) {
+    const auto less = [](Vec2 a, Vec2 b) { return a.x != b.x ? a.x < b.x : a.y < b.y; };
+    for (auto& [a, b] : lines)
+        if (less(b, a))
+            std::swap(a, b);
+    std::sort(lines.begin(), lines.end(), [&](const auto& p, const auto& q) {
+        return p.first != q.first ? less(p.first, q.first) : less(p.second, q.second);
+    });
+    return lines;
+}
+
 TEST(DebugDraw, WithLinesOnlyABoxIsItsFourSides) {
     World world;
     world.createBody({.type = BodyType::Static, .x = 0, .y = 0, .hw = 2, .hh = 1});
     Lines draw;
     world.debugDraw(draw);
-    ASSERT_EQ(draw.lines.size(), 4u);
-    for (const auto& [from, to] : draw.lines) {
-        // Each side runs along an axis on the box's edge.
-        EXPECT_TRUE(from.x == to.x || from.y == to.y);
-        EXPECT_TRUE(std::abs(from.x) == 2 || std::abs(from.y) == 1);
-    }
+    const std::vector<std::pair<Vec2, Vec2>> sides{
+        {{-2, -1}, {2, -1}}, {{2, -1}, {2, 1}}, {{-2, 1}, {2, 1}}, {{-2, -1}, {-2, 1}}};
+    EXPECT_EQ(sortedLines(draw.lines), sortedLines(sides));
 }
 
 TEST(DebugDraw, WithLinesOnlyACircleIsAClosedRingOnItsEdge) {
@@ -319,12 +390,16 @@ TEST(DebugDraw, WithLinesOnlyACircleIsAClosedRingOnItsEdge) {
                   draw.lines[(i + draw.lines.size() - 1) % draw.lines.size()].second);
 }
 
+// The ramp whose slope names the corner (+x, +y): its face from (+x, -y) to (-x, +y), its
+// right angle at (-x, -y).
 TEST(DebugDraw, WithLinesOnlyARampIsItsThreeSides) {
     World world;
     world.createBody({.type = BodyType::Static, .x = 0, .y = 0, .hw = 1, .hh = 1, .slope = {1, 1}});
     Lines draw;
     world.debugDraw(draw);
-    EXPECT_EQ(draw.lines.size(), 3u);
+    const std::vector<std::pair<Vec2, Vec2>> sides{
+        {{1, -1}, {-1, 1}}, {{-1, 1}, {-1, -1}}, {{-1, -1}, {1, -1}}};
+    EXPECT_EQ(sortedLines(draw.lines), sortedLines(sides));
 }
 
 // A list replays the calls in their order with their values: the same calls as drawing
@@ -370,11 +445,27 @@ TEST(DebugDraw, BadOptionsAreRefusedByName) {
             }
         },
         Error);
-    EXPECT_THROW(world.debugDraw(draw, {.markLength = NAN}), Error);
-    EXPECT_THROW(world.debugDraw(draw, {.viewMin = {INFINITY, 0}}), Error);
+    const auto message = [&](const DebugDrawOptions& options) {
+        try {
+            world.debugDraw(draw, options);
+        } catch (const Error& error) {
+            return std::string(error.what());
+        }
+        return std::string("accepted");
+    };
+    EXPECT_EQ(message({.markLength = NAN}),
+              "debugDraw: options.markLength must be a finite number >= 0");
+    EXPECT_EQ(message({.viewMin = {INFINITY, 0}}), "debugDraw: options.viewMin must be finite");
     DebugDrawOptions options;
     options.palette.sleepingPercent = 101;
-    EXPECT_THROW(world.debugDraw(draw, options), Error);
+    EXPECT_EQ(message(options), "debugDraw: options.palette.sleepingPercent must be in [0, 100]");
+    options = {};
+    options.palette.outlinePercent = -1;
+    EXPECT_EQ(message(options), "debugDraw: options.palette.outlinePercent must be in [0, 100]");
+    // A view and a mark as large as floats go are drawing, not misuse.
+    EXPECT_EQ(
+        message({.markLength = 1e30f, .viewMin = {-1e30f, -1e30f}, .viewMax = {1e30f, 1e30f}}),
+        "accepted");
 }
 
 } // namespace

@@ -68,7 +68,9 @@ struct DebugDrawOptions {
 };
 
 /// A game's renderer, as debugDraw calls it. Points are in world units. A fill whose
-/// opacity is 0 is not filled: only the outline is drawn.
+/// opacity is 0 is not filled: only the outline is drawn. Its functions may read the world
+/// but not change it: a change throws jostle::Error ("createBody: called from a DebugDraw
+/// function ...").
 class DebugDraw {
 public:
     virtual ~DebugDraw() = default;

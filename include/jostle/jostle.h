@@ -1046,8 +1046,8 @@ jostle_debug_draw_options jostle_default_debug_draw_options(void);
 
 /// The game's renderer: its functions, each given `user`. `line` is required; each other
 /// one may be NULL, and is then drawn with lines. Points and lengths are in world units. A
-/// fill whose opacity `a` is 0 is not filled: only the outline is drawn. The functions must
-/// not change the world (they may read it).
+/// fill whose opacity `a` is 0 is not filled: only the outline is drawn. The functions may
+/// read the world, not change it: a change from inside them is misuse.
 typedef struct jostle_debug_draw {
     void (*line)(jostle_vec2 from, jostle_vec2 to, jostle_colour colour, void* user);
     /// An axis-aligned box by its centre and half extents.
@@ -1068,7 +1068,8 @@ typedef struct jostle_debug_draw {
 /// Draws the world as the engine sees it through `draw` (World::debugDraw): every body in
 /// its shape and colour, and what `options` asks for (NULL: the defaults). False on misuse
 /// (draw or draw->line NULL, options not made by jostle_default_debug_draw_options, a mark
-/// length below 0, a percentage outside [0, 100]); then nothing was drawn.
+/// length not a finite number >= 0, a view corner not finite, a percentage outside
+/// [0, 100]); then nothing was drawn.
 bool jostle_world_debug_draw(const jostle_world* world, const jostle_debug_draw* draw,
                              const jostle_debug_draw_options* options);
 

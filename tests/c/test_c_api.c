@@ -2382,12 +2382,14 @@ static void test_debug_draw(void) {
     CHECK(d.box_fill.r == 150 && d.box_fill.a == 255 && d.box_outline.r == 90, "static grey");
     CHECK(d.radius == 0.5f, "the ball's radius");
 
-    // Lines alone: the box's four sides, the triangle's three, and the default options
+    // Lines alone: the box's four sides, the triangle's three, the ball's ring of four arcs
+    // of six lines each (a circle's straight sides have no length); the default options
     // (NULL) draw no contacts.
     drawn lines = {0};
     const jostle_debug_draw only_lines = {draw_line, NULL, NULL, NULL, NULL, &lines};
     CHECK(jostle_world_debug_draw(world, &only_lines, NULL), "drawn in lines");
-    CHECK(lines.lines > 4 + 3 && lines.boxes == 0 && lines.points == 0, "everything in lines");
+    CHECK(lines.lines == 4 + 3 + 4 * 6 && lines.boxes == 0 && lines.points == 0,
+          "everything in lines");
 
     // Misuse: nothing drawn.
     drawn none = {0};

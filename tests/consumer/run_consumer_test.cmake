@@ -18,7 +18,7 @@ run(${CMAKE_COMMAND} -S ${CONSUMER_SOURCE_DIR} -B ${WORK_DIR}/build
     "-DCMAKE_EXE_LINKER_FLAGS=${CONSUMER_LINKER_FLAGS}")
 run(${CMAKE_COMMAND} --build ${WORK_DIR}/build)
 run(${WORK_DIR}/build/consumer)
-# The C++ consumer has a second program, of the level library.
-if(EXISTS ${CONSUMER_SOURCE_DIR}/level.cpp)
+# The C++ consumer's second program, of the level library, where it was installed.
+if(EXISTS ${WORK_DIR}/build/level_consumer)
   run(${WORK_DIR}/build/level_consumer)
 endif()

@@ -2,7 +2,7 @@
 # The rockspec builds with Debian's luarocks: `luarocks make` into a scratch tree, for
 # Lua 5.4 and for LuaJIT (luarocks' Lua 5.1, with LuaJIT's headers), each built from a copy
 # of the sources as a release holds them, then require("jostle") from that tree in each and
-# load the example level (.tmx: XML, through pugixml, as the machine has it).
+# load the example level (.tmj: JSON, which a rock built without pugixml reads too).
 #   run_rock_test.sh SOURCE_DIR WORK_DIR VERSION
 set -euo pipefail
 source=$1 work=$2 version=$3
@@ -28,13 +28,13 @@ for lua in 5.4 luajit; do
     luarocks --lua-version 5.1 make --tree "$tree" "$rockspec" LUA_INCDIR="$luajit_include" >/dev/null
     LUA_CPATH="$tree/lib/lua/5.1/?.so" luajit "$source/tests/packaging/drop_box.lua" "$version"
     LUA_CPATH="$tree/lib/lua/5.1/?.so" luajit "$source/tests/packaging/load_level.lua" \
-      "$source/examples/levels/level.tmx"
+      "$source/examples/levels/level.tmj"
   else
     command -v lua5.4 >/dev/null || { echo "Lua 5.4 missing: its rock is not tried"; continue; }
     luarocks --lua-version 5.4 make --tree "$tree" "$rockspec" >/dev/null
     LUA_CPATH="$tree/lib/lua/5.4/?.so" lua5.4 "$source/tests/packaging/drop_box.lua" "$version"
     LUA_CPATH="$tree/lib/lua/5.4/?.so" lua5.4 "$source/tests/packaging/load_level.lua" \
-      "$source/examples/levels/level.tmx"
+      "$source/examples/levels/level.tmj"
   fi
 done
 luarocks --lua-version 5.4 list --tree "$tree" --porcelain | grep -q "^jostle	$version-1" \

@@ -94,8 +94,10 @@ struct WorldData {
     /// until the next call of the same method, or until the world goes.
     std::vector<Vec2> positionsBuffer;
     std::vector<Vec2> velocitiesBuffer;
-    /// What world:debugDraw draws, before the Lua functions draw it.
+    /// What world:debugDraw draws, before the Lua functions draw it; `drawing` while they
+    /// do, when the world may change but not go, nor draw again into the list.
     DebugDrawList drawList;
+    bool drawing = false;
 };
 
 struct WorldHandle {

@@ -3,6 +3,7 @@
 // functions; those it lacks are drawn with its `line`, as DebugDraw draws them.
 #include "binding.hpp"
 
+#include <climits>
 #include <cmath>
 
 namespace jostle::lua {
@@ -10,9 +11,9 @@ namespace jostle::lua {
 namespace {
 
 /// A colour as Lua sees it: one whole number, 0xRRGGBBAA.
-lua_Number packed(Colour c) {
-    return static_cast<lua_Number>(std::uint32_t{c.r} << 24 | std::uint32_t{c.g} << 16 |
-                                   std::uint32_t{c.b} << 8 | std::uint32_t{c.a});
+std::uint32_t packed(Colour c) {
+    return std::uint32_t{c.r} << 24 | std::uint32_t{c.g} << 16 | std::uint32_t{c.b} << 8 |
+           std::uint32_t{c.a};
 }
 
 Colour unpacked(std::uint32_t value) {
@@ -44,8 +45,9 @@ void readPalette(lua_State* L, int table, const char* where, DebugPalette& palet
         if (fields.bits(kPaletteColours[i], value))
             palette.*kPaletteMembers[i] = unpacked(value);
     }
-    fields.whole("sleepingPercent", palette.sleepingPercent, 0, 100);
-    fields.whole("outlinePercent", palette.outlinePercent, 0, 100);
+    // Any whole number here: the library checks the range, in its words.
+    fields.whole("sleepingPercent", palette.sleepingPercent, INT_MIN, INT_MAX);
+    fields.whole("outlinePercent", palette.outlinePercent, INT_MIN, INT_MAX);
 }
 
 DebugDrawOptions readOptions(lua_State* L, int table, const char* where) {
@@ -89,38 +91,42 @@ public:
     bool failed() const { return failed_; }
 
     void line(Vec2 from, Vec2 to, Colour colour) override {
-        call(kLine, {from.x, from.y, to.x, to.y, packed(colour)});
+        call(kLine, {from.x, from.y, to.x, to.y}, {packed(colour)});
     }
     void box(Vec2 centre, Vec2 half, Colour fill, Colour outline) override {
         if (!slots_[kBox])
             return DebugDraw::box(centre, half, fill, outline);
-        call(kBox, {centre.x, centre.y, half.x, half.y, packed(fill), packed(outline)});
+        call(kBox, {centre.x, centre.y, half.x, half.y}, {packed(fill), packed(outline)});
     }
     void roundedBox(Vec2 centre, Vec2 half, float radius, Colour fill, Colour outline) override {
         if (!slots_[kRoundedBox])
             return DebugDraw::roundedBox(centre, half, radius, fill, outline);
-        call(kRoundedBox,
-             {centre.x, centre.y, half.x, half.y, radius, packed(fill), packed(outline)});
+        call(kRoundedBox, {centre.x, centre.y, half.x, half.y, radius},
+             {packed(fill), packed(outline)});
     }
     void triangle(Vec2 a, Vec2 b, Vec2 c, Colour fill, Colour outline) override {
         if (!slots_[kTriangle])
             return DebugDraw::triangle(a, b, c, fill, outline);
-        call(kTriangle, {a.x, a.y, b.x, b.y, c.x, c.y, packed(fill), packed(outline)});
+        call(kTriangle, {a.x, a.y, b.x, b.y, c.x, c.y}, {packed(fill), packed(outline)});
     }
     void point(Vec2 at, float size, Colour colour) override {
         if (!slots_[kPoint])
             return DebugDraw::point(at, size, colour);
-        call(kPoint, {at.x, at.y, size, packed(colour)});
+        call(kPoint, {at.x, at.y, size}, {packed(colour)});
     }
 
 private:
-    void call(Function function, std::initializer_list<lua_Number> arguments) {
+    /// function(numbers..., colours...): the colours as whole numbers.
+    void call(Function function, std::initializer_list<float> numbers,
+              std::initializer_list<std::uint32_t> colours) {
         if (failed_)
             return;
         lua_pushvalue(L_, slots_[function]);
-        for (const lua_Number value : arguments)
-            lua_pushnumber(L_, value);
-        failed_ = lua_pcall(L_, static_cast<int>(arguments.size()), 0, 0) != 0;
+        for (const float value : numbers)
+            lua_pushnumber(L_, static_cast<lua_Number>(value));
+        for (const std::uint32_t colour : colours)
+            pushWhole(L_, colour);
+        failed_ = lua_pcall(L_, static_cast<int>(numbers.size() + colours.size()), 0, 0) != 0;
     }
 
     lua_State* L_;
@@ -133,6 +139,8 @@ private:
 int worldDebugDraw(lua_State* L) {
     const char* where = "World:debugDraw";
     WorldData& world = checkWorld(L, 1, where);
+    if (world.drawing)
+        raise(L, where, "called from a function of world:debugDraw");
     if (lua_type(L, 2) != LUA_TTABLE)
         raise(L, where, "draw: expected a table of functions, got %s", typeName(L, 2));
     const DebugDrawOptions options = readOptions(L, 3, where);
@@ -157,7 +165,9 @@ int worldDebugDraw(lua_State* L) {
     bool failed = false;
     {
         LuaDraw draw(L, slots);
+        world.drawing = true;
         world.drawList.replay(draw);
+        world.drawing = false;
         failed = draw.failed();
     }
     if (failed)

@@ -284,6 +284,8 @@ int worldDestroy(lua_State* L) {
         return 0; // twice is harmless, as for a file
     if (handle->data->stepping)
         raise(L, where, "called from a callback during step()");
+    if (handle->data->drawing)
+        raise(L, where, "called from a function of world:debugDraw");
     requireChangeable(L, *handle->data, where);
     delete handle->data;
     handle->data = nullptr;

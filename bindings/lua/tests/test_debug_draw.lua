@@ -70,7 +70,8 @@ test("a renderer of lines alone gets every shape in lines", function()
   local world = level()
   local draw, calls = recorder({"line"})
   world:debugDraw(draw)
-  t.truthy(#calls >= 4 + 3 + 12, "the box's 4, the ramp's 3 and the ball's ring")
+  -- The box's 4 sides, the ramp's 3, the ball's ring of 4 arcs of 6 lines each.
+  t.equal(#calls, 4 + 3 + 4 * 6, "every shape in lines")
 end)
 
 test("options and the palette are read by name", function()
@@ -84,6 +85,9 @@ test("options and the palette are read by name", function()
 end)
 
 test("jostle.rgba gives a colour's parts from 0 to 1", function()
+  local draw, calls = recorder()
+  level():debugDraw(draw)
+  t.equal(string.format("%08x", calls[1][6]), "969696ff", "colours are whole numbers")
   local r, g, b, a = jostle.rgba(0xFF8000FF)
   t.equal(r, 1, "red") t.near(g, 128 / 255, 1e-9, "green") t.equal(b, 0, "blue") t.equal(a, 1, "alpha")
   t.raises({"jostle.rgba", "0xFFFFFFFF"}, jostle.rgba, -1)
@@ -99,8 +103,16 @@ test("bad arguments and a function's own error", function()
     {line = function() end}, {markLength = -1})
   t.raises({"World:debugDraw", "unknown field \"grd\"", "grid"}, world.debugDraw, world,
     {line = function() end}, {grd = true})
-  t.raises({"World:debugDraw", "options.palette.sleepingPercent"}, world.debugDraw, world,
-    {line = function() end}, {palette = {sleepingPercent = 200}})
+  t.raises({"World:debugDraw", "options.palette.sleepingPercent must be in [0, 100]"},
+    world.debugDraw, world, {line = function() end}, {palette = {sleepingPercent = 200}})
+  t.raises({"World:debugDraw", "called from a function of world:debugDraw"}, world.debugDraw,
+    world, {line = function() world:debugDraw({line = function() end}) end})
+  t.raises({"World:destroy", "called from a function of world:debugDraw"}, world.debugDraw,
+    world, {line = function() world:destroy() end})
+  t.truthy(not world:isDestroyed(), "the world is still there")
+  -- Changing the world from a function is allowed: it runs once the walk is done.
+  world:debugDraw({line = function() end, box = function() world:setGravity(0, 20) end})
+  t.equal(select(2, world:getGravity()), 20, "the world changed from a function")
   local seen = 0
   t.raises({"from the renderer"}, world.debugDraw, world,
     {line = function() end, box = function() seen = seen + 1; error("from the renderer") end})

@@ -253,7 +253,11 @@ EMSCRIPTEN_KEEPALIVE int jostle_page_debug_draw(int index, bool debug, float mar
                              .viewMax = {maxX, maxY}};
     if (!debug)
         options.palette.sleepingPercent = 100;
-    pane->world->debugDraw(list, options);
+    try {
+        pane->world->debugDraw(list, options);
+    } catch (const Error&) {
+        list.clear(); // a view no canvas shows (a pane of no size): nothing to draw
+    }
     return static_cast<int>(list.commands().size());
 }
 

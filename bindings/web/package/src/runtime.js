@@ -26,6 +26,8 @@ export class Runtime {
     // A buffer for reads of many things (bodies, events, hits), grown as needed.
     this.buffer = 0;
     this.bufferSize = 0;
+    this.drawOptions = 0; // a jostle_debug_draw_options, made on first use
+    this.drawing = false; // while debugDraw makes the game's calls
   }
 
   // --- Errors -----------------------------------------------------------------------------
@@ -116,10 +118,11 @@ export class Runtime {
   /// The address of a jostle_debug_draw_options from the game's options (each optional),
   /// kept for the next call. Names as in JavaScript (markLength), checked as to type here
   /// and as to range by the module.
-  debugDrawOptions(fn, options = {}) {
+  debugDrawOptions(fn, options) {
+    options ??= {};
     args.object(fn, "options", options);
     const m = this.m, L = this.layout.debug_draw_options, P = this.layout.debug_palette;
-    this.drawOptions ??= m._malloc(L.size);
+    if (this.drawOptions === 0) this.drawOptions = m._malloc(L.size);
     const at = this.drawOptions;
     m._jostle_default_debug_draw_options(at);
     for (const key of Object.keys(options)) {
@@ -136,7 +139,7 @@ export class Runtime {
         const palette = args.object(fn, name, value), base = at + L.palette;
         for (const colour of Object.keys(palette)) {
           const member = P[snake(colour)], field = `${name}.${colour}`;
-          if (member === undefined || colour === "size")
+          if (member === undefined || colour === "size" || colour.includes("_"))
             throw new TypeError(`${fn}: ${name} has no field "${colour}"`);
           if (colour.endsWith("Percent")) {
             m.HEAP32[(base + member) >> 2] = args.integer(fn, field, palette[colour]);

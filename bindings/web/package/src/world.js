@@ -249,9 +249,16 @@ export class World {
       functions |= 1 << i;
     });
     const world = this.live(fn), rt = this.rt, m = rt.m;
+    // The module keeps one list of calls: a function of the game's may not draw again.
+    if (rt.drawing) throw new Error(`${fn}: called from a function of debugDraw`);
     const at = m._jostle_web_debug_draw(world, rt.debugDrawOptions(fn, options), functions, rt.out);
     rt.check(fn, at !== 0);
-    drawCalls(m, at, m.HEAP32[rt.out >> 2], draw);
+    rt.drawing = true;
+    try {
+      drawCalls(m, at, m.HEAP32[rt.out >> 2], draw);
+    } finally {
+      rt.drawing = false;
+    }
   }
 
   readVectors(fn, name, out) {

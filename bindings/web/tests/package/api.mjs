@@ -365,8 +365,8 @@ await rejects("an unknown option", load({wasmBinary: bytes}), "load: no option \
   check(calls.length === 2 && near(point[2], 0, 1e-2) && near(normal[4] - normal[2], -0.25, 1e-6),
         "a contact: its point on the floor and its normal up into the ball, markLength long");
   let lines = 0;
-  world.debugDraw({line: () => lines++});
-  check(lines >= 4 + 3 + 12, "a renderer of lines alone gets every shape in lines");
+  world.debugDraw({line: () => lines++}, null);
+  check(lines === 4 + 3 + 4 * 6, "a renderer of lines alone gets every shape in lines: the box's 4, the ramp's 3, the ball's 4 arcs of 6");
   calls.length = 0;
   world.debugDraw(recorder, {viewMin: [-1, -1], viewMax: {x: 1, y: 1}, palette: {staticBody: 0x102030ff, outlinePercent: 50}});
   check(calls.length === 2 && calls[0][5] === 0x102030ff && calls[0][6] === 0x081018ff,
@@ -383,6 +383,10 @@ await rejects("an unknown option", load({wasmBinary: bytes}), "load: no option \
           "debugDraw: options has no field \"grd\" (shapes, contacts, velocities, touching, grid, markLength, viewMin, viewMax, palette)");
   refuses("an unknown colour", () => world.debugDraw({line() {}}, {palette: {floor: 1}}), "TypeError",
           "debugDraw: options.palette has no field \"floor\"");
+  refuses("a palette name in C's spelling", () => world.debugDraw({line() {}}, {palette: {static_body: 1}}), "TypeError",
+          "debugDraw: options.palette has no field \"static_body\"");
+  refuses("drawing again from a function of debugDraw", () => world.debugDraw({line() { world.debugDraw({line() {}}); }}),
+          "Error", "debugDraw: called from a function of debugDraw");
   let thrown = null;
   try {
     world.debugDraw({line() {}, box() { throw new Error("from the renderer"); }});
