@@ -15,7 +15,6 @@ namespace jostle {
 namespace {
 
 constexpr float kDt = 1.0f / 60.0f;
-constexpr Colour kNone{0, 0, 0, 0};
 
 /// Every call, as it came.
 struct Recorder : DebugDraw {

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <optional>
 
 namespace jostle::cli {
@@ -12,8 +13,9 @@ namespace jostle::cli {
 std::uint8_t CanvasDraw::indexOf(Colour colour) const {
     const Rgb wanted{colour.r, colour.g, colour.b};
     const auto found = std::find(palette_.begin(), palette_.end(), wanted);
-    return static_cast<std::uint8_t>(found != palette_.end() ? found - palette_.begin()
-                                                             : palette_.size() - 1);
+    const auto index = found != palette_.end() ? found - palette_.begin()
+                                               : static_cast<std::ptrdiff_t>(palette_.size()) - 1;
+    return static_cast<std::uint8_t>(index);
 }
 
 void CanvasDraw::line(Vec2 from, Vec2 to, Colour colour) {
@@ -44,7 +46,7 @@ void CanvasDraw::triangle(Vec2 a, Vec2 b, Vec2 c, Colour fill, Colour outline) {
     // Inside: on the same side of all three edges (or on one), whichever way round they go.
     const auto side = [&](int i, double x, double y) {
         const Vec2 from = p[i], to = p[(i + 1) % 3];
-        const double fx = from.x, fy = from.y, tx = to.x, ty = to.y;
+        const double fx = double(from.x), fy = double(from.y), tx = double(to.x), ty = double(to.y);
         return (tx - fx) * (y - fy) - (ty - fy) * (x - fx);
     };
     const auto inside = [&](double x, double y) {
