@@ -2,6 +2,7 @@
 #include "jostle/debug_draw.hpp"
 
 #include "ground.hpp"
+#include "jostle/query.hpp"
 #include "world_access.hpp"
 
 #include <algorithm>
@@ -151,7 +152,18 @@ public:
     WorldDrawing(const World& world, DebugDraw& draw, const DebugDrawOptions& options)
         : world_(world), draw_(draw), options_(options), palette_(options.palette),
           everything_(options.viewMin.x > options.viewMax.x ||
-                      options.viewMin.y > options.viewMax.y) {}
+                      options.viewMin.y > options.viewMax.y) {
+        if (everything_)
+            return;
+        // The bodies in view, found through the broadphase, in creation order: a large
+        // level costs what its view shows. (The world's range bounds every body.)
+        const auto clamped = [](Vec2 v) {
+            return Vec2{std::clamp(v.x, -kMaxMagnitude, kMaxMagnitude),
+                        std::clamp(v.y, -kMaxMagnitude, kMaxMagnitude)};
+        };
+        queryRect(world, clamped(options.viewMin), clamped(options.viewMax),
+                  {.includeSensors = true}, inView_);
+    }
 
     void grid() {
         const WorldState& state = WorldAccess::state(world_);
@@ -174,16 +186,16 @@ public:
     /// its outline.
     void shapes() {
         for (const bool sensors : {false, true})
-            for (const BodyId body : world_.bodies())
-                if (world_.isSensor(body) == sensors && inView(body))
+            for (const BodyId body : bodies())
+                if (world_.isSensor(body) == sensors)
                     shape(body);
     }
 
     void marks() {
         const Vec2 down = downOf(world_.gravity());
         const Vec2 right{down.y, -down.x};
-        for (const BodyId body : world_.bodies()) {
-            if (world_.type(body) != BodyType::Dynamic || world_.isSensor(body) || !inView(body))
+        for (const BodyId body : bodies()) {
+            if (world_.type(body) != BodyType::Dynamic || world_.isSensor(body))
                 continue;
             const Vec2 centre = world_.position(body);
             if (options_.touching) {
@@ -208,9 +220,7 @@ public:
     /// body's extent along it, so that in a pile of small boxes it stays in its box.
     void contacts() {
         std::vector<ContactInfo> found;
-        for (const BodyId body : world_.bodies()) {
-            if (!inView(body))
-                continue;
+        for (const BodyId body : bodies()) {
             world_.contacts(body, found);
             for (const ContactInfo& contact : found) {
                 if (!comesFirst(body, contact.other))
@@ -236,9 +246,8 @@ private:
         return everything_ || (box.min.x <= options_.viewMax.x && box.max.x >= options_.viewMin.x &&
                                box.min.y <= options_.viewMax.y && box.max.y >= options_.viewMin.y);
     }
-    bool inView(BodyId body) const {
-        return everything_ || inView(boxAround(world_.position(body), world_.halfExtents(body)));
-    }
+    /// Every body, or those in view.
+    std::span<const BodyId> bodies() const { return everything_ ? world_.bodies() : inView_; }
 
     void shape(BodyId body) {
         const BodyType type = world_.type(body);
@@ -287,6 +296,7 @@ private:
     const DebugDrawOptions& options_;
     const DebugPalette& palette_;
     bool everything_;
+    std::vector<BodyId> inView_;
 };
 
 } // namespace

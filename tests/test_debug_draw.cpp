@@ -323,6 +323,27 @@ TEST(DebugDraw, OnlyWhatTouchesTheViewIsDrawn) {
     EXPECT_EQ(draw.calls[0].points[0], (Vec2{0, 0}));
 }
 
+// A row of 100 tiles with gaps ("#.#.#..."): 50 boxes of one tile each. A view from x 0 to
+// 5 overlaps the tiles from 0 to 1, 2 to 3 and 4 to 5 only, and only they are drawn, with
+// a sensor in view; nothing beyond.
+TEST(DebugDraw, AViewOfAWideMapDrawsWhatItOverlaps) {
+    World world;
+    std::string row;
+    for (int i = 0; i < 50; ++i)
+        row += "#.";
+    createTileMap(world, {.x = 0, .y = 0, .tile = 1, .rows = {row}});
+    world.createBody(
+        {.type = BodyType::Static, .x = 1.5f, .y = 3, .hw = 1, .hh = 1, .sensor = true});
+    world.createBody({.type = BodyType::Static, .x = 60, .y = 3, .hw = 1, .hh = 1, .sensor = true});
+    Recorder draw;
+    world.debugDraw(draw, {.viewMin = {0, 0}, .viewMax = {5, 5}});
+    const auto boxes = draw.of(Recorder::Call::Box);
+    ASSERT_EQ(boxes.size(), 4u);
+    for (std::size_t i = 0; i < 3; ++i)
+        EXPECT_EQ(boxes[i].points[0], (Vec2{0.5f + 2.0f * float(i), 0.5f}));
+    EXPECT_EQ(boxes[3].points[0], (Vec2{1.5f, 3})); // the sensor in view, last
+}
+
 // The broadphase files a box in the cell of its level that holds its min corner
 // (docs/broadphase.md): some drawn cell holds it, and the moving box covers the body.
 TEST(DebugDraw, TheGridShowsACellHoldingEachMovingBox) {
