@@ -25,7 +25,7 @@ drawn=("$out/tutorial.gif: the tutorial's scene, physical model, 4 s")
 # itself on SDL's offscreen video driver and software renderer: no display needed.
 export SDL_VIDEODRIVER=offscreen SDL_RENDER_DRIVER=software
 if [ -x "$demo" ] && "$demo" --frames 1 >/dev/null 2>&1; then
-  for sample in 1 2 3 4 5 6 7; do
+  for sample in 1 2 3 4 5 6 7 8 9; do
     shot=$out/sample-$sample.png
     name=$("$demo" --sample "$sample" --frames 180 --screenshot "$shot" --report |
       awk '$1 == "sample" { print $2 }')

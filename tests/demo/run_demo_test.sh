@@ -12,7 +12,7 @@ if [ "${1:-}" = "--under-xvfb" ]; then
   shift
   demo=$1 checker=$2 out=$3
   failed=0
-  for sample in 1 2 3 4 5 6 7; do
+  for sample in 1 2 3 4 5 6 7 8 9; do
     # Plain, and with debug drawing on from frame 2 (its blended tints and many marks
     # drawn by the display's own renderer).
     for debug in "" debug; do
