@@ -521,8 +521,10 @@ bool jostle_body_set_snap_down(jostle_world* world, jostle_body_id body, float d
 /// The speed a character walks at, default 0: along what it stands on and relative to it,
 /// so that it keeps pace with a lift; positive to the right of gravity's "down" (+x in a
 /// y-down world); in the air, relative to the world. It holds until changed: set it from
-/// the input every frame (0 stands still). The character's velocity across gravity is
-/// this at every step; along gravity it is the physics' (set the velocity to jump).
+/// the input every frame (0 stands still). Each step the character walks at this speed
+/// across gravity unless something stops it (a wall; crates heavier than its feet's grip
+/// can push: docs/characters.md); along gravity the velocity is the physics' (set the
+/// velocity to jump).
 float jostle_body_get_walk_speed(const jostle_world* world, jostle_body_id body);
 /// Finite; misuse for a body that is not a character (a dynamic body with `character`).
 bool jostle_body_set_walk_speed(jostle_world* world, jostle_body_id body, float speed);

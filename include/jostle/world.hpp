@@ -411,8 +411,10 @@ public:
     /// The speed a character walks at (finite): along what it stands on and relative to
     /// it, so that it keeps pace with a lift; positive to the right of gravity's "down"
     /// (+x in a y-down world); in the air, relative to the world. It holds until changed:
-    /// set it from the input every frame (0 stands still). Its velocity across gravity
-    /// is this at every step; along gravity it is the physics' (set it to jump). Throws
+    /// set it from the input every frame (0 stands still). Each step it walks at this
+    /// speed across gravity unless something stops it (a wall; crates heavier than its
+    /// feet's grip can push: docs/characters.md); along gravity the velocity is the
+    /// physics' (set it to jump). Throws
     /// jostle::Error for a body that is not a character (a dynamic body with
     /// BodyDef::character): forgetting the flag would otherwise walk nothing, silently.
     float walkSpeed(BodyId id) const;

@@ -1,5 +1,7 @@
-// Reads a Tiled map (JSON, and XML through pugixml) through the installed level library
-// and steps its world; exits 0 if both give the map's one floor and its spawn point.
+// Reads a Tiled map (JSON, and XML through pugixml) through the installed level library,
+// in C++ and through its C API (whose worlds are the C API's), and makes its world; exits
+// 0 if each gives the map's one floor and its spawn point.
+#include <jostle/level.h>
 #include <jostle/level.hpp>
 #include <jostle/world.hpp>
 
@@ -41,11 +43,34 @@ bool check(const jostle::Level& level, const char* format) {
 
 } // namespace
 
+/// The C API: the map written to a file, loaded, its world made by the level.
+bool checkC() {
+    const char* path = "level_consumer_map.tmj";
+    std::FILE* file = std::fopen(path, "w");
+    if (file == nullptr || std::fputs(kJson, file) < 0 || std::fclose(file) != 0)
+        return false;
+    jostle_level* level = jostle_level_load_tiled(path);
+    if (level == nullptr) {
+        std::printf("C: %s\n", jostle_last_error());
+        return false;
+    }
+    jostle_world* world = jostle_level_create_world(level, nullptr);
+    const int spawn = jostle_level_find(level, "spawn");
+    const bool ok = world != nullptr && jostle_world_body_count(world) == 1 && spawn >= 0;
+    std::printf("C: %d body, spawn %s\n", world ? jostle_world_body_count(world) : 0,
+                spawn >= 0 ? "found" : "missing");
+    jostle_world_destroy(world);
+    jostle_level_destroy(level);
+    std::remove(path);
+    return ok;
+}
+
 int main() {
     const auto noFiles = [](const std::string& path) -> std::string {
         throw jostle::Error("no file " + path);
     };
     const bool json = check(jostle::parseTiled(kJson, "map.tmj", noFiles), "tmj");
     const bool xml = check(jostle::parseTiled(kXml, "map.tmx", noFiles), "tmx");
-    return json && xml ? 0 : 1;
+    const bool c = checkC();
+    return json && xml && c ? 0 : 1;
 }
