@@ -162,6 +162,43 @@ TEST_F(Render, YGrowsDownwardAndEachTypeHasItsColour) {
     EXPECT_EQ(png.at(6, 77), kBackground);
 }
 
+// --debug (docs/scene-format.md): a box 10 x 10 resting on a floor whose top is y = 0,
+// gravity down. The bounds, x -20 to 20 and y -10 to 20, 40 wide, get a margin of 2: a
+// view 44 x 34, 2 pixels a unit at 88 wide, 68 high, centred on (0, 5): image x = 2x + 44,
+// image y = 2y + 24. The contact point (0, 0) is pixel (44, 24): a 3 x 3 dot, and the
+// normal up into the box, 8 pixels (the box is 20 pixels tall, half of it 10). The floor's
+// side of the box (y = 0, the row 24) is marked red from x -5 to 5. Without --debug,
+// none of it: the box's fill over the normal, the floor's outline under the side.
+constexpr const char* kResting = R"({"gravity": [0, 100], "bodies": [
+    {"type": "static", "x": 0, "y": 10, "hw": 20, "hh": 10},
+    {"type": "dynamic", "x": 0, "y": -5, "hw": 5, "hh": 5}]})";
+
+TEST_F(Render, DebugAddsTheContactsAndTheSidesTouched) {
+    constexpr Rgb kContact{250, 250, 120};
+    constexpr Rgb kTouching{230, 60, 60};
+    const std::string scene = write("resting.json", kResting);
+    for (const bool debug : {true, false}) {
+        const std::string out = path(debug ? "debug.png" : "plain.png");
+        const Result result =
+            render(scene + " --out " + out + " --width 88 --steps 30" + (debug ? " --debug" : ""));
+        ASSERT_EQ(result.status, 0) << result.err;
+        const Png png = readPng(out);
+        ASSERT_EQ(png.height, 68);
+        const Rgb dot = png.at(44, 24), normal = png.at(44, 20), side = png.at(36, 24);
+        if (debug) {
+            EXPECT_EQ(dot, kContact);
+            EXPECT_EQ(png.at(43, 25), kContact);
+            EXPECT_EQ(normal, kContact);
+            EXPECT_EQ(side, kTouching);
+        } else {
+            EXPECT_NE(dot, kContact);
+            EXPECT_NE(normal, kContact);
+            EXPECT_NE(side, kTouching);
+            EXPECT_EQ(side, kStaticOutline);
+        }
+    }
+}
+
 // --legend: the key in a band under the scene (docs/scene-format.md). The lone box at 110
 // pixels wide, as above: its one entry, "static", takes 5 + 7 + 3 + 6 × 6 - 1 + 5 = 55
 // font pixels with the margins, so it is drawn twice as large, 10 pixels in from the

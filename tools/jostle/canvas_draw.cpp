@@ -59,4 +59,14 @@ void CanvasDraw::triangle(Vec2 a, Vec2 b, Vec2 c, Colour fill, Colour outline) {
                   fill.a != 0 ? std::optional(indexOf(fill)) : std::nullopt, indexOf(outline));
 }
 
+void CanvasDraw::point(Vec2 at, float, Colour colour) {
+    // A point far off the image still makes whole pixels, clipped by the canvas.
+    const Vec2 p = camera_.toImage(at);
+    const auto pixel = [](float v) {
+        return static_cast<int>(std::clamp(std::floor(v), -1e8f, 1e8f));
+    };
+    const int x = pixel(p.x), y = pixel(p.y);
+    canvas_.fill({x - 1, y - 1, x + 2, y + 2}, indexOf(colour));
+}
+
 } // namespace jostle::cli

@@ -24,6 +24,8 @@ public:
     void box(Vec2 centre, Vec2 half, Colour fill, Colour outline) override;
     void roundedBox(Vec2 centre, Vec2 half, float radius, Colour fill, Colour outline) override;
     void triangle(Vec2 a, Vec2 b, Vec2 c, Colour fill, Colour outline) override;
+    /// A dot of 3 × 3 pixels, whatever its size.
+    void point(Vec2 at, float size, Colour colour) override;
 
     /// The palette's entry of `colour` (opacity aside); the last entry for one it lacks.
     std::uint8_t indexOf(Colour colour) const;

@@ -2,7 +2,7 @@
 //
 //     jostle run SCENE --steps N [--trace FILE|-] [--every K] [--solver MODEL]
 //     jostle render SCENE --out FILE.gif|FILE.png [--steps N] [--width W] [--height H]
-//                   [--every K] [--solver MODEL] [--legend]
+//                   [--every K] [--solver MODEL] [--legend] [--debug]
 //     jostle synctest SCENE [--steps N] [--rollback K] [--workers W] [--solver MODEL]
 //
 // Exit status: 0 when all went well; 2 for bad input (options, scene file, a value the
@@ -292,6 +292,9 @@ int main(int argc, char** argv) {
     renderCommand->add_flag("--legend", renderOptions.legend,
                             "Draw a key to the colours in a band under the scene (the image "
                             "grows by its height)");
+    renderCommand->add_flag("--debug", renderOptions.debug,
+                            "Draw the debug marks too: contacts, velocities, the sides "
+                            "touched, the broadphase's cells");
 
     jostle::cli::SyncTestOptions syncOptions;
     CLI::App* syncCommand = app.add_subcommand(

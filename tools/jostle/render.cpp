@@ -73,8 +73,9 @@ std::vector<Rgb> makePalette() {
         }
     palette.push_back(kLegendLine); // 13
     palette.push_back(kLegendText); // 14
-    palette.push_back(rgb(colours.bulletOutline));
-    palette.push_back(rgb(colours.oneWayFace));
+    for (Colour colour : {colours.bulletOutline, colours.oneWayFace, colours.contact,
+                          colours.velocity, colours.touching, colours.gridCell, colours.gridBox})
+        palette.push_back(rgb(colour));
     return palette;
 }
 
@@ -147,11 +148,17 @@ void imageSize(const RenderOptions& options, const View& view, int& width, int& 
         width = fittedSide(height, view.height(), view.width());
 }
 
-/// The world's shapes as the library draws them (World::debugDraw), in this palette.
-void draw(Canvas& canvas, const Camera& camera, const World& world, std::span<const Rgb> palette) {
+/// The world's shapes as the library draws them (World::debugDraw), in this palette; with
+/// `debug`, its marks too.
+void draw(Canvas& canvas, const Camera& camera, const World& world, std::span<const Rgb> palette,
+          bool debug) {
     canvas.clear(0);
     CanvasDraw drawing(canvas, camera, palette);
-    world.debugDraw(drawing, {.markLength = static_cast<float>(kMarkPixels / camera.scale())});
+    world.debugDraw(drawing, {.contacts = debug,
+                              .velocities = debug,
+                              .touching = debug,
+                              .grid = debug,
+                              .markLength = static_cast<float>(kMarkPixels / camera.scale())});
 }
 
 /// A GIF frame's delay: the simulated time between frames, in the centiseconds GIF counts
@@ -194,7 +201,7 @@ int render(const RenderOptions& options) {
     Canvas canvas(width, height);
     const std::vector<Rgb> palette = makePalette();
     const auto drawFrame = [&] {
-        draw(canvas, camera, world, palette);
+        draw(canvas, camera, world, palette, options.debug);
         legend.draw(canvas, sceneHeight, kLegendColours);
     };
 

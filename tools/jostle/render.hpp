@@ -24,6 +24,9 @@ struct RenderOptions {
     /// --legend: a key to the colours in a band under the scene (legend.hpp), which makes
     /// the image taller by the band's height
     bool legend = false;
+    /// --debug: the debug marks of World::debugDraw too, as the demo's Tab shows them:
+    /// contacts, velocities, the sides touched, the broadphase's cells
+    bool debug = false;
 };
 
 /// Runs the command; returns the exit status (errors.hpp), having printed any error.
