@@ -25,6 +25,7 @@ render_pictures() {
   ./build/jostle render examples/scenes/slopes.json --legend --out docs/slopes.gif --steps 300 --every 3
   ./build/jostle render examples/scenes/pyramid.json --legend --out docs/pyramid.png --steps 240
   ./build/jostle render examples/levels/level.tmx --legend --out docs/level.png --steps 120
+  ./build/jostle render examples/levels/level.tmx --debug --out docs/level-debug.png --steps 120
 }
 
 # The demo without a display: SDL's offscreen video driver and its software renderer, so
