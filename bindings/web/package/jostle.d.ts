@@ -539,7 +539,7 @@ export interface DebugDraw {
   roundedBox?(x: number, y: number, hw: number, hh: number, radius: number, fill: Colour, outline: Colour): void;
   /** A triangle (a ramp), its corners in order around it. */
   triangle?(x1: number, y1: number, x2: number, y2: number, x3: number, y3: number, fill: Colour, outline: Colour): void;
-  /** A point (a contact), `size` wide. */
+  /** A point (a contact), `size` wide: a quarter of markLength. */
   point?(x: number, y: number, size: number, colour: Colour): void;
 }
 
@@ -578,8 +578,8 @@ export interface DebugDrawOptions {
   /** The longest a normal, a segment's tick or a point's cross is, in world units (0.25). */
   markLength?: number;
   /** Only what touches this box is drawn (a view); min > max on either axis draws everything. */
-  viewMin?: Vec2 | [number, number];
-  viewMax?: Vec2 | [number, number];
+  viewMin?: VecLike;
+  viewMax?: VecLike;
   palette?: DebugPalette;
 }
 

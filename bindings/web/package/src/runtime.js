@@ -127,6 +127,7 @@ export class Runtime {
     m._jostle_default_debug_draw_options(at);
     for (const key of Object.keys(options)) {
       const value = options[key], name = `options.${key}`;
+      if (value === undefined) continue; // as if left out: its default
       if (["shapes", "contacts", "velocities", "touching", "grid"].includes(key)) {
         m.HEAPU8[at + L[key]] = args.boolean(fn, name, value) ? 1 : 0;
       } else if (key === "markLength") {
@@ -138,6 +139,7 @@ export class Runtime {
       } else if (key === "palette") {
         const palette = args.object(fn, name, value), base = at + L.palette;
         for (const colour of Object.keys(palette)) {
+          if (palette[colour] === undefined) continue;
           const member = P[snake(colour)], field = `${name}.${colour}`;
           if (member === undefined || colour === "size" || colour.includes("_"))
             throw new TypeError(`${fn}: ${name} has no field "${colour}"`);

@@ -371,6 +371,9 @@ await rejects("an unknown option", load({wasmBinary: bytes}), "load: no option \
   world.debugDraw(recorder, {viewMin: [-1, -1], viewMax: {x: 1, y: 1}, palette: {staticBody: 0x102030ff, outlinePercent: 50}});
   check(calls.length === 2 && calls[0][5] === 0x102030ff && calls[0][6] === 0x081018ff,
         "the view leaves the ramp out; the palette's colour and percentage");
+  calls.length = 0;
+  world.debugDraw(recorder, {contacts: undefined, markLength: undefined, palette: {staticBody: undefined}});
+  check(calls.length === 3 && calls[0][5] === 0x969696ff, "options left undefined are their defaults");
   check(cssColour(0xff8000ff) === "#ff8000ff" && cssColour(0x10) === "#00000010", "cssColour: #rrggbbaa");
   refuses("no line", () => world.debugDraw({}), "TypeError", "debugDraw: draw.line must be a function, got undefined");
   refuses("a box that is not a function", () => world.debugDraw({line() {}, box: 3}), "TypeError",

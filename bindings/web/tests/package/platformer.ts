@@ -2,7 +2,7 @@
 // character walks, picks up a coin (a sensor), jumps through a one-way platform from
 // below and lands on it, walks off onto the floor and onto a lift, which carries it up.
 // play() returns what happened; the runners (esm.mjs, cjs.cjs) check it.
-import type { Body, Jostle, World } from "jostle";
+import type { Body, DebugDraw, Jostle, World } from "jostle";
 
 export interface Played {
   coinFrame: number; // the frame the coin's sensor event came, -1 if never
@@ -54,6 +54,13 @@ export function play(jostle: Jostle): Played {
   played.rise = Math.fround(before - hero.position.y); // in float, as C++ subtracts
   played.liftSpeedUnderFeet = hero.ground?.velocity.y ?? 0;
   played.stateHash = world.stateHash();
+  // The debug overlay a game draws over its sprites: one shape a body, all in this view
+  // (a readonly tuple and an object for its corners, an option left undefined).
+  let shapes = 0;
+  const overlay: DebugDraw = { line() {}, box() { shapes++; } };
+  world.debugDraw(overlay, { viewMin: [-1000, -1000] as const, viewMax: { x: 1000, y: 1000 },
+                             markLength: undefined });
+  if (shapes !== world.bodyCount) throw new Error(`debugDraw: ${shapes} shapes, ${world.bodyCount} bodies`);
   world.destroy();
   return played;
 }
