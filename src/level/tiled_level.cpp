@@ -87,6 +87,9 @@ public:
     Builder(const Map& map, const std::string& file) : map_(map), file_(file) {}
 
     Level build() {
+        if (map_.orientation.empty())
+            fail(file_, "the map has no orientation: not a Tiled map? (jostle reads "
+                        "orthogonal maps)");
         if (map_.orientation != "orthogonal")
             fail(file_,
                  quoted(map_.orientation) + " maps are not read: jostle reads orthogonal maps");

@@ -266,6 +266,10 @@ TEST(Tiled, ProblemsNameTheFileTheLayerAndTheTile) {
     EXPECT_EQ(
         errorOf(levelWith("\"orientation\": \"orthogonal\"", "\"orientation\": \"isometric\"")),
         "level.tmj: \"isometric\" maps are not read: jostle reads orthogonal maps");
+    // Something that is not a map at all (an empty object) says so, not "" maps.
+    EXPECT_EQ(errorOf(levelWith("\"orientation\": \"orthogonal\",", "")),
+              "level.tmj: the map has no orientation: not a Tiled map? (jostle reads orthogonal "
+              "maps)");
     EXPECT_EQ(errorOf(levelWith("\"tileheight\": 16,\n \"type\": \"map\"",
                                 "\"tileheight\": 8,\n \"type\": \"map\"")),
               "level.tmj: tiles must be square, got 16 x 8");
