@@ -46,7 +46,7 @@ void drawPlate(SDL_Renderer* renderer, int x, int y, int width) {
 /// broadphase picture shows, with its main level's cell size.
 void drawLegend(SDL_Renderer* renderer, const SDL_Rect& screen, const GridPicture& grid) {
     const DebugPalette palette;
-    const SDL_Color dimmed = scaled(sdl(palette.dynamicBody), palette.sleepingPercent);
+    const SDL_Color dimmed = sdl(palette.fillOf(BodyType::Dynamic, true));
     const std::pair<SDL_Color, const char*> words[] = {
         {sdl(palette.contact), "contacts  "},     {sdl(palette.touching), "sides touched  "},
         {sdl(palette.velocity), "velocity  "},    {dimmed, "asleep  "},
@@ -87,18 +87,11 @@ void drawPane(SDL_Renderer* renderer, const Pane& pane, const View& view, bool d
     const SDL_Rect below{screen.x, screen.y + kTitleHeight, screen.w, screen.h - kTitleHeight};
     SDL_RenderSetClipRect(renderer, &below);
 
-    // The world as the library draws it; with debug drawing off, sleeping bodies keep
-    // their colour.
+    // The world as the library draws it (paneDrawOptions: the page draws it alike).
     const World& world = *pane.world;
-    DebugDrawOptions options{.contacts = debug,
-                             .velocities = debug,
-                             .touching = debug,
-                             .grid = debug,
-                             .markLength = kMarkPixels / view.scale(),
-                             .viewMin = view.toWorld(below.x, below.y),
-                             .viewMax = view.toWorld(below.x + below.w, below.y + below.h)};
-    if (!debug)
-        options.palette.sleepingPercent = 100;
+    const DebugDrawOptions options = paneDrawOptions(
+        debug, kMarkPixels / view.scale(),
+        {view.toWorld(below.x, below.y), view.toWorld(below.x + below.w, below.y + below.h)});
     SdlDraw draw(renderer, view);
     world.debugDraw(draw, options);
     const GridPicture grid = debug ? pictureGrid(world, dt) : GridPicture{};

@@ -41,4 +41,17 @@ Pane paneFromScene(const Scene& scene, std::string title, float headroom) {
     return pane;
 }
 
+DebugDrawOptions paneDrawOptions(bool debug, float markLength, WorldBox view) {
+    DebugDrawOptions options{.contacts = debug,
+                             .velocities = debug,
+                             .touching = debug,
+                             .grid = debug,
+                             .markLength = markLength,
+                             .viewMin = view.min,
+                             .viewMax = view.max};
+    if (!debug)
+        options.palette.sleepingPercent = 100;
+    return options;
+}
+
 } // namespace jostle::demo

@@ -79,4 +79,9 @@ Pane paneWithWorld(const WorldDef& def);
 /// A pane holding a new world made from `scene`, showing all its bodies.
 Pane paneFromScene(const Scene& scene, std::string title, float headroom);
 
+/// How a pane's world is drawn (World::debugDraw), in the window and on the web page: with
+/// `debug`, its contacts, velocities, sides touched and broadphase cells too, and sleeping
+/// bodies dimmed; marks `markLength` long at most; what touches `view` only.
+DebugDrawOptions paneDrawOptions(bool debug, float markLength, WorldBox view);
+
 } // namespace jostle::demo

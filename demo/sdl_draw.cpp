@@ -1,10 +1,9 @@
 // Debug drawing with SDL: see sdl_draw.hpp.
 #include "sdl_draw.hpp"
 
+#include "shared/drawn_shape.hpp"
+
 #include <algorithm>
-#include <array>
-#include <cmath>
-#include <numbers>
 #include <vector>
 
 namespace jostle::demo {
@@ -44,16 +43,10 @@ void SdlDraw::roundedBox(Vec2 centre, Vec2 half, float radius, Colour fill, Colo
     // Arcs of a point every 2 pixels or so, 3 to 24 points a quarter.
     const int arcPoints =
         std::clamp(static_cast<int>(radius * view_.scale() / 2.0f) + 2, 3, kMostArcPoints);
-    const Vec2 core = half - Vec2{radius, radius};
-    const std::array<Vec2, 4> corners{
-        {{core.x, core.y}, {-core.x, core.y}, {-core.x, -core.y}, {core.x, -core.y}}};
+    const shared::DrawnShape shape{shared::DrawnKind::Rounded, centre, half, radius, {}};
     std::vector<SDL_FPoint> points;
-    for (int corner = 0; corner < 4; ++corner)
-        for (int i = 0; i < arcPoints; ++i) {
-            const double angle = (corner + double(i) / (arcPoints - 1)) * std::numbers::pi / 2.0;
-            const Vec2 offset{float(std::cos(angle)) * radius, float(std::sin(angle)) * radius};
-            points.push_back(view_.toScreenExact(centre + corners[std::size_t(corner)] + offset));
-        }
+    for (const Vec2 point : shape.perimeter(arcPoints))
+        points.push_back(view_.toScreenExact(point));
     points.push_back(points.front());
     if (fill.a != 0) {
         const SDL_FPoint middle = view_.toScreenExact(centre);

@@ -3,6 +3,7 @@
 
 #include "ground.hpp"
 #include "jostle/query.hpp"
+#include "shapes.hpp"
 #include "world_access.hpp"
 
 #include <algorithm>
@@ -100,11 +101,9 @@ void DebugDrawList::replay(DebugDraw& draw) const {
     }
 }
 
-// --- What the world draws -----------------------------------------------------------------
+// --- The palette's rule --------------------------------------------------------------------
 
 namespace {
-
-constexpr float kVelocitySeconds = 0.1f;
 
 Colour scaled(Colour colour, int percent) {
     const auto channel = [percent](std::uint8_t value) {
@@ -113,17 +112,24 @@ Colour scaled(Colour colour, int percent) {
     return {channel(colour.r), channel(colour.g), channel(colour.b), colour.a};
 }
 
-Colour typeColour(const DebugPalette& palette, BodyType type) {
-    switch (type) {
-    case BodyType::Static:
-        return palette.staticBody;
-    case BodyType::Kinematic:
-        return palette.kinematicBody;
-    case BodyType::Dynamic:
-        break;
-    }
-    return palette.dynamicBody;
+} // namespace
+
+Colour DebugPalette::fillOf(BodyType type, bool asleep) const {
+    const Colour colour = type == BodyType::Static      ? staticBody
+                          : type == BodyType::Kinematic ? kinematicBody
+                                                        : dynamicBody;
+    return asleep ? scaled(colour, sleepingPercent) : colour;
 }
+
+Colour DebugPalette::outlineOf(Colour fill) const {
+    return scaled(fill, outlinePercent);
+}
+
+// --- What the world draws -----------------------------------------------------------------
+
+namespace {
+
+constexpr float kVelocitySeconds = 0.1f;
 
 /// The unit axis nearest to `direction` (x on a tie), as the box face it points out of.
 Vec2 nearestAxis(Vec2 direction) {
@@ -252,28 +258,27 @@ private:
     void shape(BodyId body) {
         const BodyType type = world_.type(body);
         const bool sensor = world_.isSensor(body);
-        Colour fill = typeColour(palette_, type);
-        if (type != BodyType::Static && !world_.isAwake(body))
-            fill = scaled(fill, palette_.sleepingPercent);
-        Colour outline =
-            world_.isBullet(body) ? palette_.bulletOutline : scaled(fill, palette_.outlinePercent);
+        Colour fill = palette_.fillOf(type, type != BodyType::Static && !world_.isAwake(body));
+        Colour outline = world_.isBullet(body) ? palette_.bulletOutline : palette_.outlineOf(fill);
         if (sensor) {
             outline = fill;
             fill.a = 0;
         }
         const Vec2 centre = world_.position(body);
         const Vec2 half = world_.halfExtents(body);
-        const BodyDef def = world_.bodyDef(body);
-        if (def.slope != Vec2{}) {
-            const std::array<Vec2, 3> corners = rampCorners(centre, half, def.slope);
-            if (def.segment)
-                segment(corners[0], corners[1], half, def.slope, sensor ? outline : fill);
+        // The shape as the world keeps it (BodyDef::radius, slope and segment).
+        const Shape& shape = WorldAccess::state(world_).shapes[body.index];
+        if (shape.slope != Vec2{}) {
+            const std::array<Vec2, 3> corners = rampCorners(centre, half, shape.slope);
+            if (shape.segment)
+                segment(corners[0], corners[1], slopeNormal(half, shape.slope),
+                        sensor ? outline : fill);
             else
                 draw_.triangle(corners[0], corners[1], corners[2], fill, outline);
             return;
         }
-        if (def.radius > 0.0f)
-            draw_.roundedBox(centre, half, def.radius, fill, outline);
+        if (shape.radius > 0.0f)
+            draw_.roundedBox(centre, half, shape.radius, fill, outline);
         else
             draw_.box(centre, half, fill, outline);
         if (world_.oneWay(body) != Vec2{})
@@ -282,10 +287,8 @@ private:
 
     /// A segment, with a tick from its middle towards the side it blocks: a sixth of its
     /// length, markLength at most.
-    void segment(Vec2 a, Vec2 b, Vec2 half, Vec2 slope, Colour colour) {
+    void segment(Vec2 a, Vec2 b, Vec2 normal, Colour colour) {
         draw_.line(a, b, colour);
-        const Vec2 n{slope.x * half.y, slope.y * half.x};
-        const Vec2 normal = n * (1.0f / length(n));
         const Vec2 middle = (a + b) * 0.5f;
         draw_.line(middle, middle + normal * std::min(options_.markLength, length(b - a) / 6.0f),
                    colour);

@@ -15,6 +15,7 @@
 // camera maps them to its screen as it maps its sprites.
 #pragma once
 
+#include "jostle/body.hpp"
 #include "jostle/math.hpp"
 
 #include <cstdint>
@@ -47,6 +48,12 @@ struct DebugPalette {
     Colour touching{230, 60, 60};  ///< the sides a dynamic body touched
     Colour gridCell{50, 110, 140}; ///< the broadphase's cells that hold boxes
     Colour gridBox{110, 220, 250}; ///< the moving bodies' boxes as the broadphase has them
+
+    /// A body's fill: its type's colour, scaled by sleepingPercent (rounded down) while it
+    /// sleeps. A sensor is drawn with this as its outline and a fill of opacity 0.
+    Colour fillOf(BodyType type, bool asleep) const;
+    /// The outline of a body filled with `fill`: scaled by outlinePercent (rounded down).
+    Colour outlineOf(Colour fill) const;
 };
 
 /// What debugDraw draws. Bodies are drawn in their shapes: sensors outlined only and

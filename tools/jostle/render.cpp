@@ -55,21 +55,14 @@ Rgb rgb(Colour c) {
     return {c.r, c.g, c.b};
 }
 
-Colour scaled(Colour colour, int percent) {
-    const auto channel = [percent](std::uint8_t value) {
-        return static_cast<std::uint8_t>(value * percent / 100);
-    };
-    return {channel(colour.r), channel(colour.g), channel(colour.b), colour.a};
-}
-
 std::vector<Rgb> makePalette() {
     const DebugPalette colours;
     std::vector<Rgb> palette{kBackground};
-    for (Colour colour : {colours.staticBody, colours.kinematicBody, colours.dynamicBody})
-        for (int percent : {100, colours.sleepingPercent}) {
-            const Colour fill = scaled(colour, percent);
+    for (BodyType type : {BodyType::Static, BodyType::Kinematic, BodyType::Dynamic})
+        for (bool asleep : {false, true}) {
+            const Colour fill = colours.fillOf(type, asleep);
             palette.push_back(rgb(fill));
-            palette.push_back(rgb(scaled(fill, colours.outlinePercent)));
+            palette.push_back(rgb(colours.outlineOf(fill)));
         }
     palette.push_back(kLegendLine); // 13
     palette.push_back(kLegendText); // 14

@@ -5,7 +5,7 @@
 //
 //     const {jostle, page} = await loadPage();   // jostle: the package's Jostle
 import {load} from "../package/src/index.js";
-import {drawCalls} from "../package/src/world.js";
+import {colourAt, drawCalls} from "../package/src/world.js";
 
 /// The package over the page's module (jostle-web.wasm, beside the bundle), and its samples.
 export async function loadPage() {
@@ -77,8 +77,7 @@ export class JostlePage {
     for (const name of Object.keys(L)) {
       if (name === "size") continue;
       const key = name.replace(/_(.)/g, (_, c) => c.toUpperCase()), p = at + L[name];
-      palette[key] = name.endsWith("percent") ? m.HEAP32[p >> 2]
-        : ((m.HEAPU8[p] << 24) | (m.HEAPU8[p + 1] << 16) | (m.HEAPU8[p + 2] << 8) | m.HEAPU8[p + 3]) >>> 0;
+      palette[key] = name.endsWith("percent") ? m.HEAP32[p >> 2] : colourAt(m.HEAPU8, p);
     }
     return palette;
   }

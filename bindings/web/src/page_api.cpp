@@ -244,15 +244,8 @@ EMSCRIPTEN_KEEPALIVE int jostle_page_debug_draw(int index, bool debug, float mar
     list.clear();
     if (pane == nullptr)
         return 0;
-    DebugDrawOptions options{.contacts = debug,
-                             .velocities = debug,
-                             .touching = debug,
-                             .grid = debug,
-                             .markLength = markLength,
-                             .viewMin = {minX, minY},
-                             .viewMax = {maxX, maxY}};
-    if (!debug)
-        options.palette.sleepingPercent = 100;
+    const DebugDrawOptions options =
+        demo::paneDrawOptions(debug, markLength, {{minX, minY}, {maxX, maxY}});
     try {
         pane->world->debugDraw(list, options);
     } catch (const Error&) {

@@ -12,7 +12,7 @@ const FRICTION_MIXES = ["min", "geometricMean"];
 const DRAWN = ["box", "roundedBox", "triangle", "point"];
 
 /// A colour's bytes r, g, b, a at `at` as 0xRRGGBBAA.
-const colourAt = (bytes, at) =>
+export const colourAt = (bytes, at) =>
   ((bytes[at] << 24) | (bytes[at + 1] << 16) | (bytes[at + 2] << 8) | bytes[at + 3]) >>> 0;
 
 /// Makes `count` calls of a DebugDrawList at `at` (jostle::DebugDrawList::Command, nine
