@@ -157,7 +157,8 @@ private:
 };
 
 TaskRunner::TaskRunner(const TaskSystem& system)
-    : system_(system), workers_(std::uint32_t(system.workers < 1 ? 1 : system.workers)) {
+    : system_(system), workers_(std::uint32_t(system.workers < 1 ? 1 : system.workers)),
+      sharing_(workers_ > 1) {
     if (workers_ > 1 && system_.enqueueTask == nullptr)
         pool_ = std::make_unique<ThreadPool>(workers_ - 1);
 }

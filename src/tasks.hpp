@@ -5,6 +5,7 @@
 #pragma once
 
 #include "jostle/tasks.hpp"
+#include "sharing_choice.hpp"
 
 #include <atomic>
 #include <cstdint>
@@ -66,6 +67,19 @@ public:
 
     std::uint32_t workers() const { return workers_; }
 
+    /// Whether this step hands its blocks to the workers. With jostle's own threads, the
+    /// way measured faster (SharingChoice); always with a game's job system, or blocks cut
+    /// for testing; never with one worker.
+    bool sharing() const { return sharing_; }
+    /// Around each step: chooses whether it shares, then records how long it took.
+    void beginStep() {
+        sharing_ = workers_ > 1 && (!pool_ || testBlock_ != 0 || choice_.shareNext());
+    }
+    void endStep(float ms) {
+        if (workers_ > 1)
+            choice_.record(sharing_, ms);
+    }
+
     /// Makes every loop use blocks of `items` (0: each loop's own size), so that the tests
     /// cut small worlds into many blocks: results must not change.
     void setBlockSizeForTesting(std::uint32_t items) { testBlock_ = items; }
@@ -95,6 +109,8 @@ private:
     TaskSystem system_;
     std::uint32_t workers_;
     std::uint32_t testBlock_ = 0;
+    bool sharing_ = false;
+    SharingChoice choice_;
     std::unique_ptr<ThreadPool> pool_;
     /// For a game's job system: which blocks of the task under way have been taken.
     std::unique_ptr<std::atomic<std::uint8_t>[]> claimed_;
@@ -113,7 +129,7 @@ void TaskRunner::forEachBlock(std::uint32_t count, std::uint32_t block, Run&& ru
         const std::uint32_t begin = b * block;
         run(Block{b, begin, count - begin < block ? count : begin + block});
     };
-    if (workers_ == 1 || blocks == 1) {
+    if (!sharing_ || blocks == 1) {
         for (std::uint32_t b = 0; b < blocks; ++b)
             runBlock(b);
         return;

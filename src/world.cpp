@@ -172,6 +172,7 @@ void World::step(float dt) {
         fail("step", "dt must be in [1e-9, 1e9] (math.hpp)");
 
     StepScope scope(w);
+    w.tasks->beginStep();
     w.profile = {};
     w.pairsLeftOut = 0; // the physical model's broadphase counts them
     // A sleeping body keeps the separation of its last awake step: what held it up
@@ -192,6 +193,7 @@ void World::step(float dt) {
     }
     keepInsideTheWorld(w);
     w.profile.step = stopwatch.lap();
+    w.tasks->endStep(w.profile.step);
     if (std::optional<std::string> broken = w.tasks->takeBrokenContract())
         fail("step", *broken);
 }

@@ -2,6 +2,7 @@
 // a game's job system and to its own threads. That the results never change is
 // test_determinism.cpp's (the Threads tests).
 #include "jostle/world.hpp"
+#include "sharing_choice.hpp"
 
 #include <gtest/gtest.h>
 
@@ -11,6 +12,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cstdint>
+#include <cstring>
 #include <fstream>
 #include <string>
 #include <thread>
@@ -107,6 +109,95 @@ TEST(TaskSystem, WorldsWithThreadsComeAndGo) {
     }
 }
 
+std::vector<Vec2> positionsOf(const World& world) {
+    std::vector<Vec2> out(world.bodyCount());
+    world.readPositions(out);
+    return out;
+}
+
+// --- Whether jostle's own threads pay (issue 32) ---------------------------------------------
+
+/// The ways SharingChoice picks for `steps` steps that take `shared` and `alone` ms.
+std::vector<bool> waysChosen(SharingChoice& choice, int steps, float shared, float alone) {
+    std::vector<bool> ways;
+    for (int k = 0; k < steps; ++k) {
+        const bool share = choice.shareNext();
+        ways.push_back(share);
+        choice.record(share, share ? shared : alone);
+    }
+    return ways;
+}
+
+/// How many of `ways`, from `from` on, did not go the way `faster`.
+int otherWay(const std::vector<bool>& ways, bool faster, std::size_t from = 0) {
+    return int(std::count(ways.begin() + std::ptrdiff_t(from), ways.end(), !faster));
+}
+
+/// The retries in `steps` steps: one in each kRetryEvery, the first taking at most one.
+int retriesIn(std::size_t steps) {
+    return int((steps + SharingChoice::kRetryEvery - 1) / SharingChoice::kRetryEvery);
+}
+
+TEST(SharingChoice, TheFirstStepsTakeTurnsSharedFirst) {
+    SharingChoice choice;
+    const std::vector<bool> ways = waysChosen(choice, SharingChoice::kFirstTurns + 1, 1, 1);
+    for (std::size_t k = 0; k < ways.size(); ++k)
+        EXPECT_EQ(ways[k], k % 2 == 0) << "step " << k;
+}
+
+TEST(SharingChoice, SharesWhenSharingIsFasterButForOneStepInEachRetry) {
+    SharingChoice choice;
+    const std::vector<bool> ways = waysChosen(choice, 20 * SharingChoice::kRetryEvery, 1.0f, 1.6f);
+    const std::size_t after = SharingChoice::kFirstTurns + 1;
+    EXPECT_GE(otherWay(ways, true, after), retriesIn(ways.size() - after) - 1);
+    EXPECT_LE(otherWay(ways, true, after), retriesIn(ways.size() - after));
+}
+
+TEST(SharingChoice, StepsAloneWhenThatIsFasterButForOneStepInEachRetry) {
+    SharingChoice choice;
+    const std::vector<bool> ways = waysChosen(choice, 20 * SharingChoice::kRetryEvery, 1.2f, 1.0f);
+    const std::size_t after = SharingChoice::kFirstTurns + 1;
+    EXPECT_GE(otherWay(ways, false, after), retriesIn(ways.size() - after) - 1);
+    EXPECT_LE(otherWay(ways, false, after), retriesIn(ways.size() - after));
+}
+
+// The other core gets busy (another program): sharing, which waits for it at every stage,
+// becomes slower than stepping alone, and the choice follows within a few retries; and
+// back when the core is free again.
+TEST(SharingChoice, FollowsTheFasterWayWhenTheTimesChange) {
+    SharingChoice choice;
+    waysChosen(choice, 100, 1.0f, 1.6f);
+    const std::size_t steps = 8 * SharingChoice::kRetryEvery, half = steps / 2;
+    const std::vector<bool> busy = waysChosen(choice, int(steps), 2.5f, 1.6f);
+    EXPECT_LE(otherWay(busy, false, half), retriesIn(half));
+    const std::vector<bool> free = waysChosen(choice, int(steps), 1.0f, 1.6f);
+    EXPECT_LE(otherWay(free, true, half), retriesIn(half));
+}
+
+// A world's first step grows its buffers and is slow whichever way it goes: it is not
+// held against sharing.
+TEST(SharingChoice, TheFirstStepIsNotCounted) {
+    SharingChoice choice;
+    choice.record(choice.shareNext(), 500.0f);
+    const std::vector<bool> ways = waysChosen(choice, 4 * SharingChoice::kRetryEvery, 1.0f, 1.6f);
+    const std::size_t after = SharingChoice::kFirstTurns;
+    EXPECT_LE(otherWay(ways, true, after), retriesIn(ways.size() - after));
+}
+
+// A world on its own two threads, its steps taking turns (the first ones do) and then
+// going the way measured faster, moves its bodies exactly as a world on one.
+TEST(SharingChoice, EitherWayEachStepGivesTheSameBits) {
+    World one = crowdOf(6000, {.workers = 1});
+    World two = crowdOf(6000, {.workers = 2});
+    for (int step = 0; step < 2 * int(SharingChoice::kFirstTurns); ++step) {
+        one.step(1.0f / 60.0f);
+        two.step(1.0f / 60.0f);
+    }
+    const std::vector<Vec2> a = positionsOf(one), b = positionsOf(two);
+    ASSERT_EQ(a.size(), b.size());
+    EXPECT_EQ(std::memcmp(a.data(), b.data(), a.size() * sizeof(Vec2)), 0);
+}
+
 // --- Job systems that break the contract (issue 28) ----------------------------------------
 
 /// A job system that breaks the contract of jostle/tasks.hpp in one way, on the calling
@@ -154,12 +245,6 @@ struct BrokenJobs {
     }
     static void finish(void*, void*) {}
 };
-
-std::vector<Vec2> positionsOf(const World& world) {
-    std::vector<Vec2> out(world.bodyCount());
-    world.readPositions(out);
-    return out;
-}
 
 // A job system that runs a range twice, runs one out of bounds, or never runs some: the
 // step is done all the same, each block once (the same bits as a good job system gives),

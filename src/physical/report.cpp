@@ -93,8 +93,8 @@ void reportEvents(StepContext& step) {
     const std::uint32_t blocks = w.tasks->blocksOf(count, kContactsPerReportBlock);
     scratch.touches.reset(blocks);
     scratch.crushCandidates.reset(blocks);
-    // One worker runs the blocks in order, on this thread: what they find is listed at once.
-    const bool inOrder = w.tasks->workers() == 1;
+    // Blocks not shared run in order, on this thread: what they find is listed at once.
+    const bool inOrder = !w.tasks->sharing();
     w.tasks->forEachBlock(count, kContactsPerReportBlock, [&](Block block) {
         std::vector<FoundTouch>& touches = scratch.touches[block.index];
         for (std::uint32_t k = block.begin; k < block.end; ++k) {

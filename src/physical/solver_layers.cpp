@@ -12,7 +12,7 @@ void layerContacts(StepContext& step) {
     layers.active = false;
     const auto count = std::uint32_t(step.contacts.size());
     const std::uint32_t block = step.world.tasks->blockSize(kContactsPerBlock);
-    if (step.world.tasks->workers() == 1 || count < 2 * block)
+    if (!step.world.tasks->sharing() || count < 2 * block)
         return;
     // Each contact's layer, kept in `order` for now; `next` holds each body's next layer.
     layers.next.assign(step.bodies.size(), 0);
