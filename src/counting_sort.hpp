@@ -1,9 +1,11 @@
 // Counting sort: items placed by a small whole-number key, stably, in two passes (count
 // every item's key, then give each item its place, in the same order). Linear in the
 // items and the keys, and the same input always gives the same order. The broadphase's
-// grid, the support order, the contact cache and the events all sort this way.
+// grid, the support order, the contact cache and the events all sort this way. And a
+// merge sort, as stable, for a few items among many keys.
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -58,6 +60,33 @@ void sortByKey(std::vector<T>& items, KeyOf&& keyOf, std::size_t keyCount, Bucke
     for (const T& item : items)
         scratch[buckets.place(keyOf(item))] = item;
     items.swap(scratch);
+}
+
+/// Sorts `items` stably by keyOf(item), any ordered key, through `scratch`: a bottom-up
+/// merge sort, n log n in the items whatever the keys, where a counting sort would walk
+/// every key. Equal keys keep their order, so it gives what sortByKey gives.
+template <class T, class KeyOf>
+void mergeSortByKey(std::vector<T>& items, KeyOf&& keyOf, std::vector<T>& scratch) {
+    const std::size_t n = items.size();
+    scratch.resize(n);
+    T* from = items.data();
+    T* to = scratch.data();
+    for (std::size_t width = 1; width < n; width *= 2) {
+        for (std::size_t lo = 0; lo < n; lo += 2 * width) {
+            const std::size_t mid = std::min(lo + width, n), hi = std::min(lo + 2 * width, n);
+            std::size_t i = lo, j = mid, k = lo;
+            // From the right run only when strictly smaller: equal keys keep their order.
+            while (i < mid && j < hi)
+                to[k++] = keyOf(from[j]) < keyOf(from[i]) ? from[j++] : from[i++];
+            while (i < mid)
+                to[k++] = from[i++];
+            while (j < hi)
+                to[k++] = from[j++];
+        }
+        std::swap(from, to);
+    }
+    if (from != items.data())
+        items.swap(scratch);
 }
 
 } // namespace jostle

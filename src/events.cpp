@@ -30,14 +30,24 @@ bool sensorNotEvaluated(const WorldState& world, const TouchRecord& record) {
            (world.slots[record.a.index].asleep || world.slots[record.b.index].asleep);
 }
 
-/// Sorts `records` by pair (a's slot, then b's) in two stable counting sorts, by b then by
-/// a. A slot holds one body at a time, so within one list the pair of slots names the pair.
+/// Records fewer than the slots over this many are merge-sorted: a counting sort's passes
+/// over every slot would cost more (a level of a thousand static boxes and one player).
+constexpr std::size_t kSlotsPerRecordForCounting = 16;
+
+/// Sorts `records` by pair (a's slot, then b's), stably: in two counting sorts, by b then
+/// by a, or, where the records are few against the slots, in a merge sort by the pair.
+/// A slot holds one body at a time, so within one list the pair of slots names the pair.
 void sortByPair(std::vector<TouchRecord>& records, std::vector<TouchRecord>& scratch,
                 Buckets& buckets, std::size_t slotCount) {
     // Nothing to sort (no sensors, most steps): leave the buffers, sized by the last
     // sort, as they are.
     if (records.size() < 2)
         return;
+    if (records.size() * kSlotsPerRecordForCounting < slotCount) {
+        mergeSortByKey(
+            records, [](const TouchRecord& r) { return r.key(); }, scratch);
+        return;
+    }
     sortByKey(
         records, [](const TouchRecord& r) { return r.b.index; }, slotCount, buckets, scratch);
     sortByKey(

@@ -1,9 +1,14 @@
 // What a step reports: contact begin and end, touching flags, crushes.
+#include "counting_sort.hpp"
 #include "jostle/world.hpp"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <random>
+#include <utility>
 #include <vector>
 
 namespace jostle {
@@ -169,6 +174,33 @@ TEST(Crush, ARiderOnALiftIsNotCrushed) {
         EXPECT_TRUE(level.world.crushBegins().empty()) << "step " << i;
     }
     (void)lift;
+}
+
+// The touch lists are sorted by pair each step: by two counting sorts over the slots, or,
+// where the records are few against the slots (a level of many static boxes), by a merge
+// sort. Both must give the order a stable sort gives, equal keys kept in their order, or
+// the events would depend on the number of bodies in the world.
+TEST(TouchLists, BothSortsGiveTheStableOrder) {
+    std::mt19937 random(7);
+    for (std::size_t n : {0u, 1u, 2u, 3u, 7u, 8u, 9u, 100u, 1000u}) {
+        // (key, the item's place before sorting): keys from a small range, so many repeat.
+        std::vector<std::pair<std::uint32_t, std::uint32_t>> items(n);
+        for (std::uint32_t k = 0; k < n; ++k)
+            items[k] = {std::uint32_t(random() % (n / 3 + 1)), k};
+        auto byKey = [](const auto& a, const auto& b) { return a.first < b.first; };
+        auto expected = items;
+        std::stable_sort(expected.begin(), expected.end(), byKey);
+
+        auto merged = items, scratch = items;
+        mergeSortByKey(merged, [](const auto& item) { return item.first; }, scratch);
+        EXPECT_EQ(merged, expected) << n << " items";
+
+        auto counted = items;
+        Buckets buckets;
+        sortByKey(counted, [](const auto& item) { return item.first; }, n / 3 + 1, buckets,
+                  scratch);
+        EXPECT_EQ(counted, expected) << n << " items";
+    }
 }
 
 } // namespace
