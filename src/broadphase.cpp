@@ -73,9 +73,10 @@ private:
     using Found = WorldState::RestingFind;
 
     /// The moving bodies, in creation order, and the grid of the boxes they may sweep:
-    /// each block of live bodies counts its moving ones, then writes them at its place.
+    /// each block of bodies that are not static counts its moving (awake) ones, then
+    /// writes them at its place.
     void buildMovingGrid() {
-        const std::span<const BodyId> live = w_.order.live();
+        const std::span<const BodyId> live = w_.movers();
         const auto count = std::uint32_t(live.size());
         std::vector<std::uint32_t>& starts = w_.blockStarts;
         starts.assign(w_.tasks->blocksOf(count, kBodiesPerBlock) + 1, 0);

@@ -70,7 +70,7 @@ float alongGravityOnFloor(Vec2 relative, Vec2 floor, Vec2 right, Vec2 down, floa
 void walkCharacters(WorldState& world) {
     const Vec2 down = world.events.down;
     const Vec2 right = rightOf(down);
-    for (BodyId id : world.order.live()) {
+    for (BodyId id : world.movers()) {
         Body& body = world.slots[id.index];
         if (!body.isCharacter() || body.asleep)
             continue;

@@ -22,6 +22,7 @@ class CreationOrder {
 public:
     /// Appends the body `id`, created last.
     void append(BodyId id) {
+        ++changes_;
         if (entries_.size() >= UINT32_MAX) // positions fit 32 bits: fewer bodies than slots
             close();
         if (id.index >= positions_.size())
@@ -32,6 +33,7 @@ public:
 
     /// Removes the body of slot `slot`, which is in the list.
     void remove(std::uint32_t slot) {
+        ++changes_;
         entries_[positions_[slot]] = BodyId{};
         std::size_t gaps = gaps_.load(std::memory_order_relaxed) + 1;
         while (!entries_.empty() && entries_.back().isNull()) {
@@ -42,6 +44,10 @@ public:
         if (2 * gaps > entries_.size())
             close();
     }
+
+    /// How many bodies have been appended and removed: a list made from live() is up to
+    /// date while this has not changed.
+    std::uint64_t changes() const { return changes_; }
 
     /// How many bodies are alive.
     std::size_t size() const { return entries_.size() - gaps_.load(std::memory_order_relaxed); }
@@ -70,6 +76,7 @@ private:
     /// By slot: the index of its body in entries_, while it lives.
     mutable std::vector<std::uint32_t> positions_;
     mutable std::atomic<std::size_t> gaps_{0};
+    std::uint64_t changes_ = 0;
     mutable std::mutex mutex_;
 };
 

@@ -124,7 +124,7 @@ void StepEvents::beginStep(const WorldState& world) {
 
     down = downOf(world.def.gravity);
     // Awake dynamic bodies are evaluated afresh; the others keep their flags.
-    for (BodyId id : world.order.live()) {
+    for (BodyId id : world.movers()) {
         const Body& body = world.slots[id.index];
         if (body.isDynamic() && !body.asleep)
             touching[id.index] = 0;

@@ -41,7 +41,7 @@ void applyForces(WorldState& world, float dt) {
 
 void integrateAwakeBodies(WorldState& world, float dt) {
     // Each body on its own: any split gives the same result.
-    world.forEachLiveBody([&](Body& body, Block) {
+    world.forEachMover([&](Body& body, Block) {
         if (body.isDynamic() && !body.asleep) {
             integrateVelocity(world.def, body, dt);
             body.dropThroughTime = std::max(0.0f, body.dropThroughTime - dt);
@@ -66,13 +66,11 @@ bool stopAtTheEdge(Body& body) {
 void keepInsideTheWorld(WorldState& world) {
     // A flag per block, set on the workers, read after: no two threads write one.
     std::vector<std::uint8_t>& movedAsleep = world.movedAsleepByBlock;
-    movedAsleep.assign(
-        world.tasks->blocksOf(std::uint32_t(world.order.live().size()), kBodiesPerBlock), 0);
-    world.forEachLiveBody([&](Body& b, Block block) {
+    movedAsleep.assign(world.tasks->blocksOf(std::uint32_t(world.movers().size()), kBodiesPerBlock),
+                       0);
+    world.forEachMover([&](Body& b, Block block) {
         // Sleeping bodies too: a body can fall asleep in the very step that carried it
         // past the edge (slow enough to rest, with a long enough dt).
-        if (b.type == BodyType::Static)
-            return;
         b.velocity = withinRange(b.velocity);
         if (stopAtTheEdge(b) && b.asleep)
             movedAsleep[block.index] = 1;

@@ -177,7 +177,7 @@ void World::step(float dt) {
     w.pairsLeftOut = 0; // the physical model's broadphase counts them
     // A sleeping body keeps the separation of its last awake step: what held it up
     // still does ("grounded" stays true while it sleeps on the ground).
-    for (BodyId id : w.order.live())
+    for (BodyId id : w.movers())
         if (!w.slots[id.index].asleep)
             w.slots[id.index].separation = {};
     try {

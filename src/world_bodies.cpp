@@ -103,8 +103,11 @@ void World::setType(BodyId id, BodyType type) {
     disturb(*state_, id.index); // what rested on it, where it was
     state_->restingDirty = true;
     b.type = type;
-    if (type == BodyType::Static)
+    ++state_->typeChanges;
+    if (type == BodyType::Static) {
         b.velocity = {};
+        b.separation = {}; // the step resets only what moves
+    }
     b.lastStepVelocity = b.velocity;
     b.updateMass(state_->asGiven[id.index].density);
     disturb(*state_, id.index);

@@ -170,6 +170,25 @@ struct WorldState {
     }
     bool isLive(std::uint32_t slot) const { return slots[slot].alive; }
     bool isResting(const Body& body) const { return body.type == BodyType::Static || body.asleep; }
+    /// The live bodies that are not static, in creation order: what the step's loops over
+    /// bodies that move walk, so that a level's static boxes cost them nothing. Made again
+    /// from order.live() when bodies have come, gone or changed type since. For the step,
+    /// on its calling thread (the list is rebuilt in place).
+    std::span<const BodyId> movers() const {
+        if (moversAt_ != order.changes() || moversTypesAt_ != typeChanges)
+            listMovers();
+        return movers_;
+    }
+    /// One more each time a body changes type (World::setType).
+    std::uint64_t typeChanges = 0;
+    /// Calls visit(body, block) for every body of movers(), as forEachLiveBody does.
+    template <class Visit> void forEachMover(Visit&& visit) {
+        const std::span<const BodyId> moving = movers();
+        tasks->forEachBlock(std::uint32_t(moving.size()), kBodiesPerBlock, [&](Block block) {
+            for (std::uint32_t k = block.begin; k < block.end; ++k)
+                visit(slots[moving[k].index], block);
+        });
+    }
     /// Calls visit(body, block) for every live body, in blocks of kBodiesPerBlock in
     /// creation order on the world's workers: visit may write only `body`, and what is
     /// its block's own (by block.index).
@@ -192,6 +211,18 @@ struct WorldState {
     }
     /// Whether the body in slot `a` was created before the one in slot `b`.
     bool createdBefore(std::uint32_t a, std::uint32_t b) const { return created[a] < created[b]; }
+
+private:
+    void listMovers() const {
+        movers_.clear();
+        for (BodyId id : order.live())
+            if (slots[id.index].type != BodyType::Static)
+                movers_.push_back(id);
+        moversAt_ = order.changes();
+        moversTypesAt_ = typeChanges;
+    }
+    mutable std::vector<BodyId> movers_;
+    mutable std::uint64_t moversAt_ = ~std::uint64_t{0}, moversTypesAt_ = ~std::uint64_t{0};
 };
 
 } // namespace jostle

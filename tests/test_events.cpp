@@ -192,13 +192,14 @@ TEST(TouchLists, BothSortsGiveTheStableOrder) {
         std::stable_sort(expected.begin(), expected.end(), byKey);
 
         auto merged = items, scratch = items;
-        mergeSortByKey(merged, [](const auto& item) { return item.first; }, scratch);
+        mergeSortByKey(
+            merged, [](const auto& item) { return item.first; }, scratch);
         EXPECT_EQ(merged, expected) << n << " items";
 
         auto counted = items;
         Buckets buckets;
-        sortByKey(counted, [](const auto& item) { return item.first; }, n / 3 + 1, buckets,
-                  scratch);
+        sortByKey(
+            counted, [](const auto& item) { return item.first; }, n / 3 + 1, buckets, scratch);
         EXPECT_EQ(counted, expected) << n << " items";
     }
 }

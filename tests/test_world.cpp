@@ -116,6 +116,47 @@ TEST(Bodies, EverySetterRoundTrips) {
     EXPECT_EQ(world.type(id), BodyType::Kinematic);
 }
 
+// A step walks only the bodies that are not static (a level's static boxes cost it
+// nothing), a list made again whenever bodies come, go or change type. Each change counts
+// from the next step: a static box made dynamic falls (v = g dt after one step, the
+// physical model integrating velocity first), one created after steps falls, a falling box
+// made static stops where it is and, pushed by nothing any more, reports no separation.
+TEST(Bodies, TypeChangesCreationsAndDestructionsCountFromTheNextStep) {
+    constexpr float kG = 10.0f, kStep = 1.0f / 60.0f;
+    World world(WorldDef{.gravity = {0, kG}});
+    std::vector<BodyId> level;
+    for (int i = 0; i < 50; ++i)
+        level.push_back(world.createBody(
+            {.type = BodyType::Static, .x = float(i) * 4, .y = 0, .hw = 1, .hh = 1}));
+    const BodyId floor =
+        world.createBody({.type = BodyType::Static, .x = 500, .y = 10, .hw = 10, .hh = 1});
+    const BodyId resting = world.createBody({.x = 500, .y = 8.5f, .hw = 0.5f, .hh = 0.5f});
+    for (int s = 0; s < 30; ++s)
+        world.step(kStep);
+    ASSERT_NE(world.separation(resting), (Vec2{0, 0})) << "the floor holds it up";
+
+    world.setType(level[7], BodyType::Dynamic);
+    const BodyId dropped = world.createBody({.x = -100, .y = 0, .hw = 1, .hh = 1});
+    world.destroyBody(level[8]);
+    world.setType(resting, BodyType::Static);
+    EXPECT_EQ(world.separation(resting), (Vec2{0, 0}));
+    const Vec2 restingAt = world.position(resting);
+    world.step(kStep);
+    EXPECT_FLOAT_EQ(world.velocity(level[7]).y, kG * kStep);
+    EXPECT_FLOAT_EQ(world.velocity(dropped).y, kG * kStep);
+    EXPECT_EQ(world.position(resting), restingAt);
+    EXPECT_EQ(world.separation(resting), (Vec2{0, 0}));
+    EXPECT_EQ(world.velocity(level[6]), (Vec2{0, 0}));
+    (void)floor;
+
+    // And back: made dynamic again, it rests on the floor as before.
+    world.setType(resting, BodyType::Dynamic);
+    for (int s = 0; s < 10; ++s)
+        world.step(kStep);
+    EXPECT_NE(world.separation(resting), (Vec2{0, 0}));
+    EXPECT_NEAR(world.position(resting).y, restingAt.y, 0.02f);
+}
+
 TEST(Bodies, MassFromDensityTimesArea) {
     World world = classicWorld();
     BodyId id = world.createBody({.hw = 2, .hh = 3, .density = 0.5f});

@@ -53,7 +53,7 @@ void carryRiders(StepContext& step) {
 }
 
 void rememberPlatformVelocities(StepContext& step) {
-    step.world.forEachLiveBody([](Body& body, Block) {
+    step.world.forEachMover([](Body& body, Block) {
         if (body.type == BodyType::Kinematic)
             body.lastStepVelocity = body.velocity;
     });
