@@ -41,6 +41,8 @@ Case makeCase(std::string_view family, int size, int warmup, int steps) {
         c.make = [size] { return shared::crowdOnFloor(size, 1); };
     else if (family == "tiled_floor")
         c.make = [size] { return shared::crowdOnFloor(size, std::max(1, size / 32)); };
+    else if (family == "static_level")
+        c.make = [size] { return shared::staticLevel(size); };
     else
         throw std::invalid_argument("unknown scene \"" + std::string(family) + "\"");
     return c;
@@ -86,9 +88,11 @@ std::vector<Case> stressCases() {
     // 10,000 and 50,000 boxes dropped at one spot: what a step costs, and holds, whatever the
     // scene holds. 10,000
     // boxes resting on one long floor and on 312 floor pieces: a floor that touches
-    // thousands of bodies costs what its pieces cost.
+    // thousands of bodies costs what its pieces cost. 10,000 static boxes and 16 that
+    // move: what the static ones cost a step.
     return {makeCase("pile", 10000, 0, 10), makeCase("pile", 50000, 0, 3),
-            makeCase("long_floor", 10000, 60, 240), makeCase("tiled_floor", 10000, 60, 240)};
+            makeCase("long_floor", 10000, 60, 240), makeCase("tiled_floor", 10000, 60, 240),
+            makeCase("static_level", 10000, 60, 600)};
 }
 
 std::vector<Case> selectCases(std::string_view name, bool quick) {

@@ -166,6 +166,29 @@ Scene crowdOnFloor(int count, int pieces) {
     return scene;
 }
 
+Scene staticLevel(int tiles) {
+    requirePositive(tiles, "level tiles");
+    constexpr int kActors = 16;
+    constexpr float kActorHalf = 0.4f;
+    Scene scene = emptyScene({0.0f, kGravity});
+    const float length = static_cast<float>(tiles);
+    for (int k = 0; k < tiles; ++k)
+        add(scene, staticBox(-0.5f * length + static_cast<float>(k) + kUnitHalf, kUnitHalf,
+                             kUnitHalf, kUnitHalf));
+    // A wall at each end, so that what slides off turns back.
+    for (float side : {-1.0f, 1.0f})
+        add(scene, staticBox(side * (0.5f * length + kUnitHalf), -2.0f, kUnitHalf, 3.0f));
+    Random random(0x5eed0005u);
+    for (int i = 0; i < kActors; ++i)
+        add(scene, {.x = -0.5f * length + length * (static_cast<float>(i) + 0.5f) / kActors,
+                    .y = -kActorHalf,
+                    .hw = kActorHalf,
+                    .hh = kActorHalf,
+                    .vx = random.sign() * random.uniform(2.0f, 8.0f),
+                    .friction = 0.0f});
+    return scene;
+}
+
 Scene gas(int count) {
     requirePositive(count, "gas count");
     constexpr float kSpacing = 3.0f;   // between centres at the start

@@ -70,4 +70,10 @@ Scene pile(int count);
 /// its pieces cost. count >= 1, pieces >= 1.
 Scene crowdOnFloor(int count, int pieces);
 
+/// A level as a level editor's object layer gives it: `tiles` unit static boxes, each its
+/// own body, laid edge to edge in one floor with a wall at each end, and 16 dynamic boxes
+/// (half extent 0.4) sliding along it at 2 to 8 units/s, friction 0, spread over its
+/// length: many static bodies, few that move. tiles >= 1.
+Scene staticLevel(int tiles);
+
 } // namespace jostle::shared
