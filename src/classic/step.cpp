@@ -45,11 +45,11 @@ public:
 
     void run() {
         w_.events.beginStep(w_);
-        // The tutorial keeps two lists, statics and dynamics, in creation order. Kinematic
-        // bodies go with the statics: the dynamic bodies collide with them the same way.
-        for (BodyId id : w_.order.live()) {
-            (w_.slots[id.index].isDynamic() ? dynamics_ : statics_).push_back(id.index);
-        }
+        // The tutorial keeps two lists, statics and dynamics, in creation order. Static
+        // bodies are in the world's resting grid; the kinematic ones, which the dynamic
+        // bodies collide with the same way, move first and have a grid of their own.
+        for (BodyId id : w_.movers())
+            (w_.slots[id.index].isDynamic() ? dynamics_ : kinematics_).push_back(id.index);
 
         // update velocity vectors
         applyForces(w_, dt_);
@@ -58,12 +58,10 @@ public:
         walkCharacters(w_);
 
         // Kinematic bodies move by their own velocity before the dynamic ones.
-        for (std::uint32_t s : statics_) {
+        for (std::uint32_t s : kinematics_) {
             Body& k = w_.slots[s];
-            if (k.type == BodyType::Kinematic) {
-                k.position += k.velocity * dt_;
-                stopAtTheEdge(k);
-            }
+            k.position += k.velocity * dt_;
+            stopAtTheEdge(k);
         }
         buildGrids();
         reportKinematicVisitors();
@@ -104,14 +102,10 @@ private:
         // the step, which is where the later ones still are when an earlier one meets
         // them.
         std::vector<Box> kinematic, dynamic;
-        kinematicSlots_.clear();
-        for (std::uint32_t s : statics_) {
+        for (std::uint32_t s : kinematics_) {
             const Body& k = w_.slots[s];
-            if (k.type == BodyType::Kinematic) {
-                kinematicSlots_.push_back(s);
-                const Vec2 back = k.velocity * dt_;
-                kinematic.push_back(sweptBox(k.position, k.half, -back));
-            }
+            const Vec2 back = k.velocity * dt_;
+            kinematic.push_back(sweptBox(k.position, k.half, -back));
         }
         kinematicGrid_.build(kinematic);
         dynamicIndex_.assign(w_.slots.size(), 0);
@@ -128,7 +122,7 @@ private:
     /// kinematic body, where it has moved to, against the static and kinematic sensors it
     /// overlaps.
     void reportKinematicVisitors() {
-        for (std::uint32_t k : kinematicSlots_) {
+        for (std::uint32_t k : kinematics_) {
             const Body& visitor = w_.slots[k];
             const Box box = visitor.box();
             auto consider = [&](std::uint32_t s) {
@@ -138,7 +132,7 @@ private:
                     recordSensor(w_, s, k);
             };
             w_.restingGrid.query(box, [&](std::uint32_t i) { consider(w_.restingSlots[i]); });
-            kinematicGrid_.query(box, [&](std::uint32_t i) { consider(kinematicSlots_[i]); });
+            kinematicGrid_.query(box, [&](std::uint32_t i) { consider(kinematics_[i]); });
         }
     }
 
@@ -170,7 +164,7 @@ private:
                 candidates_.push_back(s);
         });
         kinematicGrid_.query(region, [&](std::uint32_t k) {
-            const std::uint32_t s = kinematicSlots_[k];
+            const std::uint32_t s = kinematics_[k];
             if (std::int64_t(w_.created[s]) > after)
                 candidates_.push_back(s);
         });
@@ -414,10 +408,9 @@ private:
     WorldState& w_;
     float dt_;
     std::vector<std::uint32_t> dynamics_;
-    std::vector<std::uint32_t> statics_;
+    std::vector<std::uint32_t> kinematics_;
     std::vector<std::uint32_t> dynamicIndex_; ///< by slot: place in dynamics_
     BoxGrid kinematicGrid_;
-    std::vector<std::uint32_t> kinematicSlots_;
     std::vector<std::uint32_t> candidates_;
     std::uint64_t builtAt_ = 0;
 };
