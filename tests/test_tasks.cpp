@@ -145,20 +145,22 @@ TEST(SharingChoice, TheFirstStepsTakeTurnsSharedFirst) {
         EXPECT_EQ(ways[k], k % 2 == 0) << "step " << k;
 }
 
-TEST(SharingChoice, SharesWhenSharingIsFasterButForOneStepInEachRetry) {
+/// Steps that take `shared` and `alone` ms go the way `faster`, but for one in each retry.
+void expectKeptButRetried(float shared, float alone, bool faster) {
     SharingChoice choice;
-    const std::vector<bool> ways = waysChosen(choice, 20 * SharingChoice::kRetryEvery, 1.0f, 1.6f);
+    const std::vector<bool> ways =
+        waysChosen(choice, 20 * SharingChoice::kRetryEvery, shared, alone);
     const std::size_t after = SharingChoice::kFirstTurns + 1;
-    EXPECT_GE(otherWay(ways, true, after), retriesIn(ways.size() - after) - 1);
-    EXPECT_LE(otherWay(ways, true, after), retriesIn(ways.size() - after));
+    EXPECT_GE(otherWay(ways, faster, after), retriesIn(ways.size() - after) - 1);
+    EXPECT_LE(otherWay(ways, faster, after), retriesIn(ways.size() - after));
+}
+
+TEST(SharingChoice, SharesWhenSharingIsFasterButForOneStepInEachRetry) {
+    expectKeptButRetried(1.0f, 1.6f, true);
 }
 
 TEST(SharingChoice, StepsAloneWhenThatIsFasterButForOneStepInEachRetry) {
-    SharingChoice choice;
-    const std::vector<bool> ways = waysChosen(choice, 20 * SharingChoice::kRetryEvery, 1.2f, 1.0f);
-    const std::size_t after = SharingChoice::kFirstTurns + 1;
-    EXPECT_GE(otherWay(ways, false, after), retriesIn(ways.size() - after) - 1);
-    EXPECT_LE(otherWay(ways, false, after), retriesIn(ways.size() - after));
+    expectKeptButRetried(1.2f, 1.0f, false);
 }
 
 // The other core gets busy (another program): sharing, which waits for it at every stage,
