@@ -117,13 +117,17 @@ std::vector<Vec2> positionsOf(const World& world) {
 
 // --- Whether jostle's own threads pay (issue 32) ---------------------------------------------
 
-/// The ways SharingChoice picks for `steps` steps that take `shared` and `alone` ms.
-std::vector<bool> waysChosen(SharingChoice& choice, int steps, float shared, float alone) {
+/// The ways SharingChoice picks for `steps` steps that take `shared` and `alone` ms, and
+/// `cold` ms more when the step before went the other way (its data in the other way's
+/// caches).
+std::vector<bool> waysChosen(SharingChoice& choice, int steps, float shared, float alone,
+                             float cold = 0.0f) {
     std::vector<bool> ways;
     for (int k = 0; k < steps; ++k) {
         const bool share = choice.shareNext();
+        const bool switched = !ways.empty() && ways.back() != share;
         ways.push_back(share);
-        choice.record(share, share ? shared : alone);
+        choice.record(share, (share ? shared : alone) + (switched ? cold : 0.0f));
     }
     return ways;
 }
@@ -133,33 +137,34 @@ int otherWay(const std::vector<bool>& ways, bool faster, std::size_t from = 0) {
     return int(std::count(ways.begin() + std::ptrdiff_t(from), ways.end(), !faster));
 }
 
-/// The retries in `steps` steps: one in each kRetryEvery, the first taking at most one.
+/// The most steps of `steps` that retries send the other way: two in each kRetryEvery.
 int retriesIn(std::size_t steps) {
-    return int((steps + SharingChoice::kRetryEvery - 1) / SharingChoice::kRetryEvery);
+    return int(SharingChoice::kRetrySteps *
+               ((steps + SharingChoice::kRetryEvery - 1) / SharingChoice::kRetryEvery));
 }
 
-TEST(SharingChoice, TheFirstStepsTakeTurnsSharedFirst) {
+TEST(SharingChoice, TheFirstStepsTakeTurnsTwoByTwoSharedFirst) {
     SharingChoice choice;
-    const std::vector<bool> ways = waysChosen(choice, SharingChoice::kFirstTurns + 1, 1, 1);
-    for (std::size_t k = 0; k < ways.size(); ++k)
-        EXPECT_EQ(ways[k], k % 2 == 0) << "step " << k;
+    const std::vector<bool> ways = waysChosen(choice, SharingChoice::kFirstTurns, 1, 1);
+    const std::vector<bool> expected{true, true, false, false, true, true, false, false};
+    EXPECT_EQ(ways, expected);
 }
 
-/// Steps that take `shared` and `alone` ms go the way `faster`, but for one in each retry.
+/// Steps that take `shared` and `alone` ms go the way `faster`, but for the retries.
 void expectKeptButRetried(float shared, float alone, bool faster) {
     SharingChoice choice;
     const std::vector<bool> ways =
         waysChosen(choice, 20 * SharingChoice::kRetryEvery, shared, alone);
-    const std::size_t after = SharingChoice::kFirstTurns + 1;
-    EXPECT_GE(otherWay(ways, faster, after), retriesIn(ways.size() - after) - 1);
+    const std::size_t after = SharingChoice::kFirstTurns;
+    EXPECT_GE(otherWay(ways, faster, after), retriesIn(ways.size() - after) - 2);
     EXPECT_LE(otherWay(ways, faster, after), retriesIn(ways.size() - after));
 }
 
-TEST(SharingChoice, SharesWhenSharingIsFasterButForOneStepInEachRetry) {
+TEST(SharingChoice, SharesWhenSharingIsFasterButForTheRetries) {
     expectKeptButRetried(1.0f, 1.6f, true);
 }
 
-TEST(SharingChoice, StepsAloneWhenThatIsFasterButForOneStepInEachRetry) {
+TEST(SharingChoice, StepsAloneWhenThatIsFasterButForTheRetries) {
     expectKeptButRetried(1.2f, 1.0f, false);
 }
 
@@ -184,6 +189,18 @@ TEST(SharingChoice, TheFirstStepIsNotCounted) {
     const std::vector<bool> ways = waysChosen(choice, 4 * SharingChoice::kRetryEvery, 1.0f, 1.6f);
     const std::size_t after = SharingChoice::kFirstTurns;
     EXPECT_LE(otherWay(ways, true, after), retriesIn(ways.size() - after));
+}
+
+// A step after one of the other way finds its data in the other way's caches and is slow
+// (many_pyramids_200 on two workers: 7.6 ms alone after shared steps, 6.0-6.5 in a world
+// on one worker, 6.2-6.7 shared): counted, it made every retry of the faster way look
+// slower. Alone is faster here, warm, and is kept.
+TEST(SharingChoice, AStepAfterTheOtherWayIsNotCounted) {
+    SharingChoice choice;
+    const std::vector<bool> ways =
+        waysChosen(choice, 20 * SharingChoice::kRetryEvery, 1.0f, 0.95f, 0.6f);
+    const std::size_t after = SharingChoice::kFirstTurns;
+    EXPECT_LE(otherWay(ways, false, after), retriesIn(ways.size() - after));
 }
 
 // A world on its own two threads, its steps taking turns (the first ones do) and then

@@ -18,8 +18,8 @@
 // Callbacks (the pre-solve) and events stay on the thread that calls step().
 //
 // On jostle's own threads, a step shares its work only where that is measured faster:
-// a world times its steps both ways and keeps the faster, trying the other one step in
-// 32 (a pile that is one chain of contacts, or another program on the other core, can
+// a world times its steps both ways and keeps the faster, trying the other two steps in
+// 64 (a pile that is one chain of contacts, or another program on the other core, can
 // make sharing slower than one thread). A game's job system is always handed the work.
 #pragma once
 
