@@ -76,14 +76,14 @@ private:
     /// each block of bodies that are not static counts its moving (awake) ones, then
     /// writes them at its place.
     void buildMovingGrid() {
-        const std::span<const BodyId> live = w_.movers();
-        const auto count = std::uint32_t(live.size());
+        const std::span<const BodyId> movers = w_.movers();
+        const auto count = std::uint32_t(movers.size());
         std::vector<std::uint32_t>& starts = w_.blockStarts;
         starts.assign(w_.tasks->blocksOf(count, kBodiesPerBlock) + 1, 0);
         w_.tasks->forEachBlock(count, kBodiesPerBlock, [&](Block block) {
             std::uint32_t moving = 0;
             for (std::uint32_t k = block.begin; k < block.end; ++k)
-                moving += w_.isResting(w_.slots[live[k].index]) ? 0u : 1u;
+                moving += w_.isResting(w_.slots[movers[k].index]) ? 0u : 1u;
             starts[block.index + 1] = moving;
         });
         for (std::size_t b = 1; b < starts.size(); ++b)
@@ -95,10 +95,10 @@ private:
         w_.tasks->forEachBlock(count, kBodiesPerBlock, [&](Block block) {
             std::uint32_t at = starts[block.index];
             for (std::uint32_t k = block.begin; k < block.end; ++k) {
-                const Body& body = w_.slots[live[k].index];
+                const Body& body = w_.slots[movers[k].index];
                 if (w_.isResting(body))
                     continue;
-                w_.movingSlots[at] = live[k].index;
+                w_.movingSlots[at] = movers[k].index;
                 w_.movingDynamic[at] = body.isDynamic();
                 bounds[at] = reach(body, dt_);
                 ++at;

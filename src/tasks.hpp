@@ -109,7 +109,7 @@ private:
     TaskSystem system_;
     std::uint32_t workers_;
     std::uint32_t testBlock_ = 0;
-    bool sharing_ = false;
+    bool sharing_;
     SharingChoice choice_;
     std::unique_ptr<ThreadPool> pool_;
     /// For a game's job system: which blocks of the task under way have been taken.

@@ -181,22 +181,14 @@ struct WorldState {
     }
     /// One more each time a body changes type (World::setType).
     std::uint64_t typeChanges = 0;
-    /// Calls visit(body, block) for every body of movers(), as forEachLiveBody does.
+    /// Calls visit(body, block) for every body of movers(), in blocks of kBodiesPerBlock in
+    /// creation order on the world's workers: visit may write only `body`, and what is its
+    /// block's own (by block.index).
     template <class Visit> void forEachMover(Visit&& visit) {
         const std::span<const BodyId> moving = movers();
         tasks->forEachBlock(std::uint32_t(moving.size()), kBodiesPerBlock, [&](Block block) {
             for (std::uint32_t k = block.begin; k < block.end; ++k)
                 visit(slots[moving[k].index], block);
-        });
-    }
-    /// Calls visit(body, block) for every live body, in blocks of kBodiesPerBlock in
-    /// creation order on the world's workers: visit may write only `body`, and what is
-    /// its block's own (by block.index).
-    template <class Visit> void forEachLiveBody(Visit&& visit) {
-        const std::span<const BodyId> live = order.live();
-        tasks->forEachBlock(std::uint32_t(live.size()), kBodiesPerBlock, [&](Block block) {
-            for (std::uint32_t k = block.begin; k < block.end; ++k)
-                visit(slots[live[k].index], block);
         });
     }
     /// Calls visit(other, normal, record) for each body that `id` touched at the end of the
