@@ -324,8 +324,8 @@ TEST(Snapshots, BytesThatAreNotASnapshotAreRefusedByName) {
     const Bytes saved = world.snapshot();
     EXPECT_EQ(refusalOf(world, Bytes(10)), "restore: not a jostle snapshot");
     Bytes other = saved;
-    other[8] = std::byte{2};
-    EXPECT_EQ(refusalOf(world, other), "restore: snapshot format 2, this library reads format 1");
+    other[8] = std::byte{3};
+    EXPECT_EQ(refusalOf(world, other), "restore: snapshot format 3, this library reads format 2");
     Bytes cut(saved.begin(), saved.end() - 1);
     EXPECT_EQ(refusalOf(world, cut), "restore: truncated snapshot: " + std::to_string(cut.size()) +
                                          " bytes, its header says " + std::to_string(saved.size()));

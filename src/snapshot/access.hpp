@@ -14,60 +14,78 @@
 namespace jostle::snapshot {
 
 struct Access {
+    /// The cache's runs (the entries of each first slot), then its entries as they lie. A
+    /// short run lies in rank order, so only a long run's entries say their rank.
     template <class Ar> static void contactCache(Ar& ar, ContactCache& cache, std::uint32_t slots) {
         std::uint32_t keys = static_cast<std::uint32_t>(cache.runs_.keyCount());
         ar.var(keys);
         ar.check(keys <= slots, "the contact cache's slots");
         std::uint32_t count = static_cast<std::uint32_t>(cache.entries_.size());
         ar.count(count, 8);
+        std::uint32_t runs = 0;
+        if constexpr (!Ar::kReading)
+            for (std::uint32_t key = 0; key < keys; ++key)
+                runs += cache.runs_.end(key) > cache.runs_.begin(key) ? 1 : 0;
+        ar.count(runs, 2);
         if constexpr (Ar::kReading) {
             cache.beginRebuild(keys);
             cache.entries_.resize(count);
         }
-        std::uint32_t a = 0;
-        for (std::uint32_t k = 0; k < count; ++k) {
-            ContactCache::Entry& entry = cache.entries_[k];
-            std::uint32_t step = 0;
+        // Each run: the gap from the last run's slot (or from 0), and its length.
+        std::uint32_t key = 0, counted = 0;
+        for (std::uint32_t r = 0; r < runs; ++r) {
+            std::uint32_t gap = 0, length = 0;
             if constexpr (!Ar::kReading) {
-                while (cache.runs_.end(a) <= k)
-                    ++a, ++step;
+                const std::uint32_t from = r == 0 ? 0 : key + 1;
+                for (key = from; cache.runs_.end(key) == cache.runs_.begin(key); ++key) {
+                }
+                gap = key - from;
+                length = cache.runs_.end(key) - cache.runs_.begin(key);
             }
-            ar.var(step); // from the last entry's first slot to this one's
+            ar.var(gap);
+            ar.var(length);
             if constexpr (Ar::kReading) {
-                ar.check(step <= keys - a, "the contact cache's slots");
-                a += step;
-                ar.check(a < keys, "the contact cache's slots");
-                cache.runs_.count(a);
+                const std::uint64_t at = (r == 0 ? 0 : std::uint64_t{key} + 1) + gap;
+                ar.check(at < keys && length > 0 && length <= count - counted,
+                         "the contact cache's runs");
+                key = static_cast<std::uint32_t>(at);
+                counted += length;
+                for (std::uint32_t k = 0; k < length; ++k)
+                    cache.runs_.count(key);
             }
-            // At most 5 + 5 + 5 + 5 + 9 + 8 bytes.
-            ar.template record<48>([&](auto& out) {
-                out.var(entry.b);
-                out.var(entry.rank);
-                out.var(entry.contact.generationA);
-                out.var(entry.contact.generationB);
-                normal(out, entry.contact.normal);
-                out.f32(entry.contact.normalImpulse);
-                out.f32(entry.contact.tangentImpulse);
-            });
-            ar.check(std::isfinite(entry.contact.normalImpulse) &&
-                         std::isfinite(entry.contact.tangentImpulse),
-                     "a cached contact's impulses");
         }
         if constexpr (Ar::kReading) {
+            ar.check(counted == count, "the contact cache's runs");
             cache.runs_.endCounting();
-            for (std::uint32_t key = 0; key < keys; ++key) {
-                const std::uint32_t begin = cache.runs_.begin(key), end = cache.runs_.end(key);
-                for (std::uint32_t k = begin; k < end; ++k) {
-                    const ContactCache::Entry& e = cache.entries_[k];
-                    // A short run lies in rank order; a long one by the other slot, then rank.
-                    ar.check(end - begin > ContactCache::kLongRun
-                                 ? e.rank < end - begin &&
-                                       (k == begin || cache.entries_[k - 1].b < e.b ||
-                                        (cache.entries_[k - 1].b == e.b &&
-                                         cache.entries_[k - 1].rank < e.rank))
-                                 : e.rank == k - begin,
+        }
+        for (std::uint32_t run = 0, k = 0; run < keys && k < count; ++run) {
+            const std::uint32_t begin = cache.runs_.begin(run), end = cache.runs_.end(run);
+            const bool ranked = end - begin > ContactCache::kLongRun;
+            for (k = begin; k < end; ++k) {
+                ContactCache::Entry& entry = cache.entries_[k];
+                // At most 5 × 4 + 9 + 8 bytes.
+                ar.template record<40>([&](auto& out) {
+                    out.var(entry.b);
+                    if (ranked)
+                        out.var(entry.rank);
+                    else
+                        entry.rank = k - begin;
+                    out.var(entry.contact.generationA);
+                    out.var(entry.contact.generationB);
+                    normal(out, entry.contact.normal);
+                    out.f32(entry.contact.normalImpulse);
+                    out.f32(entry.contact.tangentImpulse);
+                });
+                ar.check(std::isfinite(entry.contact.normalImpulse) &&
+                             std::isfinite(entry.contact.tangentImpulse),
+                         "a cached contact's impulses");
+                // A long run lies by the other slot, then rank.
+                if constexpr (Ar::kReading)
+                    ar.check(!ranked || (entry.rank < end - begin &&
+                                         (k == begin || cache.entries_[k - 1].b < entry.b ||
+                                          (cache.entries_[k - 1].b == entry.b &&
+                                           cache.entries_[k - 1].rank < entry.rank))),
                              "the contact cache's order");
-                }
             }
         }
     }

@@ -36,6 +36,16 @@ struct Refused {
 struct PointerSink {
     std::uint8_t* at;
     void put(std::uint8_t byte) { *at++ = byte; }
+    /// The low `N` bytes of `v`, little-endian, in one store where the machine is.
+    template <int N> void putLE(std::uint64_t v) {
+        if constexpr (std::endian::native == std::endian::little) {
+            std::memcpy(at, &v, N);
+            at += N;
+        } else {
+            for (int i = 0; i < N; ++i)
+                put(static_cast<std::uint8_t>(v >> (8 * i)));
+        }
+    }
 };
 
 struct CountingSink {
@@ -101,16 +111,25 @@ public:
     explicit Writer(Sink& sink) : sink_(sink) {}
 
     void u8(const std::uint8_t& v) { sink_.put(v); }
-    void u32(const std::uint32_t& v) { fixed(v, 4); }
-    void u64(const std::uint64_t& v) { fixed(v, 8); }
+    void u32(const std::uint32_t& v) { fixed<4>(v); }
+    void u64(const std::uint64_t& v) { fixed<8>(v); }
     void f32(const float& v) { u32(std::bit_cast<std::uint32_t>(v)); }
     void vec(const Vec2& v) {
         f32(v.x);
         f32(v.y);
     }
     void flag(const bool& v) { u8(static_cast<std::uint8_t>(v ? 1 : 0)); }
-    template <class T> void var(const T& value) {
+    template <class T> [[gnu::always_inline]] void var(const T& value) {
         std::uint64_t v = value;
+        if (v < 0x80) [[likely]] {
+            sink_.put(static_cast<std::uint8_t>(v));
+            return;
+        }
+        if (v < 0x4000) {
+            sink_.put(static_cast<std::uint8_t>(v | 0x80));
+            sink_.put(static_cast<std::uint8_t>(v >> 7));
+            return;
+        }
         while (v >= 0x80) {
             sink_.put(static_cast<std::uint8_t>(v | 0x80));
             v >>= 7;
@@ -143,23 +162,29 @@ public:
     template <class Describe> void checkOr(bool, Describe&&) {}
 
 private:
-    void fixed(std::uint64_t v, int n) {
-        for (int i = 0; i < n; ++i)
-            sink_.put(static_cast<std::uint8_t>(v >> (8 * i)));
+    template <int N> [[gnu::always_inline]] void fixed(std::uint64_t v) {
+        if constexpr (requires { sink_.template putLE<N>(v); })
+            sink_.template putLE<N>(v);
+        else
+            for (int i = 0; i < N; ++i)
+                sink_.put(static_cast<std::uint8_t>(v >> (8 * i)));
     }
     Sink& sink_;
 };
 
-class Reader {
+/// Reads values back, checked. `Bounded`: each read checks first that its bytes are there;
+/// a record whose longest encoding is left (and a number's longest more: a reader may read
+/// one over-long number before refusing it) is read by an unbounded reader.
+template <bool Bounded> class BasicReader {
 public:
     static constexpr bool kReading = true;
-    explicit Reader(std::span<const std::uint8_t> bytes)
+    explicit BasicReader(std::span<const std::uint8_t> bytes)
         : at_(bytes.data()), end_(at_ + bytes.size()) {}
 
-    void u8(std::uint8_t& v) { v = static_cast<std::uint8_t>(fixed(1)); }
-    void u32(std::uint32_t& v) { v = static_cast<std::uint32_t>(fixed(4)); }
-    void u64(std::uint64_t& v) { v = fixed(8); }
-    void f32(float& v) { v = std::bit_cast<float>(static_cast<std::uint32_t>(fixed(4))); }
+    void u8(std::uint8_t& v) { v = static_cast<std::uint8_t>(fixed<1>()); }
+    void u32(std::uint32_t& v) { v = static_cast<std::uint32_t>(fixed<4>()); }
+    void u64(std::uint64_t& v) { v = fixed<8>(); }
+    void f32(float& v) { v = std::bit_cast<float>(static_cast<std::uint32_t>(fixed<4>())); }
     void vec(Vec2& v) {
         f32(v.x);
         f32(v.y);
@@ -170,30 +195,37 @@ public:
         check(b <= 1, "a flag is neither 0 nor 1");
         v = b != 0;
     }
-    template <class T> void var(T& value) {
-        if (at_ != end_ && *at_ < 0x80) { // most numbers: one byte
+    template <class T> [[gnu::always_inline]] void var(T& value) {
+        if ((!Bounded || at_ != end_) && *at_ < 0x80) [[likely]] { // most numbers: one byte
             value = static_cast<T>(*at_++);
             return;
         }
-        std::uint64_t v = 0;
-        for (int shift = 0;; shift += 7) {
-            check(shift < 64, "a number is longer than 10 bytes");
-            const std::uint8_t byte = static_cast<std::uint8_t>(fixed(1));
-            v |= std::uint64_t(byte & 0x7F) << shift;
-            if ((byte & 0x80) == 0) {
-                check(byte != 0 || shift == 0, "a number is not in its shortest form");
-                break;
-            }
+        if ((!Bounded || left() >= 2) && at_[1] < 0x80) { // and many two (slots)
+            const std::uint64_t v = (at_[0] & 0x7Fu) | std::uint64_t{at_[1]} << 7;
+            check(at_[1] != 0, "a number is not in its shortest form");
+            check(v <= std::uint64_t(T(~T(0))), "a number is out of its range");
+            at_ += 2;
+            value = static_cast<T>(v);
+            return;
         }
-        check(v <= std::uint64_t(T(~T(0))), "a number is out of its range");
-        value = static_cast<T>(v);
+        value = static_cast<T>(longVar(std::uint64_t(T(~T(0)))));
     }
     template <class T> void count(T& n, std::size_t minBytes) {
         var(n);
         check(std::uint64_t(n) <= left() / (minBytes == 0 ? 1 : minBytes),
               "a count is larger than the bytes that follow");
     }
-    template <std::size_t Bound, class Fill> void record(Fill&& fill) { fill(*this); }
+    template <std::size_t Bound, class Fill> void record(Fill&& fill) {
+        if constexpr (Bounded) {
+            if (left() >= Bound + kLongestVar) {
+                BasicReader<false> unbounded({at_, end_});
+                fill(unbounded);
+                at_ = unbounded.at();
+                return;
+            }
+        }
+        fill(*this);
+    }
     void check(bool ok, const char* what) {
         if (!ok) [[unlikely]]
             refuse(what);
@@ -203,21 +235,45 @@ public:
             throw Refused{describe()};
     }
     std::size_t left() const { return static_cast<std::size_t>(end_ - at_); }
+    const std::uint8_t* at() const { return at_; }
 
 private:
+    static constexpr std::size_t kLongestVar = 10;
     [[noreturn]] [[gnu::cold]] [[gnu::noinline]] static void refuse(const char* what) {
         throw Refused{what};
     }
-    std::uint64_t fixed(int n) {
-        check(left() >= static_cast<std::size_t>(n), "truncated");
+    template <int N> [[gnu::always_inline]] std::uint64_t fixed() {
+        if constexpr (Bounded)
+            check(left() >= static_cast<std::size_t>(N), "truncated");
         std::uint64_t v = 0;
-        for (int i = n - 1; i >= 0; --i)
-            v = v << 8 | at_[i];
-        at_ += n;
+        if constexpr (std::endian::native == std::endian::little) {
+            std::memcpy(&v, at_, N);
+        } else {
+            for (int i = N - 1; i >= 0; --i)
+                v = v << 8 | at_[i];
+        }
+        at_ += N;
+        return v;
+    }
+    /// A number of more than one byte, at most `largest`.
+    std::uint64_t longVar(std::uint64_t largest) {
+        std::uint64_t v = 0;
+        for (int shift = 0;; shift += 7) {
+            check(shift < 64, "a number is longer than 10 bytes");
+            const std::uint8_t byte = static_cast<std::uint8_t>(fixed<1>());
+            v |= std::uint64_t(byte & 0x7F) << shift;
+            if ((byte & 0x80) == 0) {
+                check(byte != 0 || shift == 0, "a number is not in its shortest form");
+                break;
+            }
+        }
+        check(v <= largest, "a number is out of its range");
         return v;
     }
     const std::uint8_t* at_;
     const std::uint8_t* end_;
 };
+
+using Reader = BasicReader<true>;
 
 } // namespace jostle::snapshot

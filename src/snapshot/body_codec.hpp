@@ -1,8 +1,11 @@
-// How a snapshot saves a body's fields (section B, docs/snapshots.md): each row of
-// kBodyFields, then the run-time state steps and setters keep beside the settings, each
-// saved only when its bits differ from its default. The rows are turned once into plain
-// entries (where the field lies among a body's places, how it is encoded, its default's
-// bytes), so that saving a body is a loop over them, not a visit per row.
+// How a snapshot saves a body's fields (section B, docs/snapshots.md), in three groups:
+// its settings (the rows of kBodyFields but position and velocity), its position (always
+// saved), and its state (velocity, and the run-time state steps and setters keep beside
+// the settings). Settings and state are saved only where their bits differ from their
+// defaults, and a body's settings not at all when they are the body before it's (a pile of
+// like boxes). The rows are turned once into plain entries (where the field lies among a
+// body's places, how it is encoded, its default's bytes), so that saving a body is a loop
+// over them, not a visit per row.
 #pragma once
 
 #include "../body_properties.hpp"
@@ -10,6 +13,7 @@
 #include "archive.hpp"
 
 #include <array>
+#include <bit>
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
@@ -30,7 +34,9 @@ static_assert(kBodyCodecs <= 64, "a body's fields fit the 64 bits that say which
 
 struct FieldCodec {
     enum Kind : std::uint8_t { Skip, Flag, Byte, Number, Vector, Whole };
+    enum Group : std::uint8_t { Settings, Position, State };
     Kind kind = Skip;
+    Group group = Settings;
     std::uint8_t place = 0; ///< 0: Body, 1: KeptAsGiven, 2: Shape
     std::uint16_t offset = 0;
     std::uint8_t size = 0;
@@ -101,6 +107,16 @@ inline std::array<FieldCodec, kBodyCodecs> makeBodyCodecs() {
         codecs[i++] = codecOf<float>(sample, body.*number, fresh.*number);
     for (Vec2 Body::*vector : kRunTimeVectors)
         codecs[i++] = codecOf<Vec2>(sample, body.*vector, fresh.*vector);
+    for (std::size_t k = std::size(properties::kBodyFields); k < kBodyCodecs; ++k)
+        codecs[k].group = FieldCodec::State;
+    auto within = [](const FieldCodec& codec, std::size_t vector) {
+        return codec.place == 0 && codec.offset >= vector && codec.offset < vector + sizeof(Vec2);
+    };
+    for (FieldCodec& codec : codecs)
+        if (within(codec, offsetof(Body, position)))
+            codec.group = FieldCodec::Position;
+        else if (within(codec, offsetof(Body, velocity)))
+            codec.group = FieldCodec::State;
     return codecs;
 }
 
@@ -147,29 +163,76 @@ inline bool sameBytes(const std::uint8_t* at, const FieldCodec& codec) {
     }
 }
 
-/// Which of a body's fields differ from their defaults, by their bits: those are saved.
-inline std::uint64_t presentFields(const PlaceBytes& body) {
-    std::uint64_t present = 0;
-    const auto& codecs = bodyCodecs();
-    for (std::size_t i = 0; i < kBodyCodecs; ++i) {
-        const FieldCodec& codec = codecs[i];
-        if (codec.kind != FieldCodec::Skip && !sameBytes(body.of(codec), codec))
-            present |= std::uint64_t{1} << i;
-    }
-    return present;
+/// The fields of one group, in bodyCodecs()' order.
+struct GroupCodecs {
+    std::size_t count = 0;
+    const FieldCodec* codec[kBodyCodecs] = {};
+};
+
+inline const GroupCodecs& groupCodecs(FieldCodec::Group group) {
+    static const std::array<GroupCodecs, 3> groups = [] {
+        std::array<GroupCodecs, 3> made{};
+        for (const FieldCodec& codec : bodyCodecs())
+            if (codec.kind != FieldCodec::Skip) {
+                GroupCodecs& into = made[codec.group];
+                into.codec[into.count++] = &codec;
+            }
+        return made;
+    }();
+    return groups[group];
 }
 
-/// The fields `present` names, in order (archive.hpp's two directions).
-template <class Ar> void bodyFields(Ar& ar, const PlaceBytes& body, std::uint64_t present) {
-    ar.check(present >> kBodyCodecs == 0, "a body's fields");
-    const auto& codecs = bodyCodecs();
-    for (std::size_t i = 0; i < kBodyCodecs; ++i) {
-        if ((present >> i & 1) == 0)
-            continue;
-        std::uint8_t* at = body.of(codecs[i]);
-        switch (codecs[i].kind) {
-        case FieldCodec::Skip:
-            ar.check(false, "a body's fields"); // userData is never saved
+/// Whether two bodies' settings (the Settings group) have the same bits: the bytes of each
+/// place under a mask of the settings' bytes, compared a word at a time.
+class SettingsBytes {
+public:
+    static const SettingsBytes& get() {
+        static const SettingsBytes made;
+        return made;
+    }
+    bool same(const PlaceBytes& a, const PlaceBytes& b) const {
+        std::uint64_t differ = 0;
+        for (std::size_t place = 0; place < 3; ++place)
+            for (std::size_t w = 0; w < kWords[place]; ++w) {
+                std::uint64_t x, y;
+                std::memcpy(&x, a.at[place] + 8 * w, 8);
+                std::memcpy(&y, b.at[place] + 8 * w, 8);
+                differ |= (x ^ y) & masks_[place][w];
+            }
+        return differ == 0;
+    }
+
+private:
+    static constexpr std::size_t kWords[3] = {sizeof(Body) / 8, sizeof(KeptAsGiven) / 8,
+                                              sizeof(Shape) / 8};
+    static_assert(sizeof(Body) % 8 == 0 && sizeof(KeptAsGiven) % 8 == 0 && sizeof(Shape) % 8 == 0);
+    SettingsBytes() {
+        std::uint8_t bytes[3][sizeof masks_[0]] = {};
+        for (const FieldCodec& codec : bodyCodecs())
+            if (codec.kind != FieldCodec::Skip && codec.group == FieldCodec::Settings)
+                std::memset(bytes[codec.place] + codec.offset, 0xFF, codec.size);
+        std::memcpy(masks_, bytes, sizeof masks_); // the words as the machine orders bytes
+    }
+    std::uint64_t masks_[3][sizeof(Body) / 8] = {};
+};
+
+/// The fields of `group` that differ from their defaults by their bits (archive.hpp's two
+/// directions): a `var` whose bit j says the group's j-th field follows, then those fields
+/// in order. A reader's body holds the defaults before.
+template <class Ar> void groupFields(Ar& ar, const PlaceBytes& body, FieldCodec::Group group) {
+    const GroupCodecs& fields = groupCodecs(group);
+    std::uint64_t present = 0;
+    if constexpr (!Ar::kReading)
+        for (std::size_t j = 0; j < fields.count; ++j)
+            if (!sameBytes(body.of(*fields.codec[j]), *fields.codec[j]))
+                present |= std::uint64_t{1} << j;
+    ar.var(present);
+    ar.check(present >> fields.count == 0, "a body's fields");
+    for (std::uint64_t left = present; left != 0; left &= left - 1) {
+        const FieldCodec& codec = *fields.codec[std::countr_zero(left)];
+        std::uint8_t* at = body.of(codec);
+        switch (codec.kind) {
+        case FieldCodec::Skip: // userData: never saved, and never in a group
             break;
         case FieldCodec::Flag:
             ar.flag(*reinterpret_cast<bool*>(at));

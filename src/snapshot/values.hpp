@@ -105,7 +105,8 @@ void slotList(Ar& ar, std::vector<N>& list, std::uint32_t limit, Check&& check) 
 }
 
 /// A slot and its occupant's generation (0: none), the slot below `slots`.
-template <class Ar> void ref(Ar& ar, SlotRef& r, std::uint32_t slots) {
+template <class Ar>
+[[gnu::always_inline]] inline void ref(Ar& ar, SlotRef& r, std::uint32_t slots) {
     ar.var(r.index);
     ar.var(r.generation);
     ar.check(r.index < slots || r.isNull(), "a body's slot is out of range");
@@ -123,13 +124,17 @@ void handle(Ar& ar, Id& id, std::uint32_t serial, std::uint32_t slots) {
 
 /// A normal: one byte for the four axis directions (most contacts between boxes), else the
 /// byte 4 and its two floats.
-template <class Ar> void normal(Ar& ar, Vec2& n) {
+template <class Ar> [[gnu::always_inline]] inline void normal(Ar& ar, Vec2& n) {
     static constexpr Vec2 kAxes[] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
     std::uint8_t code = 4;
-    if constexpr (!Ar::kReading)
-        for (std::uint8_t k = 0; k < 4; ++k)
-            if (sameBits(n, kAxes[k]))
-                code = k;
+    if constexpr (!Ar::kReading) {
+        constexpr std::uint32_t kOne = 0x3F800000, kMinusOne = 0xBF800000; // ±1.0f's bits
+        const auto x = std::bit_cast<std::uint32_t>(n.x), y = std::bit_cast<std::uint32_t>(n.y);
+        if (y == 0)
+            code = x == kOne ? 0 : x == kMinusOne ? 1 : 4;
+        else if (x == 0)
+            code = y == kOne ? 2 : y == kMinusOne ? 3 : 4;
+    }
     ar.u8(code);
     ar.check(code <= 4, "a normal's code");
     if (code < 4)

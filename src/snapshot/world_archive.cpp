@@ -93,13 +93,40 @@ template <class Ar> void slotTable(Ar& ar, WorldState& w) {
 
 // --- B: the live bodies, in creation order ------------------------------------------------
 
-/// A body read back: its settings checked as createBody checks them, the rest in range.
-void checkBody(Reader& ar, const WorldState& w, std::uint32_t slot, std::size_t index) {
+/// A body's flags byte: asleep, and settings that are the body before it's.
+enum BodyFlags : std::uint8_t { kAsleep = 1, kSettingsAsBefore = 2 };
+
+/// Whether a body's position and velocity pass their rows, a static body's velocity being
+/// zero: what a body whose other settings are the body before it's (checked already) needs
+/// for checkBodyDef to pass. A quick test: where it fails, checkBodyDef gives the verdict.
+bool motionPasses(const Body& body) {
+    using namespace properties;
+    constexpr std::size_t x = find(kBodyFields, kX) - kBodyFields;
+    constexpr std::size_t y = find(kBodyFields, kY) - kBodyFields;
+    constexpr std::size_t vx = find(kBodyFields, kVx) - kBodyFields;
+    constexpr std::size_t vy = find(kBodyFields, kVy) - kBodyFields;
+    BodyDef def;
+    def.x = body.position.x;
+    def.y = body.position.y;
+    def.vx = body.velocity.x;
+    def.vy = body.velocity.y;
+    return passes<kBodyFields, x>(def) && passes<kBodyFields, y>(def) &&
+           passes<kBodyFields, vx>(def) && passes<kBodyFields, vy>(def) &&
+           (body.type != BodyType::Static || body.velocity == Vec2{});
+}
+
+/// A body read back: its settings checked as createBody checks them (those the body before
+/// it had, its motion only), the rest in range.
+void checkBody(Reader& ar, const WorldState& w, std::uint32_t slot, std::size_t index,
+               bool settingsAsBefore) {
     const properties::ConstPlaces places{w.slots[slot], w.asGiven[slot], w.shapes[slot]};
-    const std::optional<FieldError> problem = checkBodyDef(properties::definitionOf(places));
-    ar.checkOr(!problem, [&] {
-        return "bodies[" + std::to_string(index) + "]." + problem->field + ": " + problem->problem;
-    });
+    if (!settingsAsBefore || !motionPasses(places.body)) {
+        const std::optional<FieldError> problem = checkBodyDef(properties::definitionOf(places));
+        ar.checkOr(!problem, [&] {
+            return "bodies[" + std::to_string(index) + "]." + problem->field + ": " +
+                   problem->problem;
+        });
+    }
     const Body& body = places.body;
     bool finite = true;
     for (float Body::*number : kRunTimeNumbers)
@@ -114,11 +141,37 @@ void checkBody(Reader& ar, const WorldState& w, std::uint32_t slot, std::size_t 
     });
 }
 
+/// A reader's body in `slot` before its fields are read: the defaults, or the settings of
+/// the body in `before` with the state's defaults.
+void startBody(WorldState& w, std::uint32_t slot, std::uint32_t before, bool settingsAsBefore) {
+    const DefaultPlaces& defaults = defaultPlaces();
+    const std::uint32_t generation = w.slots[slot].generation;
+    Body& body = w.slots[slot];
+    if (settingsAsBefore) {
+        body = w.slots[before];
+        w.asGiven[slot] = w.asGiven[before];
+        w.shapes[slot] = w.shapes[before];
+        body.velocity = defaults.body.velocity;
+        for (float Body::*number : kRunTimeNumbers)
+            body.*number = defaults.body.*number;
+        for (Vec2 Body::*vector : kRunTimeVectors)
+            body.*vector = defaults.body.*vector;
+        body.island = 0;
+    } else {
+        body = defaults.body;
+        w.asGiven[slot] = defaults.kept;
+        w.shapes[slot] = defaults.shape;
+    }
+    body.generation = generation;
+    body.alive = true;
+}
+
 template <class Ar> void bodies(Ar& ar, WorldState& w) {
     std::span<const BodyId> live = w.order.live();
     std::uint32_t count = static_cast<std::uint32_t>(live.size());
-    ar.count(count, 4);
+    ar.count(count, 12); // at least a slot, a gap, the flags, a position and the state's bits
     std::uint64_t lastCreated = 0;
+    std::uint32_t lastSlot = 0;
     MetOnce<Ar> read(w.slots.size());
     for (std::uint32_t k = 0; k < count; ++k) {
         std::uint32_t slot = 0;
@@ -126,36 +179,45 @@ template <class Ar> void bodies(Ar& ar, WorldState& w) {
             slot = live[k].index;
         ar.var(slot);
         ar.check(slot < w.slots.size() && w.slots[slot].alive, "a body's slot");
-        if constexpr (Ar::kReading) {
+        if constexpr (Ar::kReading)
             ar.check(read.first(slot), "a body's slot is listed twice");
-            // The fields left out are the defaults.
-            const DefaultPlaces& defaults = defaultPlaces();
-            const std::uint32_t generation = w.slots[slot].generation;
-            w.slots[slot] = defaults.body;
-            w.slots[slot].generation = generation;
-            w.slots[slot].alive = true;
-            w.asGiven[slot] = defaults.kept;
-            w.shapes[slot] = defaults.shape;
-        }
         Body& body = w.slots[slot];
         const properties::Places places{body, w.asGiven[slot], w.shapes[slot]};
         const PlaceBytes bytes(places);
+        std::uint8_t flags = 0;
         ar.template record<256>([&](auto& out) { // its longest: some 170 bytes
-            out.var(w.created[slot]);
-            std::uint64_t present = 0;
-            if constexpr (!Ar::kReading)
-                present = presentFields(bytes);
-            out.var(present);
-            out.flag(body.asleep);
-            bodyFields(out, bytes, present);
+            // Its creation number, as the gap after the body before it's.
+            std::uint64_t gap = k == 0 ? w.created[slot] : w.created[slot] - lastCreated - 1;
+            out.var(gap);
+            if constexpr (!Ar::kReading) {
+                const bool asBefore =
+                    k > 0 && SettingsBytes::get().same(
+                                 bytes, PlaceBytes({w.slots[lastSlot], w.asGiven[lastSlot],
+                                                    w.shapes[lastSlot]}));
+                flags = static_cast<std::uint8_t>((body.asleep ? kAsleep : 0) |
+                                                  (asBefore ? kSettingsAsBefore : 0));
+            }
+            out.u8(flags);
+            if constexpr (Ar::kReading) {
+                ar.check(flags <= (kAsleep | kSettingsAsBefore) &&
+                             (k > 0 || (flags & kSettingsAsBefore) == 0) &&
+                             gap < w.bodiesCreated - (k == 0 ? 0 : lastCreated + 1),
+                         "a body's flags, or the bodies' creation order");
+                w.created[slot] = k == 0 ? gap : lastCreated + 1 + gap;
+                startBody(w, slot, lastSlot, (flags & kSettingsAsBefore) != 0);
+                body.asleep = (flags & kAsleep) != 0;
+            }
+            if ((flags & kSettingsAsBefore) == 0)
+                groupFields(out, bytes, FieldCodec::Settings);
+            out.vec(body.position);
+            groupFields(out, bytes, FieldCodec::State);
             if (body.asleep)
                 out.var(body.island);
         });
-        ar.check((k == 0 || w.created[slot] > lastCreated) && w.created[slot] < w.bodiesCreated,
-                 "the bodies' creation order");
         lastCreated = w.created[slot];
+        lastSlot = slot;
         if constexpr (Ar::kReading) {
-            checkBody(ar, w, slot, k);
+            checkBody(ar, w, slot, k, (flags & kSettingsAsBefore) != 0);
             body.shape = places.shape.kind();
             body.updateMass(places.kept.density);
             w.order.append(w.idOf(slot));

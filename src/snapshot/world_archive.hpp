@@ -16,7 +16,7 @@ struct WorldState;
 namespace jostle::snapshot {
 
 /// The format of the payload; what world_archive.cpp writes changing makes it the next.
-inline constexpr std::uint16_t kFormat = 1;
+inline constexpr std::uint16_t kFormat = 2;
 
 /// The payload's length in bytes.
 std::size_t payloadSize(const WorldState& world);
