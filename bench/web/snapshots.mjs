@@ -1,6 +1,6 @@
 // What snapshots cost in WebAssembly (Node) beside the native build, on
 // the pile of bench/snapshots.cpp (1,000 boxes on a floor, 40 a row, friction 0.6, sleeping
-// off, stepped a second): the median of `runs` timings of snapshot(), restore(),
+// off, stepped a second): the median of `runs` timings of snapshot(into), restore(),
 // stateHash() and a step, through the npm package as a game calls them, then the native
 // program's figures for the same pile. Not a test: docs/benchmarks.md#snapshots has them.
 //   node bench/web/snapshots.mjs <package dir> <jostle-bench-snapshots> [runs]
@@ -29,10 +29,11 @@ async function main() {
     bodies.push({x: -500 + 10 * (i % 40), y: -5 - 10 * Math.floor(i / 40), hw: 5, hh: 5, friction: 0.6});
   const world = jostle.createWorld({gravity: [0, 600], sleeping: false, bodies});
   for (let step = 0; step < 60; step++) world.step(1 / 60);
-  const saved = world.snapshot();
+  const saved = world.snapshot(), room = new Uint8Array(saved.length);
   const web = {
     bytes: saved.length,
-    save: medianMicroseconds(runs, () => world.snapshot()),
+    // Into a buffer of the caller's, as the native program's snapshot(span).
+    save: medianMicroseconds(runs, () => world.snapshot(room)),
     restore: medianMicroseconds(runs, () => world.restore(saved)),
     hash: medianMicroseconds(runs, () => world.stateHash()),
     step: medianMicroseconds(runs, () => { world.restore(saved); world.step(1 / 60); }) -

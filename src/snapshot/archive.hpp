@@ -20,6 +20,16 @@
 
 namespace jostle::snapshot {
 
+// A record's fill function (Writer::record, BasicReader::record) is inlined into it where
+// clang compiles it (the web build's compiler, and the sanitizers'): left out of line, each
+// value it writes goes through memory, and the WebAssembly save took 1.7 times as long.
+// g++ inlines it by its own measure, which is faster there than forcing it (by a tenth).
+#if defined(__clang__)
+#define JOSTLE_RECORD_INLINE __attribute__((always_inline))
+#else
+#define JOSTLE_RECORD_INLINE
+#endif
+
 /// A snapshot that cannot be restored: what is wrong with it (World::restore's message).
 struct Refused {
     std::string what;
@@ -27,10 +37,12 @@ struct Refused {
 
 // --- Sinks: where a Writer's bytes go -----------------------------------------------------
 //
-// A sink takes bytes one at a time (put). One that holds them in memory also gives a
-// record room for `n` bytes at once (room(n): where to write them, or null; then advance(k)
-// for the k written), so that the loops over many small records (bodies, contacts) write
-// straight into their place.
+// A Sink is memory a Writer fills: a byte at a time (put), or a record's at once (room(n):
+// where to write n bytes, or null; then advance(k) for the k written), so that the loops
+// over many small records (bodies, contacts) write straight into their place. When it is
+// full, its drain() takes what it holds (counts it, hashes it) and it starts again; the
+// caller's buffer cannot drain, and says it overflowed. One Writer type for the three
+// (the size, the bytes, the hash): one copy of the world's description in the code.
 
 /// Straight into memory that has room: a record's bytes.
 struct PointerSink {
@@ -48,59 +60,76 @@ struct PointerSink {
     }
 };
 
-struct CountingSink {
-    std::size_t size = 0;
-    void put(std::uint8_t) { ++size; }
-};
-
-/// Into the caller's buffer, as far as it goes: past its end, nothing more is written and
-/// `overflowed` says so.
-struct BoundedSink {
-    std::uint8_t* at;
-    std::uint8_t* end;
-    bool overflowed = false;
+class Sink {
+public:
     void put(std::uint8_t byte) {
-        if (at == end) {
-            overflowed = true;
+        if (at_ == end_ && !drained(1)) {
+            overflowed_ = true;
             return;
         }
-        *at++ = byte;
+        *at_++ = byte;
     }
-    /// Null near the end: the record then goes byte by byte, each put checked.
     std::uint8_t* room(std::size_t n) {
-        return static_cast<std::size_t>(end - at) >= n ? at : nullptr;
+        return static_cast<std::size_t>(end_ - at_) >= n || drained(n) ? at_ : nullptr;
     }
-    void advance(std::size_t n) { at += n; }
+    void advance(std::size_t n) { at_ += n; }
+    /// Bytes were dropped for want of room (the caller's buffer).
+    bool overflowed() const { return overflowed_; }
+
+protected:
+    Sink(std::uint8_t* begin, std::uint8_t* end) : begin_(begin), at_(begin), end_(end) {}
+    ~Sink() = default;
+    /// Takes the bytes from begin_ to at_; false if it cannot.
+    virtual bool drain() = 0;
+    std::uint8_t* begin_;
+    std::uint8_t* at_;
+    std::uint8_t* end_;
+
+private:
+    /// Whether draining made room for `n` bytes.
+    bool drained(std::size_t n) {
+        if (!drain())
+            return false;
+        at_ = begin_;
+        return static_cast<std::size_t>(end_ - at_) >= n;
+    }
+    bool overflowed_ = false;
 };
 
-/// Into XXH64, a chunk at a time (hashing value by value would cost more than writing).
-struct HashingSink {
-    XxHash64 hash;
-    std::uint8_t chunk[4096];
-    std::size_t used = 0;
-    void put(std::uint8_t byte) {
-        if (used == sizeof chunk)
-            flush();
-        chunk[used++] = byte;
-    }
-    std::uint8_t* room(std::size_t n) {
-        if (n > sizeof chunk)
-            return nullptr;
-        if (used + n > sizeof chunk)
-            flush();
-        return chunk + used;
-    }
-    void advance(std::size_t n) { used += n; }
-    std::uint64_t digest() {
-        flush();
-        return hash.digest();
+/// Into the caller's buffer, as far as it goes.
+class BufferSink final : public Sink {
+public:
+    BufferSink(std::uint8_t* begin, std::uint8_t* end) : Sink(begin, end) {}
+    std::size_t written() const { return static_cast<std::size_t>(at_ - begin_); }
+
+private:
+    bool drain() override { return false; }
+};
+
+/// A chunk of memory drained into `Take` (a count, a hash) each time it is full.
+template <class Take> class ChunkSink final : public Sink {
+public:
+    ChunkSink() : Sink(chunk_, chunk_ + sizeof chunk_) {}
+    /// What took every byte.
+    Take& taken() {
+        drain();
+        at_ = begin_;
+        return take_;
     }
 
 private:
-    void flush() {
-        hash.update(chunk, used);
-        used = 0;
+    bool drain() override {
+        take_.update(begin_, static_cast<std::size_t>(at_ - begin_));
+        return true;
     }
+    std::uint8_t chunk_[4096];
+    Take take_;
+};
+
+/// How many bytes: a Take for ChunkSink.
+struct ByteCount {
+    std::size_t size = 0;
+    void update(const std::uint8_t*, std::size_t n) { size += n; }
 };
 
 // --- Writer and Reader ------------------------------------------------------------------
@@ -138,24 +167,29 @@ public:
     }
     /// A count of what follows, each at least `minBytes` long (Reader checks there is room).
     template <class T> void count(const T& n, std::size_t /*minBytes*/) { var(n); }
-    /// Calls fill(ar) with a writer straight into the sink's room for `Bound` bytes, the
-    /// record's longest encoding, where the sink gives room: the loops over many small
-    /// records (bodies, contacts) write without a check a byte. Else, and for a reader,
-    /// fill(*this).
+    /// Calls fill(ar) with a writer straight into memory with room for `Bound` bytes, the
+    /// record's longest encoding: the sink's own where it gives room, so that the loops over
+    /// many small records (bodies, contacts) write without a check a byte; else a scratch
+    /// record, put into the sink after. One writer for every record: one copy of its code.
     template <std::size_t Bound, class Fill> void record(Fill&& fill) {
-        if constexpr (requires { sink_.room(Bound); }) {
-            if (std::uint8_t* at = sink_.room(Bound)) {
-                PointerSink local{at};
-                Writer<PointerSink> ar(local);
-                fill(ar);
-                const auto written = static_cast<std::size_t>(local.at - at);
-                if (written > Bound) // a record's bound is its longest encoding: never
-                    throw std::logic_error("snapshot: a record is longer than its bound");
+        std::uint8_t scratch[Bound];
+        std::uint8_t* at = scratch;
+        if constexpr (requires { sink_.room(Bound); })
+            if (std::uint8_t* room = sink_.room(Bound))
+                at = room;
+        PointerSink local{at};
+        Writer<PointerSink> ar(local);
+        fill(ar);
+        const auto written = static_cast<std::size_t>(local.at - at);
+        if (written > Bound) // a record's bound is its longest encoding: never
+            throw std::logic_error("snapshot: a record is longer than its bound");
+        if constexpr (requires { sink_.room(Bound); })
+            if (at != scratch) {
                 sink_.advance(written);
                 return;
             }
-        }
-        fill(*this);
+        for (std::size_t i = 0; i < written; ++i)
+            sink_.put(scratch[i]);
     }
     /// A condition the reader checks: a writer's values meet it by construction.
     void check(bool, const char*) {}
@@ -195,7 +229,7 @@ public:
         check(b <= 1, "a flag is neither 0 nor 1");
         v = b != 0;
     }
-    template <class T> [[gnu::always_inline]] void var(T& value) {
+    template <class T> void var(T& value) {
         if ((!Bounded || at_ != end_) && *at_ < 0x80) [[likely]] { // most numbers: one byte
             value = static_cast<T>(*at_++);
             return;
@@ -215,16 +249,28 @@ public:
         check(std::uint64_t(n) <= left() / (minBytes == 0 ? 1 : minBytes),
               "a count is larger than the bytes that follow");
     }
+    /// Calls fill(ar) with a reader that checks no bounds: over the bytes themselves where
+    /// the record's longest encoding is left (and a number's longest more: a reader may read
+    /// one over-long number before it refuses it), else over a copy of what is left padded
+    /// with zeros, refused as truncated if the record went past the end.
     template <std::size_t Bound, class Fill> void record(Fill&& fill) {
-        if constexpr (Bounded) {
-            if (left() >= Bound + kLongestVar) {
-                BasicReader<false> unbounded({at_, end_});
-                fill(unbounded);
-                at_ = unbounded.at();
-                return;
-            }
+        static_assert(Bounded, "a record in a record");
+        constexpr std::size_t kReach = Bound + kLongestVar;
+        const std::uint8_t* from = at_;
+        const std::uint8_t* end = end_;
+        std::uint8_t padded[kReach];
+        if (left() < kReach) {
+            std::memset(padded, 0, kReach);
+            if (left() > 0)
+                std::memcpy(padded, at_, left());
+            from = padded;
+            end = padded + kReach;
         }
-        fill(*this);
+        BasicReader<false> unbounded({from, end});
+        fill(unbounded);
+        const auto read = static_cast<std::size_t>(unbounded.at() - from);
+        check(read <= left(), "truncated");
+        at_ += read;
     }
     void check(bool ok, const char* what) {
         if (!ok) [[unlikely]]
@@ -242,7 +288,7 @@ private:
     [[noreturn]] [[gnu::cold]] [[gnu::noinline]] static void refuse(const char* what) {
         throw Refused{what};
     }
-    template <int N> [[gnu::always_inline]] std::uint64_t fixed() {
+    template <int N> std::uint64_t fixed() {
         if constexpr (Bounded)
             check(left() >= static_cast<std::size_t>(N), "truncated");
         std::uint64_t v = 0;

@@ -192,28 +192,31 @@ public:
     }
     bool same(const PlaceBytes& a, const PlaceBytes& b) const {
         std::uint64_t differ = 0;
-        for (std::size_t place = 0; place < 3; ++place)
-            for (std::size_t w = 0; w < kWords[place]; ++w) {
+        for (std::size_t place = 0; place < 3; ++place) {
+            const std::size_t words = kSizes[place] / 8;
+            for (std::size_t w = 0; w < words; ++w) {
                 std::uint64_t x, y;
                 std::memcpy(&x, a.at[place] + 8 * w, 8);
                 std::memcpy(&y, b.at[place] + 8 * w, 8);
-                differ |= (x ^ y) & masks_[place][w];
+                differ |= (x ^ y) & words_[place][w];
             }
+            for (std::size_t i = 8 * words; i < kSizes[place]; ++i) // a 32-bit machine's tail
+                differ |= std::uint64_t(a.at[place][i] ^ b.at[place][i]) & bytes_[place][i];
+        }
         return differ == 0;
     }
 
 private:
-    static constexpr std::size_t kWords[3] = {sizeof(Body) / 8, sizeof(KeptAsGiven) / 8,
-                                              sizeof(Shape) / 8};
-    static_assert(sizeof(Body) % 8 == 0 && sizeof(KeptAsGiven) % 8 == 0 && sizeof(Shape) % 8 == 0);
+    static constexpr std::size_t kSizes[3] = {sizeof(Body), sizeof(KeptAsGiven), sizeof(Shape)};
+    static_assert(sizeof(KeptAsGiven) <= sizeof(Body) && sizeof(Shape) <= sizeof(Body));
     SettingsBytes() {
-        std::uint8_t bytes[3][sizeof masks_[0]] = {};
         for (const FieldCodec& codec : bodyCodecs())
             if (codec.kind != FieldCodec::Skip && codec.group == FieldCodec::Settings)
-                std::memset(bytes[codec.place] + codec.offset, 0xFF, codec.size);
-        std::memcpy(masks_, bytes, sizeof masks_); // the words as the machine orders bytes
+                std::memset(bytes_[codec.place] + codec.offset, 0xFF, codec.size);
+        std::memcpy(words_, bytes_, sizeof words_); // the words as the machine orders bytes
     }
-    std::uint64_t masks_[3][sizeof(Body) / 8] = {};
+    std::uint8_t bytes_[3][sizeof(Body)] = {};
+    std::uint64_t words_[3][sizeof(Body) / 8] = {};
 };
 
 /// The fields of `group` that differ from their defaults by their bits (archive.hpp's two

@@ -185,7 +185,7 @@ template <class Ar> void bodies(Ar& ar, WorldState& w) {
         const properties::Places places{body, w.asGiven[slot], w.shapes[slot]};
         const PlaceBytes bytes(places);
         std::uint8_t flags = 0;
-        ar.template record<256>([&](auto& out) { // its longest: some 170 bytes
+        ar.template record<256>([&](auto& out) JOSTLE_RECORD_INLINE { // its longest: some 170 bytes
             // Its creation number, as the gap after the body before it's.
             std::uint64_t gap = k == 0 ? w.created[slot] : w.created[slot] - lastCreated - 1;
             out.var(gap);
@@ -288,26 +288,26 @@ WorldState& forWriting(const WorldState& w) {
 } // namespace
 
 std::size_t payloadSize(const WorldState& w) {
-    CountingSink sink;
-    Writer<CountingSink> ar(sink);
+    ChunkSink<ByteCount> sink;
+    Writer<Sink> ar(sink);
     world(ar, forWriting(w));
-    return sink.size;
+    return sink.taken().size;
 }
 
 std::optional<std::size_t> writePayload(const WorldState& w, std::span<std::uint8_t> out) {
-    BoundedSink sink{out.data(), out.data() + out.size()};
-    Writer<BoundedSink> ar(sink);
+    BufferSink sink(out.data(), out.data() + out.size());
+    Writer<Sink> ar(sink);
     world(ar, forWriting(w));
-    if (sink.overflowed)
+    if (sink.overflowed())
         return std::nullopt;
-    return static_cast<std::size_t>(sink.at - out.data());
+    return sink.written();
 }
 
 std::uint64_t payloadHash(const WorldState& w) {
-    HashingSink sink;
-    Writer<HashingSink> ar(sink);
+    ChunkSink<XxHash64> sink;
+    Writer<Sink> ar(sink);
     world(ar, forWriting(w));
-    return sink.digest();
+    return sink.taken().digest();
 }
 
 void readPayload(std::span<const std::uint8_t> payload, WorldState& into) {

@@ -433,8 +433,11 @@ export class World {
   roundedMoveAndSlide(centre: VecLike, half: VecLike, radius: number, translation: VecLike,
                       filter?: QueryFilter): MoveAndSlideResult;
 
-  /** Everything that decides the world's future (docs/snapshots.md). */
-  snapshot(): Uint8Array;
+  /**
+   * Everything that decides the world's future (docs/snapshots.md): a new array, or, given
+   * `into` long enough, the front of it (`into.subarray(0, size)`: no new buffer a frame).
+   */
+  snapshot(into?: Uint8Array): Uint8Array;
   /** Makes the world what it was when the snapshot was taken. */
   restore(snapshot: Uint8Array): void;
   /** A hash of exactly what a snapshot holds, as 16 hexadecimal digits. */

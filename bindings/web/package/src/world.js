@@ -354,9 +354,12 @@ export class World {
 
   // --- Snapshots (docs/snapshots.md) ----------------------------------------------------------
 
-  /// Everything that decides the world's future, as the bytes C and C++ write.
-  snapshot() {
+  /// Everything that decides the world's future, as the bytes C and C++ write: a new array,
+  /// or the front of `into` (a Uint8Array long enough: a rollback loop's own, no new buffer).
+  snapshot(into) {
     const fn = "snapshot", world = this.live(fn), rt = this.rt, m = rt.m;
+    if (into !== undefined && !(into instanceof Uint8Array))
+      throw new TypeError(`${fn}: into must be a Uint8Array, got ${args.describe(into)}`);
     // Written into the buffer as it is, in one pass; the size is asked for only when it
     // is too small (the first snapshot, a world that grew).
     let at = rt.bufferOf(1), size = m._jostle_world_snapshot(world, at, rt.bufferSize);
@@ -367,7 +370,10 @@ export class World {
       size = m._jostle_world_snapshot(world, at, needed);
       rt.check(fn, size === needed);
     }
-    return m.HEAPU8.slice(at, at + size);
+    if (into === undefined || into.length < size)
+      return m.HEAPU8.slice(at, at + size);
+    into.set(m.HEAPU8.subarray(at, at + size));
+    return into.subarray(0, size);
   }
 
   /// Makes the world what it was when `bytes` were taken; Body objects of that time name

@@ -311,6 +311,14 @@ await rejects("an unknown option", load({wasmBinary: bytes}), "load: no option \
   world.step(1 / 60);
 
   const saved = world.snapshot(), hash = world.stateHash();
+  const room = new Uint8Array(saved.length + 7), kept = world.snapshot(room);
+  check(kept.buffer === room.buffer && kept.length === saved.length && kept.every((b, i) => b === saved[i]),
+        "snapshot(into) writes the same bytes into the front of `into`");
+  const short = new Uint8Array(saved.length - 1), grown = world.snapshot(short);
+  check(grown.buffer !== short.buffer && grown.length === saved.length,
+        "snapshot(into) with `into` too short gives a new array");
+  refuses("snapshot into what is not a Uint8Array", () => world.snapshot([]), "TypeError",
+          "snapshot: into must be a Uint8Array, got an array");
   const later = world.createBody({x: 0, y: -50, hw: 1, hh: 1});
   ghost.destroy();
   world.step(1 / 60);
