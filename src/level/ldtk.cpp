@@ -13,7 +13,6 @@ namespace jostle {
 
 namespace {
 
-using Json = nlohmann::json;
 using namespace level;
 
 /// The kinds an IntGrid value's identifier names: those of a `collision` property, and the

@@ -14,12 +14,12 @@ namespace {
 /// A scene file's text of `scene`, for the scene loader to read with its rules. Text that
 /// is not UTF-8 (a property of an XML map may hold any bytes) is written with U+FFFD in
 /// place of each bad byte, for the loader to refuse or keep as it would.
-std::string sceneText(const nlohmann::json& scene) {
-    return scene.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+std::string sceneText(const Json& scene) {
+    return scene.dump(-1, ' ', false, Json::error_handler_t::replace);
 }
 
-nlohmann::json toJson(const PropertyValue& value) {
-    return std::visit([](const auto& v) { return nlohmann::json(v); }, value);
+Json toJson(const PropertyValue& value) {
+    return std::visit([](const auto& v) { return Json(v); }, value);
 }
 
 } // namespace
@@ -65,7 +65,7 @@ bool isBodyField(const std::string& name) {
     return false;
 }
 
-nlohmann::json fieldValue(const std::string& name, const PropertyValue& value) {
+Json fieldValue(const std::string& name, const PropertyValue& value) {
     const auto* text = std::get_if<std::string>(&value);
     if (text != nullptr && (name == "oneWay" || name == "slope" || name == "surfaceVelocity")) {
         double x = 0, y = 0;
@@ -73,21 +73,21 @@ nlohmann::json fieldValue(const std::string& name, const PropertyValue& value) {
         const std::string bracketed =
             text->find('[') == std::string::npos ? "[" + *text + "]" : *text;
         if (std::sscanf(bracketed.c_str(), " [ %lf , %lf ] %c", &x, &y, &end) == 2)
-            return nlohmann::json::array({x, y});
+            return Json::array({x, y});
     }
     return toJson(value);
 }
 
-nlohmann::json bodyFields(const Properties& properties) {
-    nlohmann::json def = nlohmann::json::object();
+Json bodyFields(const Properties& properties) {
+    Json def = Json::object();
     for (const auto& [name, value] : properties)
         if (isBodyField(name))
             def[name] = fieldValue(name, value);
     return def;
 }
 
-nlohmann::json boxBody(const LevelObject& object) {
-    nlohmann::json def = bodyFields(object.properties);
+Json boxBody(const LevelObject& object) {
+    Json def = bodyFields(object.properties);
     def["x"] = object.x;
     def["y"] = object.y;
     def["hw"] = object.hw;
@@ -100,13 +100,13 @@ bool withinFloats(double v) {
 }
 
 WorldDef worldFrom(const Properties& p, const std::string& file) {
-    nlohmann::json scene = {{"bodies", nlohmann::json::array()}};
+    Json scene = {{"bodies", Json::array()}};
     if (p.contains("gravityX") || p.contains("gravityY")) {
         const auto number = [&](const char* key) {
             const auto found = p.find(key);
-            return found == p.end() ? nlohmann::json(0) : toJson(found->second);
+            return found == p.end() ? Json(0) : toJson(found->second);
         };
-        scene["gravity"] = nlohmann::json::array({number("gravityX"), number("gravityY")});
+        scene["gravity"] = Json::array({number("gravityX"), number("gravityY")});
     }
     for (const char* key : {"solver", "sleeping", "maxVelocity"})
         if (const auto found = p.find(key); found != p.end())
@@ -120,12 +120,12 @@ WorldDef worldFrom(const Properties& p, const std::string& file) {
 
 TileMapDef tileMapSettings(const Properties& properties, const std::string& file,
                            const std::string& place) {
-    nlohmann::json map = {{"tile", 1}, {"rows", {"#"}}};
+    Json map = {{"tile", 1}, {"rows", {"#"}}};
     for (const char* key : {"friction", "bounce", "category", "mask", "sensor"})
         if (const auto found = properties.find(key); found != properties.end())
             map[key] = toJson(found->second);
     try {
-        return parseScene(sceneText({{"tilemap", map}, {"bodies", nlohmann::json::array()}}))
+        return parseScene(sceneText({{"tilemap", map}, {"bodies", Json::array()}}))
             .tileMaps.front();
     } catch (const SceneError& error) {
         std::string message = error.what();
@@ -152,13 +152,13 @@ void LayerTiles::addTo(Level& level, TileMapDef settings) {
     }
 }
 
-int LevelBodies::add(nlohmann::json def, std::string id, std::string place) {
+int LevelBodies::add(Json def, std::string id, std::string place) {
     bodies_.push_back({std::move(def), std::move(id), std::move(place)});
     return size() - 1;
 }
 
 void LevelBodies::readInto(Level& level, const std::string& file) const {
-    nlohmann::json defs = nlohmann::json::array();
+    Json defs = Json::array();
     for (const Body& body : bodies_)
         defs.push_back(body.def);
     Scene scene;

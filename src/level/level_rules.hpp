@@ -15,6 +15,11 @@
 
 namespace jostle::level {
 
+/// The JSON the level readers read and write: the scene loader's own type (keys in the
+/// order given), since each type instantiates nlohmann-json's parser again (some 40 KB of
+/// the web module).
+using Json = nlohmann::ordered_json;
+
 using Properties = std::map<std::string, PropertyValue>;
 
 /// Throws SceneError("<file>: <what>").
@@ -67,15 +72,15 @@ bool isBodyField(const std::string& name);
 
 /// A property's value as a scene file's field; a vector field (oneWay, slope,
 /// surfaceVelocity) also from text such as "0, -1" (editors have no vector property).
-nlohmann::json fieldValue(const std::string& name, const PropertyValue& value);
+Json fieldValue(const std::string& name, const PropertyValue& value);
 
 /// The custom properties that are body fields of scene files, as a scene file's body
 /// object holds them (fieldValue).
-nlohmann::json bodyFields(const Properties& properties);
+Json bodyFields(const Properties& properties);
 
 /// The body object of an object's box: its custom properties that are body fields, with
 /// its centre and half size over any the properties gave.
-nlohmann::json boxBody(const LevelObject& object);
+Json boxBody(const LevelObject& object);
 
 /// True for a length a float holds with room: |v| <= 1e30 (NaN is not).
 bool withinFloats(double v);
@@ -94,14 +99,14 @@ TileMapDef tileMapSettings(const Properties& properties, const std::string& file
 class LevelBodies {
 public:
     /// Adds a body's object; returns its index in the level's bodies.
-    int add(nlohmann::json def, std::string id, std::string place);
+    int add(Json def, std::string id, std::string place);
     int size() const { return static_cast<int>(bodies_.size()); }
     /// Reads them all into level.scene.bodies, in the model of level.scene.world.
     void readInto(Level& level, const std::string& file) const;
 
 private:
     struct Body {
-        nlohmann::json def;
+        Json def;
         std::string id;
         std::string place;
     };

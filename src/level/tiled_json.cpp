@@ -1,5 +1,6 @@
 // Tiled's JSON format (.tmj, .tsj) read into tiled::Map: doc.mapeditor.org's "JSON Map
 // Format". Fields jostle does not use are skipped; those it uses are checked by type.
+#include "level_rules.hpp"
 #include "tile_data.hpp"
 #include "tiled_map.hpp"
 
@@ -11,7 +12,7 @@ namespace jostle::tiled {
 
 namespace {
 
-using Json = nlohmann::json;
+using level::Json;
 
 /// Reads the values of one file, each problem a SceneError naming the file and the place.
 struct Reader {

@@ -254,7 +254,7 @@ private:
                 continue;
             // The outer normal's direction: the left of (dx, dy) is (dy, -dx) on screen.
             const double nx = outsideOnLeft ? dy : -dy, ny = outsideOnLeft ? -dx : dx;
-            nlohmann::json side = bodyFields(o.properties);
+            Json side = bodyFields(o.properties);
             if (!side.contains("type"))
                 side["type"] = "static";
             side["x"] = (points[i].x + points[i + 1].x) / 2;
@@ -265,8 +265,7 @@ private:
                 side["slope"] = {sign(nx), sign(ny)};
                 side["segment"] = true;
             } else {
-                side["oneWay"] =
-                    dx == 0 ? nlohmann::json{sign(nx), 0} : nlohmann::json{0, sign(ny)};
+                side["oneWay"] = dx == 0 ? Json{sign(nx), 0} : Json{0, sign(ny)};
             }
             bodies_.add(side, id + "." + std::to_string(i), place + ": side " + std::to_string(i));
         }
@@ -275,8 +274,8 @@ private:
     /// The body of a rectangle, an ellipse (a circle or an upright or lying capsule) or a
     /// tile object: its centre and size from the object, its settings from the custom
     /// properties named as scene files name body fields, read by the scene loader.
-    static nlohmann::json bodyOf(const Object& o, const LevelObject& out) {
-        nlohmann::json def = boxBody(out);
+    static Json bodyOf(const Object& o, const LevelObject& out) {
+        Json def = boxBody(out);
         if (o.shape == Shape::Ellipse)
             def["radius"] = std::min(out.hw, out.hh);
         return def;

@@ -16,12 +16,16 @@ using namespace jostle::c_api;
 
 namespace {
 
+/// The JSON type of the level and scene readers (level_rules.hpp): nlohmann-json's code is
+/// in the module once for each type used.
+using Json = nlohmann::ordered_json;
+
 /// Keeps a level: its scene, and its objects as JSON.
 const jostle_world_def* keepLevel(const Level& level) {
     const jostle_world_def* world = web::keep(level.scene);
-    nlohmann::json objects = nlohmann::json::array();
+    Json objects = Json::array();
     for (const LevelObject& o : level.objects) {
-        nlohmann::json properties = nlohmann::json::object();
+        Json properties = Json::object();
         for (const auto& property : o.properties)
             std::visit([&](const auto& v) { properties[property.first] = v; }, property.second);
         objects.push_back({{"name", o.name},
@@ -36,14 +40,14 @@ const jostle_world_def* keepLevel(const Level& level) {
                            {"body", o.body},
                            {"bodyCount", o.bodyCount}});
     }
-    web::levelObjects() = objects.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+    web::levelObjects() = objects.dump(-1, ' ', false, Json::error_handler_t::replace);
     return world;
 }
 
 /// The files a level names, from a JSON object of their texts by path.
 FileReader filesIn(const char* files) {
     required(files, "files");
-    const nlohmann::json texts = nlohmann::json::parse(files);
+    const Json texts = Json::parse(files);
     return [texts](const std::string& path) -> std::string {
         if (!texts.contains(path) || !texts[path].is_string())
             throw SceneError(path + ": not given (pass its text in files)");
@@ -79,7 +83,7 @@ jostle_web_read_ldtk(const char* text, const char* name, const char* level, cons
         required(level, "level");
         required(kinds, "kinds");
         IntGridKinds table;
-        const nlohmann::json given = nlohmann::json::parse(kinds);
+        const Json given = Json::parse(kinds);
         for (const auto& [value, kind] : given.items())
             table[std::stoi(value)] = kind.get<std::string>();
         return keepLevel(parseLdtk(text, name, level, filesIn(files), table));
