@@ -88,6 +88,21 @@ inline Vec2 touchingAt(const WorldState& w, Vec2 centre, Vec2 half, float radius
     return centre;
 }
 
+/// The bodies `stop` met, in creation order, each once (a body near two pieces of the path
+/// was met twice), and where the box stops against them. Not a template, so that every
+/// query that casts shares one sort.
+inline void settleStop(const WorldState& w, Vec2 centre, Vec2 half, float radius, Vec2 motion,
+                       FirstStop& stop) {
+    std::sort(stop.met.begin(), stop.met.end(),
+              [](const Met& p, const Met& q) { return p.created < q.created; });
+    stop.met.erase(std::unique(stop.met.begin(), stop.met.end(),
+                               [](const Met& p, const Met& q) { return p.slot == q.slot; }),
+                   stop.met.end());
+    stop.centre = centre + motion * stop.time;
+    for (const Met& m : stop.met)
+        stop.centre = touchingAt(w, stop.centre, half, radius, motion, m);
+}
+
 /// Sweeps the box of `centre` and `half`, rounded by `radius` (0: sharp), along `motion`
 /// through the bodies that accept(slot) lets stop it, by the rules of boxCast.
 template <class Accept>
@@ -113,17 +128,8 @@ void firstStop(const WorldState& w, const Candidates& candidates, Vec2 centre, V
     };
     candidates.outsideGrid(consider);
     candidates.walkPath(centre, motion, half, consider, [&](float end) { return stop.time < end; });
-    if (stop.met.empty())
-        return;
-    // A body near two pieces of the path was met twice.
-    std::sort(stop.met.begin(), stop.met.end(),
-              [](const Met& p, const Met& q) { return p.created < q.created; });
-    stop.met.erase(std::unique(stop.met.begin(), stop.met.end(),
-                               [](const Met& p, const Met& q) { return p.slot == q.slot; }),
-                   stop.met.end());
-    stop.centre = centre + motion * stop.time;
-    for (const Met& m : stop.met)
-        stop.centre = touchingAt(w, stop.centre, half, radius, motion, m);
+    if (!stop.met.empty())
+        settleStop(w, centre, half, radius, motion, stop);
 }
 
 /// What is left of `motion` when it may not go into any of `normals`, those of the bodies

@@ -67,6 +67,13 @@ void checkCast(const WorldState& w, const char* function, Vec2 centre, Vec2 half
 
 // --- What is here? -----------------------------------------------------------------------
 
+/// Sorts `bodies` in creation order. Not in collect, a template: one sort for every query.
+void inCreationOrder(const Candidates& candidates, std::vector<BodyId>& bodies) {
+    std::sort(bodies.begin(), bodies.end(), [&](BodyId p, BodyId q) {
+        return candidates.created(p.index) < candidates.created(q.index);
+    });
+}
+
 /// Fills `out` with the bodies that pass the filter and for which inside(slot) holds,
 /// among those touching `region`, in creation order.
 template <class Inside>
@@ -80,9 +87,7 @@ void collect(const WorldState& w, const Box& region, const QueryFilter& filter, 
     };
     candidates.inGrid(region, consider);
     candidates.outsideGrid(consider);
-    std::sort(out.begin(), out.end(), [&](BodyId p, BodyId q) {
-        return candidates.created(p.index) < candidates.created(q.index);
-    });
+    inCreationOrder(candidates, out);
 }
 
 void overlapping(const WorldState& w, Box box, const QueryFilter& filter,
