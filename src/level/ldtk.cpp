@@ -203,9 +203,10 @@ public:
             const Json* level = &candidate;
             if (!candidate.contains("layerInstances") || candidate["layerInstances"].is_null()) {
                 const std::string path = text(candidate, "externalRelPath", place);
-                separate = Json::parse(
-                    readNamedFile(readFile, path, file_, place + ": " + level::quoted(path)),
-                    nullptr, false);
+                // As a string_view, as every text is parsed: one parser in the code.
+                const std::string levelText =
+                    readNamedFile(readFile, path, file_, place + ": " + level::quoted(path));
+                separate = Json::parse(std::string_view(levelText), nullptr, false);
                 if (separate.is_discarded() || !separate.is_object())
                     bad(place,
                         level::quoted(path) + ": not an LDtk level file (not a JSON object)");
