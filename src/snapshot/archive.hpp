@@ -1,9 +1,9 @@
 // The two directions of a snapshot's bytes (docs/snapshots.md): Writer puts values into a
-// sink (counting, writing into the caller's buffer, or hashing), Reader takes them back
-// out, checked. One function describes what is saved, with the same calls for both
+// Sink (counted, written into the caller's buffer, or hashed), Reader takes them back out,
+// checked. One function describes what is saved, with the same calls for both
 // (world_archive.cpp), so saving and restoring cannot drift apart.
 //
-// The bytes: integers little-endian, byte by byte; floats as their IEEE-754 bits; `var`
+// The bytes: integers little-endian; floats as their IEEE-754 bits; `var`
 // numbers as unsigned LEB128 (7 bits a byte, low first), the shortest form only.
 #pragma once
 
@@ -134,10 +134,10 @@ struct ByteCount {
 
 // --- Writer and Reader ------------------------------------------------------------------
 
-template <class Sink> class Writer {
+template <class Into> class Writer {
 public:
     static constexpr bool kReading = false;
-    explicit Writer(Sink& sink) : sink_(sink) {}
+    explicit Writer(Into& sink) : sink_(sink) {}
 
     void u8(const std::uint8_t& v) { sink_.put(v); }
     void u32(const std::uint32_t& v) { fixed<4>(v); }
@@ -203,7 +203,7 @@ private:
             for (int i = 0; i < N; ++i)
                 sink_.put(static_cast<std::uint8_t>(v >> (8 * i)));
     }
-    Sink& sink_;
+    Into& sink_;
 };
 
 /// Reads values back, checked. `Bounded`: each read checks first that its bytes are there;
