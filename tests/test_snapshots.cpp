@@ -459,4 +459,41 @@ TEST(Snapshots, APileTakesAtMost128BytesABodyAnd32AContact) {
     EXPECT_LE(world.snapshotSize(), 128u * 1000u + 32u * touching);
 }
 
+TEST(Snapshots, ARunOfBodiesWithTheSameSettingsSavesThemOnce) {
+    // Format 2 (docs/snapshots.md): a body whose settings are the body before it's says so
+    // in its flags byte instead of writing them. 100 boxes side by side, asleep nowhere and
+    // touching nothing, with hw, hh, bounce and friction off their defaults: alike, the
+    // settings are written once; each with its own friction, 100 times, each time at least
+    // the four floats (16 bytes) and the byte of bits saying which fields follow.
+    auto row = [](bool alike) {
+        World world(WorldDef{.gravity = {0, 0}});
+        for (int i = 0; i < 100; ++i)
+            world.createBody({.x = 10.0f * float(i),
+                              .hw = 2,
+                              .hh = 3,
+                              .bounce = 0.5f,
+                              .friction = alike ? 0.25f : 0.25f + 0.001f * float(i)});
+        return world;
+    };
+    const World alike = row(true), distinct = row(false);
+    const std::size_t saved = distinct.snapshotSize() - alike.snapshotSize();
+    EXPECT_GE(saved, 99u * 17u);
+
+    // And each comes back with its own settings.
+    World restored;
+    restored.restore(alike.snapshot());
+    EXPECT_EQ(restored.stateHash(), alike.stateHash());
+    for (BodyId id : restored.bodies()) {
+        const BodyDef def = restored.bodyDef(id);
+        EXPECT_EQ(def.hw, 2.0f);
+        EXPECT_EQ(def.hh, 3.0f);
+        EXPECT_EQ(def.bounce, 0.5f);
+        EXPECT_EQ(def.friction, 0.25f);
+    }
+    restored.restore(distinct.snapshot());
+    const std::span<const BodyId> bodies = restored.bodies();
+    for (std::size_t i = 0; i < bodies.size(); ++i)
+        EXPECT_EQ(restored.bodyDef(bodies[i]).friction, 0.25f + 0.001f * float(i));
+}
+
 } // namespace

@@ -15,16 +15,6 @@
 
 namespace jostle::snapshot {
 
-/// Whether two values have the same bits (-0 is not 0: a snapshot keeps either).
-template <class T> bool sameBits(const T& a, const T& b) {
-    if constexpr (std::is_same_v<T, float>)
-        return std::bit_cast<std::uint32_t>(a) == std::bit_cast<std::uint32_t>(b);
-    else if constexpr (std::is_same_v<T, Vec2>)
-        return sameBits(a.x, b.x) && sameBits(a.y, b.y);
-    else
-        return a == b;
-}
-
 // A setting, by its type: floats by their bits, whole numbers as `var`, enumerations and
 // flags as a byte (their tables' checks refuse what no setter would take).
 template <class Ar> void value(Ar& ar, float& v) {
