@@ -116,7 +116,8 @@ std::uint8_t supporterOf(const StepContext& step, const Contact& c) {
 
 /// A stable counting sort of the contacts by level, unsupported ones (floating piles)
 /// last. Contacts are large: the sort finds each one's destination, then moves them there
-/// in place, along the cycles of the permutation.
+/// in place, along the cycles of the permutation, each contact copied once (a place takes
+/// the contact its source names; the first of a cycle waits aside for the last place).
 void sortByLevel(StepContext& step, std::uint32_t top) {
     SupportScratch& s = step.scratch.support;
     auto bucket = [&](const Contact& c) {
@@ -132,12 +133,22 @@ void sortByLevel(StepContext& step, std::uint32_t top) {
     for (std::size_t k = 0; k < contacts.size(); ++k)
         s.destination[k] = s.byLevel.place(bucket(contacts[k]));
     s.sortedPlace = s.destination;
+    std::vector<std::uint32_t>& source = s.destination; // by place: whose contact goes there
+    for (std::uint32_t k = 0; k < contacts.size(); ++k)
+        source[s.sortedPlace[k]] = k;
     for (std::uint32_t k = 0; k < contacts.size(); ++k) {
-        while (s.destination[k] != k) {
-            const std::uint32_t to = s.destination[k];
-            std::swap(contacts[k], contacts[to]);
-            std::swap(s.destination[k], s.destination[to]);
+        if (source[k] == k)
+            continue; // in its place, or placed
+        const Contact first = contacts[k];
+        std::uint32_t place = k;
+        while (source[place] != k) {
+            const std::uint32_t from = source[place];
+            contacts[place] = contacts[from];
+            source[place] = place;
+            place = from;
         }
+        contacts[place] = first;
+        source[place] = place;
     }
 }
 

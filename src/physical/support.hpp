@@ -23,7 +23,7 @@ struct SupportScratch {
     std::vector<std::uint8_t> backing; ///< by solver body: sides touching a static or kinematic one
     std::vector<std::uint32_t> queue;
     Buckets byLevel;
-    std::vector<std::uint32_t> destination; ///< where the sort moves each contact
+    std::vector<std::uint32_t> destination; ///< the sort's scratch
     std::vector<std::uint32_t> topOfBlock;  ///< one above the highest level, by block of contacts
 };
 
