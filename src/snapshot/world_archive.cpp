@@ -62,7 +62,9 @@ template <class Ar> void slotTable(Ar& ar, WorldState& w) {
     std::uint32_t slotCount = static_cast<std::uint32_t>(w.slots.size());
     ar.count(slotCount, 1);
     if constexpr (Ar::kReading) {
-        w.slots.resize(slotCount);
+        // Copies of one made Body: a copy is a few wide moves, making each a zeroing and
+        // its defaults.
+        w.slots.assign(slotCount, Body{});
         w.created.resize(slotCount);
         w.shapes.resize(slotCount);
         w.asGiven.resize(slotCount);
