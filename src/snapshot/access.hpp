@@ -98,14 +98,14 @@ struct Access {
             list.resize(count);
         for (std::uint32_t k = 0; k < count; ++k) {
             TouchRecord& r = list[k];
-            ar.template record<48>([&](auto& out)
-                                       JOSTLE_RECORD_INLINE { // at most 4 × 5 + 9 + 8 bytes
-                                           ref(out, r.a, slots);
-                                           ref(out, r.b, slots);
-                                           normal(out, r.normal);
-                                           out.f32(r.approachSpeed);
-                                           out.f32(r.impulse);
-                                       });
+            // At most 4 × 5 + 9 + 8 bytes.
+            ar.template record<48>([&](auto& out) JOSTLE_RECORD_INLINE {
+                ref(out, r.a, slots);
+                ref(out, r.b, slots);
+                normal(out, r.normal);
+                out.f32(r.approachSpeed);
+                out.f32(r.impulse);
+            });
             ar.check(std::isfinite(r.approachSpeed) && std::isfinite(r.impulse) &&
                          (k == 0 || list[k - 1].key() <= r.key()),
                      "the last step's touching pairs");

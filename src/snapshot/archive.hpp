@@ -81,11 +81,6 @@ protected:
     ~Sink() = default;
     /// Takes the bytes from begin_ to at_; false if it cannot.
     virtual bool drain() = 0;
-    std::uint8_t* begin_;
-    std::uint8_t* at_;
-    std::uint8_t* end_;
-
-private:
     /// Whether draining made room for `n` bytes.
     bool drained(std::size_t n) {
         if (!drain())
@@ -93,6 +88,11 @@ private:
         at_ = begin_;
         return static_cast<std::size_t>(end_ - at_) >= n;
     }
+    std::uint8_t* begin_;
+    std::uint8_t* at_;
+    std::uint8_t* end_;
+
+private:
     bool overflowed_ = false;
 };
 
@@ -112,8 +112,7 @@ public:
     ChunkSink() : Sink(chunk_, chunk_ + sizeof chunk_) {}
     /// What took every byte.
     Take& taken() {
-        drain();
-        at_ = begin_;
+        drained(0);
         return take_;
     }
 

@@ -153,6 +153,7 @@ void startBody(WorldState& w, std::uint32_t slot, std::uint32_t before, bool set
         body = w.slots[before];
         w.asGiven[slot] = w.asGiven[before];
         w.shapes[slot] = w.shapes[before];
+        // The state group's defaults (body_codec.hpp): velocity and the run-time state.
         body.velocity = defaults.body.velocity;
         for (float Body::*number : kRunTimeNumbers)
             body.*number = defaults.body.*number;
@@ -187,7 +188,8 @@ template <class Ar> void bodies(Ar& ar, WorldState& w) {
         const properties::Places places{body, w.asGiven[slot], w.shapes[slot]};
         const PlaceBytes bytes(places);
         std::uint8_t flags = 0;
-        ar.template record<256>([&](auto& out) JOSTLE_RECORD_INLINE { // its longest: some 170 bytes
+        // Its longest: some 170 bytes.
+        ar.template record<256>([&](auto& out) JOSTLE_RECORD_INLINE {
             // Its creation number, as the gap after the body before it's.
             std::uint64_t gap = k == 0 ? w.created[slot] : w.created[slot] - lastCreated - 1;
             out.var(gap);
