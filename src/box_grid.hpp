@@ -180,14 +180,17 @@ inline BoxGrid::Cell BoxGrid::cellOf(Vec2 point, const Level& level) const {
 template <class Visit>
 void BoxGrid::visitLevel(int levelIndex, const Box& query, Visit&& visit) const {
     const Level& level = levels_[levelIndex];
-    const Cell low = cellOf(query.min, level);
-    const Cell high = cellOf(query.max, level);
+    // Either way the boxes are visited in sorted order. A window has at least four
+    // cells: a level of no more boxes than that is scanned without finding it.
+    const std::uint32_t count = level.end - level.begin;
+    const Cell low = count > 4 ? cellOf(query.min, level) : Cell{0, 0};
+    const Cell high = count > 4 ? cellOf(query.max, level) : Cell{0, 0};
     // A box is filed under its min corner and is at most one cell large, so one touching
     // the query has its min corner at most one cell before the query's.
     const std::int64_t fromX = std::int64_t(low.x) - 1, fromY = std::int64_t(low.y) - 1;
     const double cells =
         (double(high.x) - double(fromX) + 1) * (double(high.y) - double(fromY) + 1);
-    if (cells > double(level.end - level.begin)) {
+    if (count <= 4 || cells > double(count)) {
         for (std::uint32_t k = level.begin; k < level.end; ++k)
             if (touches(sortedBoxes_[k], query))
                 visit(sorted_[k]);
@@ -228,18 +231,44 @@ void BoxGrid::forEachInRow(int levelIndex, std::int64_t y, std::int64_t x0, std:
 template <class Visit>
 void BoxGrid::pairsWithinLevel(int levelIndex, std::uint32_t from, std::uint32_t to,
                                Visit&& visit) const {
+    // Touching boxes have cells at most one apart on each axis (either way: the relation
+    // is symmetric), so each pair is reported by the box that comes first in sorted order
+    // (cells in row order): the boxes after it in its own cell, and those of the four
+    // neighbour cells that come after its cell: one to the right in its row, three in the
+    // next row. Every box of those neighbours comes after it in sorted order.
+    const Level& level = levels_[levelIndex];
+    const Box* const boxes = sortedBoxes_.data();
+    const std::uint32_t* const names = sorted_.data();
+    auto testRun = [&](std::uint32_t k, std::uint32_t first, std::uint32_t last) {
+        const Box box = boxes[k];
+        for (std::uint32_t m = first; m < last; ++m)
+            if (touches(box, boxes[m]))
+                visit(names[k], names[m]);
+    };
+    if (level.dense) {
+        // A row's cells lie one after another in sorted_: the rest of its own cell and the
+        // next one are one run, the three cells below another.
+        for (std::uint32_t k = from; k < to; ++k) {
+            const Cell home = sortedCells_[k];
+            const std::int64_t x = std::int64_t(home.x) - level.low.x;
+            const std::int64_t y = std::int64_t(home.y) - level.low.y;
+            const std::size_t cell = level.cellStart + std::size_t(y * level.width + x);
+            const std::int64_t right = std::min<std::int64_t>(x + 1, level.width - 1);
+            testRun(k, k + 1, cells_.begin(cell + std::size_t(right - x) + 1));
+            if (y + 1 < level.height) {
+                const std::int64_t left = std::max<std::int64_t>(x - 1, 0);
+                const std::size_t below = cell + std::size_t(level.width);
+                testRun(k, cells_.begin(below - std::size_t(x - left)),
+                        cells_.begin(below + std::size_t(right - x) + 1));
+            }
+        }
+        return;
+    }
     for (std::uint32_t k = from; k < to; ++k) {
-        const std::uint32_t i = sorted_[k];
-        const Box& box = sortedBoxes_[k];
         const Cell home = sortedCells_[k];
-        // Touching boxes have cells at most one apart on each axis (either way: the
-        // relation is symmetric), so each pair is reported by the box that comes first
-        // in sorted order (cells in row order): the boxes after it in its own cell, and
-        // those of the four neighbour cells that come after its cell: one to the right in
-        // its row, three in the next row.
         auto test = [&](std::uint32_t m) {
-            if (m > k && touches(box, sortedBoxes_[m]))
-                visit(i, sorted_[m]);
+            if (m > k && touches(boxes[k], boxes[m]))
+                visit(names[k], names[m]);
         };
         forEachInRow(levelIndex, home.y, home.x, std::int64_t(home.x) + 1, test);
         forEachInRow(levelIndex, std::int64_t(home.y) + 1, std::int64_t(home.x) - 1,

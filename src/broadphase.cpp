@@ -37,6 +37,8 @@ Box reach(const Body& body, float dt) {
 
 /// Grid items (BoxGrid::pairItems) and moving bodies per block of the pair search.
 constexpr std::uint32_t kItemsPerBlock = 1024;
+/// Grid items searched between two looks at whether a block has found too many pairs.
+constexpr std::uint32_t kItemsPerCheck = 32;
 
 /// Collects pairs, or, if it meets sleeping bodies, the islands to wake first. The grids
 /// are searched in blocks, on any thread, each block keeping what it found; the budget is
@@ -120,11 +122,13 @@ private:
         w_.tasks->forEachBlock(grid.pairItems(), kItemsPerBlock, [&](Block block) {
             std::vector<std::pair<std::uint32_t, std::uint32_t>>& mine = found[block.index];
             const std::size_t most = std::size_t(block.end - block.begin) * budget_;
-            for (std::uint32_t k = block.begin; k < block.end && mine.size() <= most; ++k)
-                grid.forEachPairOf(k, k + 1, [&](std::uint32_t i, std::uint32_t j) {
-                    if (mine.size() <= most && isPair(i, j))
-                        mine.emplace_back(i, j);
-                });
+            for (std::uint32_t k = block.begin; k < block.end && mine.size() <= most;
+                 k += kItemsPerCheck)
+                grid.forEachPairOf(k, std::min(block.end, k + kItemsPerCheck),
+                                   [&](std::uint32_t i, std::uint32_t j) {
+                                       if (mine.size() <= most && isPair(i, j))
+                                           mine.emplace_back(i, j);
+                                   });
             if (mine.size() > most) {
                 mine.clear();
                 w_.movingPiled[block.index] = 1;
