@@ -82,13 +82,13 @@ void BoxGrid::run(int levelIndex, std::int64_t x, std::int64_t y, std::uint32_t&
 
 int BoxGrid::mergedLevels(double base, TaskRunner* tasks) {
     // How many boxes each of the first levels would hold; the last count, all the rest.
-    static_assert(kMaxMerged == 1);
+    static_assert(kMaxMerged == 2);
     forBlocks(tasks, std::uint32_t(boxes_.size()), [&](Block block) {
         std::uint32_t(&counts)[kMaxMerged + 2] = blockSums_[block.index].firstLevels;
-        counts[0] = counts[1] = counts[2] = 0;
+        std::fill(std::begin(counts), std::end(counts), 0u);
         for (std::uint32_t i = block.begin; i < block.end; ++i) {
             const double size = double(sizeOf(boxes_[i]));
-            ++counts[int(base < size) + int(2.0 * base < size)];
+            ++counts[int(base < size) + int(2.0 * base < size) + int(4.0 * base < size)];
         }
     });
     std::size_t counts[kMaxMerged + 2] = {};
@@ -97,12 +97,18 @@ int BoxGrid::mergedLevels(double base, TaskRunner* tasks) {
             counts[k] += sums.firstLevels[k];
     // Merge the first levels into one when together they hold most boxes: a world of
     // boxes of nearly one size (grown by their motion, some cross a doubling) then has
-    // one level, and no box looks into another level for its neighbours.
+    // one level, and no box looks into another level for its neighbours. Two doublings
+    // merged give the boxes of the first two levels cells at least twice their size, so
+    // only when those boxes are few: a crowd of them would meet many more boxes a cell.
+    const auto n = double(boxes_.size());
     std::size_t held = 0;
     for (int merged = 0; merged <= kMaxMerged; ++merged) {
         held += counts[merged];
-        if (double(held) >= kMergedShare * double(boxes_.size()))
-            return merged;
+        if (double(held) < kMergedShare * n)
+            continue;
+        if (merged == 2 && double(counts[0] + counts[1]) > kFewSmallShare * n)
+            return 0;
+        return merged;
     }
     return 0; // sizes spread out: the levels as they are
 }

@@ -102,8 +102,11 @@ private:
         std::uint32_t cellStart = 0;
     };
 
-    static constexpr int kMaxMerged = 1;
+    static constexpr int kMaxMerged = 2;
     static constexpr double kMergedShare = 0.9;
+    /// Two doublings are merged only when the boxes of the first two levels are at most
+    /// this share of all.
+    static constexpr double kFewSmallShare = 1.0 / 3.0;
 
     /// What a block of boxes adds up to in build's passes over them: sizes, then how
     /// many would go in each of the first levels, then each level's boxes and the cells
@@ -117,7 +120,7 @@ private:
 
     int levelOf(const Box& box) const;
     /// By how many doublings to grow the first level's cells so that it holds most of
-    /// the boxes (at most kMaxMerged: cells up to twice as wide as the smallest box).
+    /// the boxes (at most kMaxMerged: cells up to 5 times as wide as the smallest box).
     int mergedLevels(double base, TaskRunner* tasks);
     Cell cellOf(Vec2 point, const Level& level) const;
     std::size_t hashOf(int level, Cell cell) const;

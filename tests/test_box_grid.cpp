@@ -139,6 +139,70 @@ TEST(BoxGrid, HugeAndTinyAndFarAway) {
     EXPECT_EQ(found, (std::set<Pair>{{0, 1}, {0, 4}, {2, 3}}));
 }
 
+/// A pile of boxes whose sides run from `smallest` to 4 times that (as rain's do), side by
+/// side in overlapping rows; with `smallEvery`, every smallEvery-th box instead `smallest`
+/// wide and high.
+std::vector<Box> pileOfSizes(float smallest, int count, int smallEvery) {
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<float> side(smallest, 4.0f * smallest);
+    std::vector<Box> boxes;
+    float x = 0.0f, y = 0.0f;
+    for (int i = 0; i < count; ++i) {
+        const bool small = smallEvery > 0 && i % smallEvery == 0;
+        const float w = small ? smallest : side(rng), h = small ? smallest : side(rng);
+        boxes.push_back({{x, y}, {x + w, y + h}});
+        x += w;
+        if (x > 40.0f * smallest) {
+            x = 0.0f;
+            y += 2.5f * smallest;
+        }
+    }
+    return boxes;
+}
+
+/// The widths of the grid's cells, each to a part in a thousand.
+std::set<long> cellWidths(const BoxGrid& grid) {
+    std::set<long> widths;
+    grid.forEachCell([&](const Box& cell) {
+        widths.insert(std::lround(double(cell.max.x - cell.min.x) * 1000.0));
+    });
+    return widths;
+}
+
+// Rain's boxes span two doublings of size, three in four of them in the larger half: they
+// share one level, of cells 4 times level 0's (which are 1.25 times the smallest box), so
+// that no box looks into a coarser level for its neighbours.
+TEST(BoxGrid, BoxesOfUpToFourTimesTheSmallestShareOneLevel) {
+    const std::vector<Box> boxes = pileOfSizes(1.0f, 3000, 0);
+    BoxGrid grid;
+    grid.build(boxes);
+    std::set<Pair> found;
+    grid.forEachPair([&](std::uint32_t i, std::uint32_t j) {
+        found.insert({std::min(i, j), std::max(i, j)});
+    });
+    EXPECT_EQ(found, bruteForcePairs(boxes));
+    float smallest = INFINITY;
+    for (const Box& b : boxes)
+        smallest = std::min(smallest, std::max(b.max.x - b.min.x, b.max.y - b.min.y));
+    EXPECT_EQ(cellWidths(grid), (std::set<long>{std::lround(5.0 * double(smallest) * 1000.0)}));
+}
+
+// Where the smallest boxes are many (half of them here), they keep cells of their own
+// size: cells four times as large would hold many of them each.
+TEST(BoxGrid, ACrowdOfSmallBoxesKeepsItsOwnLevel) {
+    const std::vector<Box> boxes = pileOfSizes(1.0f, 3000, 2);
+    BoxGrid grid;
+    grid.build(boxes);
+    std::set<Pair> found;
+    grid.forEachPair([&](std::uint32_t i, std::uint32_t j) {
+        found.insert({std::min(i, j), std::max(i, j)});
+    });
+    EXPECT_EQ(found, bruteForcePairs(boxes));
+    const std::set<long> widths = cellWidths(grid);
+    EXPECT_TRUE(widths.contains(1250)) << "the small boxes' own cells, 1.25 times their size";
+    EXPECT_GT(widths.size(), 1u);
+}
+
 TEST(BoxGrid, Empty) {
     BoxGrid grid;
     grid.build({});

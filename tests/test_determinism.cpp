@@ -53,6 +53,12 @@
 //               a body's settings saved once for a run of like bodies, its position always,
 //               creation numbers as gaps, the contact cache by runs): the bytes changed, the
 //               physics did not (every other hash here is unchanged).
+//   2026-11-28  slopes world: its bodies' sizes span two doublings, most in the larger
+//               half, so the broadphase now files them in one grid level, not three (a
+//               faster pair search: rain_10k's pairs stage 17 % faster). The same pairs
+//               are found in another order, and contacts are solved in that order; no
+//               rule of the physics changed. The busy world's and classic hashes, and the
+//               snapshot hashes, unchanged (their sizes do not fall in the new merge).
 
 #include "busy_worlds.hpp"
 #include "jostle/query.hpp"
@@ -82,7 +88,7 @@ using namespace jostle;
 using namespace jostle::testing;
 
 // The recorded hashes (see the history at the top of the file).
-constexpr std::uint64_t kSlopesHash = 10901351327272530644ULL;
+constexpr std::uint64_t kSlopesHash = 8037145719584943420ULL;
 constexpr std::uint64_t kPhysicalHash = 5073434225265816725ULL;
 constexpr std::uint64_t kClassicHash = 11721795189068454326ULL;
 constexpr int kSteps = 3000; // 50 seconds of a busy world
