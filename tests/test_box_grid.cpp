@@ -49,6 +49,15 @@ std::set<Pair> bruteForcePairs(const std::vector<Box>& boxes) {
     return pairs;
 }
 
+/// The grid's pairs, each as (smaller, larger).
+std::set<Pair> pairsOf(const BoxGrid& grid) {
+    std::set<Pair> found;
+    grid.forEachPair([&](std::uint32_t i, std::uint32_t j) {
+        found.insert({std::min(i, j), std::max(i, j)});
+    });
+    return found;
+}
+
 class BoxGridProperty : public ::testing::TestWithParam<unsigned> {};
 
 TEST_P(BoxGridProperty, PairsEqualBruteForce) {
@@ -131,12 +140,8 @@ TEST(BoxGrid, HugeAndTinyAndFarAway) {
     };
     BoxGrid grid;
     grid.build(boxes);
-    std::set<Pair> found;
-    grid.forEachPair([&](std::uint32_t i, std::uint32_t j) {
-        found.insert({std::min(i, j), std::max(i, j)});
-    });
-    EXPECT_EQ(found, bruteForcePairs(boxes));
-    EXPECT_EQ(found, (std::set<Pair>{{0, 1}, {0, 4}, {2, 3}}));
+    EXPECT_EQ(pairsOf(grid), bruteForcePairs(boxes));
+    EXPECT_EQ(pairsOf(grid), (std::set<Pair>{{0, 1}, {0, 4}, {2, 3}}));
 }
 
 /// A pile of boxes whose sides run from `smallest` to 4 times that (as rain's do), side by
@@ -176,11 +181,7 @@ TEST(BoxGrid, BoxesOfUpToFourTimesTheSmallestShareOneLevel) {
     const std::vector<Box> boxes = pileOfSizes(1.0f, 3000, 0);
     BoxGrid grid;
     grid.build(boxes);
-    std::set<Pair> found;
-    grid.forEachPair([&](std::uint32_t i, std::uint32_t j) {
-        found.insert({std::min(i, j), std::max(i, j)});
-    });
-    EXPECT_EQ(found, bruteForcePairs(boxes));
+    EXPECT_EQ(pairsOf(grid), bruteForcePairs(boxes));
     float smallest = INFINITY;
     for (const Box& b : boxes)
         smallest = std::min(smallest, std::max(b.max.x - b.min.x, b.max.y - b.min.y));
@@ -193,11 +194,7 @@ TEST(BoxGrid, ACrowdOfSmallBoxesKeepsItsOwnLevel) {
     const std::vector<Box> boxes = pileOfSizes(1.0f, 3000, 2);
     BoxGrid grid;
     grid.build(boxes);
-    std::set<Pair> found;
-    grid.forEachPair([&](std::uint32_t i, std::uint32_t j) {
-        found.insert({std::min(i, j), std::max(i, j)});
-    });
-    EXPECT_EQ(found, bruteForcePairs(boxes));
+    EXPECT_EQ(pairsOf(grid), bruteForcePairs(boxes));
     const std::set<long> widths = cellWidths(grid);
     EXPECT_TRUE(widths.contains(1250)) << "the small boxes' own cells, 1.25 times their size";
     EXPECT_GT(widths.size(), 1u);
