@@ -90,16 +90,18 @@ private:
         std::uint32_t first = 0, last = 0;
     };
 
+    /// All zero when value-initialized (Level{}): no member initializers, so that the 64
+    /// of them are zeroed at once, not each field by its own store.
     struct Level {
-        std::uint32_t begin = 0, end = 0; ///< its boxes: sorted_[begin, end)
-        double size = 0.0, inverse = 0.0; ///< cell size and its inverse
-        bool dense = false;
-        Cell low{0, 0};         ///< dense: the first cell of the array
-        std::int64_t width = 0; ///< dense: cells per row
-        std::int64_t height = 0;
+        std::uint32_t begin, end; ///< its boxes: sorted_[begin, end)
+        double size, inverse;     ///< cell size and its inverse
+        bool dense;
+        Cell low;           ///< dense: the first cell of the array
+        std::int64_t width; ///< dense: cells per row
+        std::int64_t height;
         /// Its first key in cells_: a dense level has a key per cell, in row order; a
         /// hashed one a single key for all its boxes.
-        std::uint32_t cellStart = 0;
+        std::uint32_t cellStart;
     };
 
     static constexpr int kMaxMerged = 2;
@@ -163,7 +165,7 @@ private:
     Buckets cells_;
     std::vector<HashSlot> table_; ///< hashed levels: open addressing
     int tableShift_ = 63;
-    Level levels_[kLevels];
+    Level levels_[kLevels]{};
     std::uint64_t usedLevels_ = 0; ///< bit k: level k has boxes
 };
 
