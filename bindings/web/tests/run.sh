@@ -8,7 +8,7 @@ if ! command -v node >/dev/null; then
   echo "SKIPPED: node is not installed (scripts/setup.sh installs nodejs)"
   exit 77
 fi
-if [ ! -f "$web_dir/page/jostle-web.js" ]; then
+if [ ! -f "$web_dir/page/jostle-web.wasm" ]; then
   echo "SKIPPED: the web module is not built in $web_dir (web_module: emscripten missing?)"
   exit 77
 fi

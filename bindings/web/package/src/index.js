@@ -8,12 +8,12 @@
 //     const crate = world.createBody({x: 0, y: 0, hw: 10, hh: 10, bounce: 0.3});
 //     world.step(1 / 60);
 //     console.log(crate.position);
-import createJostleGame from "jostle-game"; // the module's loader, bundled in by the build
 import * as args from "./args.js";
 import {Runtime} from "./runtime.js";
 import {World} from "./world.js";
 import {FixedStep} from "./fixed_step.js";
 import {compile} from "./wasm.js";
+import {instantiate} from "./module.js";
 export {World} from "./world.js";
 export {Body} from "./body.js";
 export {TileMap} from "./tile_map.js";
@@ -40,16 +40,7 @@ export async function load(options = {}) {
     throw new Error(`load: jostle.wasm could not be loaded: ${error.message ?? error}`);
   }
   const jostle = new Jostle();
-  const module = await createJostleGame({
-    instantiateWasm(imports, receive) {
-      WebAssembly.instantiate(wasm, imports).then((instance) => receive(instance, wasm));
-      return {};
-    },
-    // The module's own messages (none in normal use) go to the console.
-    print: (text) => console.log(text),
-    printErr: (text) => console.error(text),
-  });
-  jostle.start(module);
+  jostle.start(await instantiate(wasm));
   return jostle;
 }
 
