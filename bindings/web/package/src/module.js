@@ -9,33 +9,30 @@ const encoder = new TextEncoder();
 
 /// The module object of the compiled WebAssembly.Module `wasm`.
 export async function instantiate(wasm) {
-  const m = {};
-  let memory = null, buffer = null;
-  let views = {};
-  const view = (Type) => {
-    if (memory.buffer !== buffer) { // grown: every view is of the old buffer
-      buffer = memory.buffer;
-      views = {};
-    }
-    return (views[Type.name] ??= new Type(buffer));
+  let m = null, memory = null;
+  // The heap's views, made anew when the module's memory grows (it says so: growing
+  // detaches the old buffer). Plain properties: a getter checking the buffer at each use
+  // tripled the cost of a body's getter.
+  const renewViews = () => {
+    const buffer = memory.buffer;
+    m.HEAP8 = new Int8Array(buffer);
+    m.HEAPU8 = new Uint8Array(buffer);
+    m.HEAP32 = new Int32Array(buffer);
+    m.HEAPU32 = new Uint32Array(buffer);
+    m.HEAPF32 = new Float32Array(buffer);
   };
-  Object.defineProperties(m, {
-    HEAP8: {get: () => view(Int8Array)},
-    HEAPU8: {get: () => view(Uint8Array)},
-    HEAP32: {get: () => view(Int32Array)},
-    HEAPU32: {get: () => view(Uint32Array)},
-    HEAPF32: {get: () => view(Float32Array)},
-  });
-  m.UTF8ToString = (at) => {
-    const bytes = m.HEAPU8;
-    let end = at;
-    while (bytes[end] !== 0) end++;
-    return decoder.decode(bytes.subarray(at, end));
-  };
-  m.lengthBytesUTF8 = (text) => encoder.encode(text).length;
-  m.stringToUTF8 = (text, at, size) => {
-    const {written} = encoder.encodeInto(text, m.HEAPU8.subarray(at, at + size - 1));
-    m.HEAPU8[at + written] = 0;
+  const helpers = {
+    UTF8ToString(at) {
+      const bytes = m.HEAPU8;
+      let end = at;
+      while (bytes[end] !== 0) end++;
+      return decoder.decode(bytes.subarray(at, end));
+    },
+    lengthBytesUTF8: (text) => encoder.encode(text).length,
+    stringToUTF8(text, at, size) {
+      const {written} = encoder.encodeInto(text, m.HEAPU8.subarray(at, at + size - 1));
+      m.HEAPU8[at + written] = 0;
+    },
   };
 
   // What the module writes to stdout and stderr (nothing in normal use), by lines.
@@ -70,13 +67,21 @@ export async function instantiate(wasm) {
   const env = {
     jostle_js_pre_solve: (collision, context) => (m.jostlePreSolve(collision, context) ? 1 : 0),
     jostle_js_move_filter: (other, context) => m.jostleMoveFilter(other, context),
-    emscripten_notify_memory_growth: () => {}, // the views are checked at each use
+    emscripten_notify_memory_growth: () => renewViews(),
   };
   const instance = await WebAssembly.instantiate(wasm, {env, wasi_snapshot_preview1: wasi});
   const exports = instance.exports;
+  // Made at once, every property there from the start (the views and callbacks are set
+  // later): an object given 170 properties one computed name at a time is kept as a
+  // dictionary by V8, and every call looking its function up paid for it (a body's
+  // getter 32 ns against 21).
+  const functions = Object.entries(exports).filter(([, value]) => typeof value === "function")
+    .map(([name, value]) => [`_${name}`, value]);
+  const views = ["HEAP8", "HEAPU8", "HEAP32", "HEAPU32", "HEAPF32"].map((name) => [name, null]);
+  m = Object.fromEntries([...functions, ...Object.entries(helpers), ...views,
+    ["jostlePreSolve", null], ["jostleMoveFilter", null]]);
   memory = exports.memory;
+  renewViews();
   exports._initialize(); // the C++ library's static constructors
-  for (const [name, value] of Object.entries(exports))
-    if (typeof value === "function") m[`_${name}`] = value;
   return m;
 }
