@@ -5,8 +5,7 @@
 #pragma once
 
 #include "jostle/level.hpp"
-
-#include <nlohmann/json.hpp>
+#include "scene/json.hpp"
 
 #include <optional>
 #include <string>
@@ -15,10 +14,9 @@
 
 namespace jostle::level {
 
-/// The JSON the level readers read and write: the scene loader's own type (keys in the
-/// order given), since each type instantiates nlohmann-json's parser again (some 40 KB of
-/// the web module).
-using Json = nlohmann::ordered_json;
+/// The JSON the level readers read and write: the scene loader's own type, since each type
+/// instantiates nlohmann-json's parser again (some 40 KB of the web module).
+using Json = json::Json;
 
 using Properties = std::map<std::string, PropertyValue>;
 

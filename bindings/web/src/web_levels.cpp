@@ -4,6 +4,7 @@
 // the game module only: the page loads no levels.
 #include "c_api/misuse.hpp"
 #include "jostle/level.hpp"
+#include "scene/json.hpp"
 #include "web_scene.hpp"
 
 #include <emscripten/emscripten.h>
@@ -16,9 +17,9 @@ using namespace jostle::c_api;
 
 namespace {
 
-/// The JSON type of the level and scene readers (level_rules.hpp): nlohmann-json's code is
+/// The scene loader's JSON type, which the level readers use too: nlohmann-json's code is
 /// in the module once for each type used.
-using Json = nlohmann::ordered_json;
+using json::Json;
 
 /// Keeps a level: its scene, and its objects as JSON.
 const jostle_world_def* keepLevel(const Level& level) {
