@@ -172,21 +172,18 @@ public:
     /// record, put into the sink after. One writer for every record: one copy of its code.
     template <std::size_t Bound, class Fill> void record(Fill&& fill) {
         std::uint8_t scratch[Bound];
-        std::uint8_t* at = scratch;
-        if constexpr (requires { sink_.room(Bound); })
-            if (std::uint8_t* room = sink_.room(Bound))
-                at = room;
+        std::uint8_t* const room = sink_.room(Bound);
+        std::uint8_t* const at = room != nullptr ? room : scratch;
         PointerSink local{at};
         Writer<PointerSink> ar(local);
         fill(ar);
         const auto written = static_cast<std::size_t>(local.at - at);
         if (written > Bound) // a record's bound is its longest encoding: never
             throw std::logic_error("snapshot: a record is longer than its bound");
-        if constexpr (requires { sink_.room(Bound); })
-            if (at != scratch) {
-                sink_.advance(written);
-                return;
-            }
+        if (room != nullptr) {
+            sink_.advance(written);
+            return;
+        }
         for (std::size_t i = 0; i < written; ++i)
             sink_.put(scratch[i]);
     }
