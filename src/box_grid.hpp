@@ -259,10 +259,8 @@ void BoxGrid::pairsWithinLevel(int levelIndex, std::uint32_t from, std::uint32_t
         std::uint32_t hits[kShortRun];
         std::uint32_t found = 0;
         for (std::uint32_t m = first; m < last; ++m) {
-            const Box& other = boxes[m];
             hits[found] = m;
-            found += unsigned(box.min.x <= other.max.x) & unsigned(other.min.x <= box.max.x) &
-                     unsigned(box.min.y <= other.max.y) & unsigned(other.min.y <= box.max.y);
+            found += touches(box, boxes[m]) ? 1u : 0u;
         }
         for (std::uint32_t h = 0; h < found; ++h)
             visit(names[k], names[hits[h]]);
