@@ -133,9 +133,10 @@ std::string layoutJson() {
 
 #undef JOSTLE_MEMBER
 
-// The JavaScript side of the callbacks: imports of the standalone module, given by the
-// package's loader (package/src/module.js) as the functions written here, which call the
-// game's function and keep what it throws for after the C call returns.
+// The JavaScript side of the callbacks, declared with EM_JS because emscripten checks every
+// import against the JavaScript it knows. A standalone module keeps no JavaScript: the
+// imports are given by the package's loader (package/src/module.js, `env`), and these
+// bodies only say what it gives.
 EM_JS(int, jostle_js_pre_solve, (jostle_collision * collision, void* context),
       { return Module.jostlePreSolve(collision, context) ? 1 : 0; });
 EM_JS(int, jostle_js_move_filter, (const jostle_body_id* other, void* context),
