@@ -414,19 +414,21 @@ await rejects("an unknown option", load({wasmBinary: bytes}), "load: no option \
   for (let i = 0; i < 1000; i++) world.createBody({x: (i % 40) * 3, y: -(i / 40 | 0) * 3, hw: 1, hh: 1});
   const positions = new Float32Array(2 * world.bodyCount);
   // Warmed up first: V8 compiles a hot function, which allocates on the heap once. V8 may
-  // still finish a compilation on the main thread during a window, a one-off allocation
-  // of some kilobytes; garbage made by each read shows in every window, so the least of
-  // three windows is the reads' own.
+  // still be optimising during a window (on a busy machine, once, three windows in a row
+  // grew 24 bytes a read: code not yet optimised); garbage made by each read shows in every
+  // window, so the least of up to ten windows is the reads' own. Each window's growth is
+  // in the message.
   for (let i = 0; i < 20000; i++) world.readPositions(positions);
-  let grown = Infinity;
-  for (let window = 0; window < 3; window++) {
+  const windows = [];
+  while (windows.length < 10 && !(Math.min(...windows) < 10000)) {
     globalThis.gc();
     const before = process.memoryUsage().heapUsed;
     for (let i = 0; i < 10000; i++) world.readPositions(positions);
-    grown = Math.min(grown, process.memoryUsage().heapUsed - before);
+    windows.push(process.memoryUsage().heapUsed - before);
   }
+  const grown = Math.min(...windows);
   // A single object a call would be 10,000 objects, hundreds of KB.
-  check(grown < 10000, `10,000 reads of 1,000 positions make no garbage (the heap grew ${grown} bytes)`);
+  check(grown < 10000, `10,000 reads of 1,000 positions make no garbage (the heap grew ${grown} bytes; windows: ${windows.join(", ")})`);
   check(positions[0] === 0 && positions[2] === 3, "and read them");
   world.destroy();
 }
