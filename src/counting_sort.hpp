@@ -5,6 +5,8 @@
 // merge sort, as stable, for a few items among many keys.
 #pragma once
 
+#include "room.hpp"
+
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
@@ -56,6 +58,7 @@ void sortByKey(std::vector<T>& items, KeyOf&& keyOf, std::size_t keyCount, Bucke
     for (const T& item : items)
         buckets.count(keyOf(item));
     buckets.endCounting();
+    makeEmptyRoom(scratch, items.size());
     scratch.resize(items.size());
     for (const T& item : items)
         scratch[buckets.place(keyOf(item))] = item;

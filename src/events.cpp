@@ -5,6 +5,7 @@
 #include "counting_sort.hpp"
 #include "ground.hpp"
 #include "record_touch.hpp"
+#include "room.hpp"
 #include "world_state.hpp"
 
 #include <algorithm>
@@ -63,6 +64,8 @@ void compare(const WorldState& world, std::vector<TouchRecord>& now,
              std::vector<TouchRecord>& before, std::vector<TouchRecord>& out,
              NotEvaluated&& notEvaluated, OnBegin&& begin, OnEnd&& end) {
     out.clear();
+    // It holds this step's pairs and those carried over: about the longer of the two lists.
+    makeRoom(out, std::max(now.size(), before.size()));
     std::size_t i = 0, j = 0;
     while (i < now.size() || j < before.size()) {
         if (j == before.size() || (i < now.size() && now[i].key() < before[j].key())) {
@@ -147,9 +150,9 @@ void StepEvents::publish(const WorldState& world, bool anyAwake) {
         std::erase_if(sensorsNow, gone);
     }
     destroyedSincePublish = false;
-    sortByPair(contactsNow, scratch_, buckets_, world.slots.size());
+    sortByPair(contactsNow, contactScratch_, buckets_, world.slots.size());
     compare(
-        world, contactsNow, contactsBefore_, scratch_, contactNotEvaluated,
+        world, contactsNow, contactsBefore_, contactScratch_, contactNotEvaluated,
         [&](const TouchRecord& r) {
             begins.push_back(
                 {world.idFor(r.a), world.idFor(r.b), r.normal, r.approachSpeed, pointOf(world, r)});
@@ -161,9 +164,9 @@ void StepEvents::publish(const WorldState& world, bool anyAwake) {
         std::lock_guard<std::mutex> lock(indexMutex_);
         indexed_ = false; // contactsBefore_ changed
     }
-    sortByPair(sensorsNow, scratch_, buckets_, world.slots.size());
+    sortByPair(sensorsNow, sensorScratch_, buckets_, world.slots.size());
     compare(
-        world, sensorsNow, sensorsBefore_, scratch_, sensorNotEvaluated,
+        world, sensorsNow, sensorsBefore_, sensorScratch_, sensorNotEvaluated,
         [&](const TouchRecord& r) {
             sensorBegins.push_back({world.idFor(r.a), world.idFor(r.b)});
         },

@@ -79,7 +79,10 @@ private:
     void clearStepLists();
     friend struct snapshot::Access; // saves and restores the last step's records
     std::vector<TouchRecord> contactsBefore_, sensorsBefore_;
-    std::vector<TouchRecord> scratch_;
+    /// The sorts' and comparisons' buffers, one for each list: sensors' swapped with the
+    /// contacts' would leave a contact-sized buffer in sensorsBefore_ (125 bytes a body in
+    /// a pyramid with no sensor).
+    std::vector<TouchRecord> contactScratch_, sensorScratch_;
     Buckets buckets_;
     /// contactsBefore_ by slot: each slot's run of indices into it (forEachTouchOf).
     mutable std::mutex indexMutex_;

@@ -3,6 +3,7 @@
 
 #include "../events.hpp"
 #include "../record_touch.hpp"
+#include "../room.hpp"
 #include "step_context.hpp"
 
 #include <algorithm>
@@ -93,6 +94,8 @@ void reportEvents(StepContext& step) {
     const std::uint32_t blocks = w.tasks->blocksOf(count, kContactsPerReportBlock);
     scratch.touches.reset(blocks);
     scratch.crushCandidates.reset(blocks);
+    // At most a record a contact.
+    makeRoom(w.events.contactsNow, count);
     // Blocks not shared run in order, on this thread: what they find is listed at once.
     const bool inOrder = !w.tasks->sharing();
     w.tasks->forEachBlock(count, kContactsPerReportBlock, [&](Block block) {

@@ -1,0 +1,25 @@
+// Room in a list that a step fills again each time (the events' lists of touching pairs):
+// grown to what it needs and an eighth more, not doubled, so that it holds little more than
+// it needs (doubling left up to twice) and still grows in a few steps, not one at a time.
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+namespace jostle {
+
+/// Makes `items` able to hold `n` without growing again, keeping what it holds.
+template <class T> void makeRoom(std::vector<T>& items, std::size_t n) {
+    if (items.capacity() < n)
+        items.reserve(n + n / 8);
+}
+
+/// makeRoom for a list whose contents are not needed: they are dropped first if it grows,
+/// so that nothing is copied.
+template <class T> void makeEmptyRoom(std::vector<T>& items, std::size_t n) {
+    if (items.capacity() < n)
+        items.clear();
+    makeRoom(items, n);
+}
+
+} // namespace jostle
