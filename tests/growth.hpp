@@ -22,6 +22,12 @@ inline double bestTimeOf(const std::function<void()>& work, int runs = 3) {
     return best;
 }
 
+/// The most a test lets ten times the work take, as a multiple of the time of the work:
+/// linear work takes about ten times as long, and up to four times that where the larger
+/// outgrows the caches the smaller fits (35-38 on an AMD EPYC with 512 KB of L2 a core) or
+/// the other core is busy with memory; quadratic work takes a hundred times and more.
+inline constexpr double kTenTimesTheWorkAtMost = 60.0;
+
 /// How many times longer `large` takes than `small`.
 inline double growthOf(const std::function<void()>& small, const std::function<void()>& large) {
     const double smallTime = bestTimeOf(small);

@@ -38,9 +38,7 @@ TEST(DestroyMany, TenTimesTheBodiesTakeTenTimesAsLong) {
     // 300,000 in reverse took minutes when each destroy searched the creation order.
     const double growth = test_support::growthOf([] { createAndDestroy(30'000); },
                                                  [] { createAndDestroy(300'000); });
-    // Linear, the ten times as many bodies outgrow the caches: 35-38 times as long on an
-    // AMD EPYC with 512 KB of L2 a core. Quadratic is a hundred times and more.
-    EXPECT_LT(growth, 60.0) << "ten times the bodies";
+    EXPECT_LT(growth, test_support::kTenTimesTheWorkAtMost) << "ten times the bodies";
 }
 
 TEST(DestroyMany, InReverseOrderThenInCreationOrderTheRestKeepTheirOrder) {

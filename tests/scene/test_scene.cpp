@@ -402,7 +402,7 @@ TEST(SceneScale, LoadingGrowsLinearlyWithTheBodies) {
     const double growth =
         test_support::growthOf([&] { EXPECT_EQ(parseScene(small).bodies.size(), 20'000u); },
                                [&] { EXPECT_EQ(parseScene(large).bodies.size(), 200'000u); });
-    EXPECT_LT(growth, 30.0) << "ten times the bodies";
+    EXPECT_LT(growth, test_support::kTenTimesTheWorkAtMost) << "ten times the bodies";
     const Scene scene = parseScene(large);
     EXPECT_EQ(scene.bodies.back().id, "199999");
     EXPECT_EQ(scene.bodies.back().def.x, 999.0f);
