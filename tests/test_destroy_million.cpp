@@ -36,8 +36,8 @@ void createAndDestroy(int bodies) {
 
 TEST(DestroyMany, TenTimesTheBodiesTakeTenTimesAsLong) {
     // 300,000 in reverse took minutes when each destroy searched the creation order.
-    const double growth = test_support::growthOf([] { createAndDestroy(30'000); },
-                                                 [] { createAndDestroy(300'000); });
+    const double growth =
+        test_support::growthOf([] { createAndDestroy(30'000); }, [] { createAndDestroy(300'000); });
     EXPECT_LT(growth, test_support::kTenTimesTheWorkAtMost) << "ten times the bodies";
 }
 
