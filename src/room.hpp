@@ -1,6 +1,7 @@
-// Room in a list that a step fills again each time (the events' lists of touching pairs):
-// grown to what it needs and an eighth more, not doubled, so that it holds little more than
-// it needs (doubling left up to twice) and still grows in a few steps, not one at a time.
+// Room in a list that a step fills again each time (contacts, the events' lists of
+// touching pairs): made to measure the first time, then grown to what it needs and an
+// eighth more, not doubled, so that it holds little more than it needs (doubling left up
+// to twice) and a growing world still grows it once in a few steps, not every step.
 #pragma once
 
 #include <cstddef>
@@ -11,7 +12,7 @@ namespace jostle {
 /// Makes `items` able to hold `n` without growing again, keeping what it holds.
 template <class T> void makeRoom(std::vector<T>& items, std::size_t n) {
     if (items.capacity() < n)
-        items.reserve(n + n / 8);
+        items.reserve(items.capacity() == 0 ? n : n + n / 8);
 }
 
 /// makeRoom for a list whose contents are not needed: they are dropped first if it grows,

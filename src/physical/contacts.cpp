@@ -5,6 +5,7 @@
 
 #include "../characters.hpp"
 #include "../one_way.hpp"
+#include "../room.hpp"
 #include "../shapes.hpp"
 #include "contact_normal.hpp"
 #include "contact_of.hpp"
@@ -170,8 +171,10 @@ void buildInParallel(StepContext& step) {
     WorldState& w = step.world;
     const std::vector<BodyPair>& pairs = w.pairs;
     std::vector<std::uint8_t>& made = step.scratch.contactsBuild.made;
+    makeEmptyRoom(made, pairs.size());
     made.resize(pairs.size());
     // Last step's contacts are overwritten, not made anew first: only the rest are.
+    makeEmptyRoom(step.contacts, pairs.size());
     step.contacts.resize(pairs.size());
     w.tasks->forEachBlock(std::uint32_t(pairs.size()), kPairsPerBlock, [&](Block block) {
         for (std::uint32_t k = block.begin; k < block.end; ++k) {
