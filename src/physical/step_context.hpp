@@ -3,6 +3,7 @@
 // several stages share.
 #pragma once
 
+#include "../room.hpp"
 #include "../world_state.hpp"
 #include "scratch.hpp"
 
@@ -36,6 +37,7 @@ struct StepContext {
         if (index == kNoSolverBody) {
             const Body& body = world.slots[slot];
             index = std::uint32_t(bodies.size());
+            makeRoom(bodies, bodies.size() + 1);
             bodies.push_back({{body.velocity.x, body.velocity.y},
                               {body.position.x, body.position.y},
                               body.invMass,
