@@ -1,6 +1,7 @@
 // The contact cache, and storing the step's impulses in it.
 #include "contact_cache.hpp"
 
+#include "../room.hpp"
 #include "step_context.hpp"
 
 #include <algorithm>
@@ -48,6 +49,7 @@ void storeImpulses(StepContext& step) {
     ContactCache& cache = w.contactCache;
     const auto count = std::uint32_t(step.contacts.size());
     std::vector<std::uint32_t>& ranks = step.scratch.store.ranks;
+    makeEmptyRoom(ranks, count);
     ranks.resize(count);
     cache.beginRebuild(w.slots.size());
     for (std::uint32_t k = 0; k < count; ++k)

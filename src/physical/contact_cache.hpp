@@ -4,6 +4,7 @@
 #pragma once
 
 #include "../counting_sort.hpp"
+#include "../room.hpp"
 #include "../tasks.hpp"
 #include "jostle/math.hpp"
 
@@ -62,7 +63,11 @@ public:
         return rank;
     }
     /// Ends the counting pass.
-    void endCounting() { entries_.resize(runs_.endCounting()); }
+    void endCounting() {
+        const std::uint32_t count = runs_.endCounting();
+        makeEmptyRoom(entries_, count); // each entry is added anew
+        entries_.resize(count);
+    }
     /// Filling pass: the contact of rank `rank` among those of `a`. Contacts of different
     /// ranks may be added at once on several threads.
     void add(std::uint32_t a, std::uint32_t rank, std::uint32_t b, const CachedContact& contact) {
