@@ -58,8 +58,7 @@ void sortByKey(std::vector<T>& items, KeyOf&& keyOf, std::size_t keyCount, Bucke
     for (const T& item : items)
         buckets.count(keyOf(item));
     buckets.endCounting();
-    makeEmptyRoom(scratch, items.size());
-    scratch.resize(items.size());
+    resizeAnew(scratch, items.size());
     for (const T& item : items)
         scratch[buckets.place(keyOf(item))] = item;
     items.swap(scratch);

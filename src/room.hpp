@@ -15,12 +15,13 @@ template <class T> void makeRoom(std::vector<T>& items, std::size_t n) {
         items.reserve(items.capacity() == 0 ? n : n + n / 8);
 }
 
-/// makeRoom for a list whose contents are not needed: they are dropped first if it grows,
-/// so that nothing is copied.
-template <class T> void makeEmptyRoom(std::vector<T>& items, std::size_t n) {
+/// Resizes `items` to `n` for contents written anew: if it must grow, what it holds is
+/// dropped first, so that nothing is copied, and it grows as makeRoom grows it.
+template <class T> void resizeAnew(std::vector<T>& items, std::size_t n) {
     if (items.capacity() < n)
         items.clear();
     makeRoom(items, n);
+    items.resize(n);
 }
 
 } // namespace jostle

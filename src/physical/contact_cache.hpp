@@ -63,11 +63,7 @@ public:
         return rank;
     }
     /// Ends the counting pass.
-    void endCounting() {
-        const std::uint32_t count = runs_.endCounting();
-        makeEmptyRoom(entries_, count); // each entry is added anew
-        entries_.resize(count);
-    }
+    void endCounting() { resizeAnew(entries_, runs_.endCounting()); }
     /// Filling pass: the contact of rank `rank` among those of `a`. Contacts of different
     /// ranks may be added at once on several threads.
     void add(std::uint32_t a, std::uint32_t rank, std::uint32_t b, const CachedContact& contact) {
