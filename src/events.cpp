@@ -111,12 +111,12 @@ void recordSensor(WorldState& world, std::uint32_t sensor, std::uint32_t visitor
 }
 
 void StepEvents::clearStepLists() {
-    begins.clear();
-    ends.clear();
-    sensorBegins.clear();
-    sensorEnds.clear();
-    crushBegins.clear();
-    crushEnds.clear();
+    clearAfterBurst(begins);
+    clearAfterBurst(ends);
+    clearAfterBurst(sensorBegins);
+    clearAfterBurst(sensorEnds);
+    clearAfterBurst(crushBegins);
+    clearAfterBurst(crushEnds);
     contactsNow.clear();
     sensorsNow.clear();
 }

@@ -24,4 +24,15 @@ template <class T> void resizeAnew(std::vector<T>& items, std::size_t n) {
     items.resize(n);
 }
 
+/// Empties `items`, giving its memory back where it holds far more than it held last: the
+/// lists of one step's events, which a burst (a pile landing at once begins thousands of
+/// contacts in one step, then none) would otherwise keep at the burst's size for good.
+template <class T> void clearAfterBurst(std::vector<T>& items) {
+    constexpr std::size_t kAlwaysKept = 256;
+    if (items.capacity() > 4 * items.size() + kAlwaysKept)
+        std::vector<T>().swap(items);
+    else
+        items.clear();
+}
+
 } // namespace jostle
