@@ -21,6 +21,12 @@ namespace jostle {
 class CreationOrder {
 public:
     /// Appends the body `id`, created last.
+    /// Room for bodies in slots below `slots` without growing again.
+    void reserve(std::size_t slots) {
+        entries_.reserve(slots);
+        positions_.reserve(slots);
+    }
+
     void append(BodyId id) {
         ++changes_;
         if (entries_.size() >= UINT32_MAX) // positions fit 32 bits: fewer bodies than slots

@@ -24,6 +24,14 @@ template <class T> void resizeAnew(std::vector<T>& items, std::size_t n) {
     items.resize(n);
 }
 
+/// The room a table indexed by body slot grows to when it is full and `size` slots are not
+/// enough: half as many again, not double, so that it holds at most a third more than it
+/// needs (doubling left up to half of it empty), for a third more copies as it grows.
+inline std::size_t slotRoomAfter(std::size_t size) {
+    constexpr std::size_t kFirstRoom = 16;
+    return size < kFirstRoom ? kFirstRoom : size + size / 2;
+}
+
 /// Empties `items`, giving its memory back where it holds far more than it held last: the
 /// lists of one step's events, which a burst (a pile landing at once begins thousands of
 /// contacts in one step, then none) would otherwise keep at the burst's size for good.

@@ -3,6 +3,7 @@
 // settings of characters are world_characters.cpp's.
 #include "body_setters.hpp"
 #include "integrate.hpp"
+#include "room.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -30,6 +31,8 @@ BodyId World::createBody(const BodyDef& def) {
     if (shape.kind() != ShapeKind::Box && w.def.solver == Solver::Classic)
         fail("createBody", std::string("BodyDef.") + (def.slope != Vec2{} ? "slope" : "radius") +
                                ": the classic model has sharp boxes only");
+    if (w.freeSlots.empty() && w.slots.size() == w.slots.capacity())
+        w.reserveSlots(slotRoomAfter(w.slots.size()));
     const std::optional<std::uint32_t> taken = takeSlot(w.slots, w.freeSlots);
     if (!taken)
         fail("createBody", "too many bodies");

@@ -91,6 +91,16 @@ struct WorldState {
     std::uint32_t conveyors = 0;
     /// How many live bodies slip round corners (KeptAsGiven::slipsRoundCorners).
     std::uint32_t cornerBodies = 0;
+    /// Makes every table indexed by body slot able to hold `n` slots without growing again
+    /// (createBody grows them together, by room.hpp's slotRoomAfter).
+    void reserveSlots(std::size_t n) {
+        slots.reserve(n);
+        created.reserve(n);
+        shapes.reserve(n);
+        asGiven.reserve(n);
+        events.touching.reserve(n);
+        order.reserve(n);
+    }
     /// Counts the body in `slot` in (`in`) or out of each count above that it belongs to:
     /// when it is made or destroyed, and around a change to its settings.
     void count(std::uint32_t slot, bool in) {

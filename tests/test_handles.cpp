@@ -346,5 +346,20 @@ TEST(CreationOrder, BodiesDestroyedInACallbackLeaveTheOrderAtOnce) {
     EXPECT_EQ(std::vector<BodyId>(world.bodies().begin(), world.bodies().end()), expected);
 }
 
+// The body tables grow by half, not double (room.hpp's slotRoomAfter): 10,003 bodies,
+// just past a power of two, held room for 16,384 (128 bytes a Body), a third of it empty.
+TEST(SlotTables, GrowByHalfSoThatAWorldHoldsAtMostAThirdMoreSlotsThanItsBodies) {
+    World world;
+    for (int i = 0; i < 10'003; ++i)
+        world.createBody({.x = 2.0f * float(i), .hw = 0.5f, .hh = 0.5f});
+    const WorldState& w = WorldAccess::state(world);
+    const std::size_t most = w.slots.size() + w.slots.size() / 3 + 16;
+    EXPECT_LE(w.slots.capacity(), most);
+    EXPECT_LE(w.created.capacity(), most);
+    EXPECT_LE(w.shapes.capacity(), most);
+    EXPECT_LE(w.asGiven.capacity(), most);
+    EXPECT_LE(w.events.touching.capacity(), most);
+}
+
 } // namespace
 } // namespace jostle
