@@ -11,6 +11,7 @@
 #include <atomic>
 #include <cstdlib>
 #include <new>
+#include <utility>
 #include <vector>
 
 namespace {
@@ -109,6 +110,46 @@ TEST(PileMemory, TheEventListsGiveBackTheMemoryOfABurst) {
     world.step(1.0f / 60.0f);
     ASSERT_TRUE(world.contactBegins().empty());
     EXPECT_GE(heldAfterTheBurst, allocated.load() + kBoxes * sizeof(ContactEvent));
+}
+
+/// A job system that runs each task on the calling thread: a step shares its work, and
+/// keeps what sharing needs, with no second thread.
+void* runAtOnce(TaskFn task, std::uint32_t items, std::uint32_t, void* taskContext, void*) {
+    task(0, items, 0, taskContext);
+    return nullptr;
+}
+void finishAtOnce(void*, void*) {}
+
+/// The bytes a world of columns of boxes on a floor holds after some steps, and how many
+/// pairs touch in it.
+std::pair<std::size_t, std::size_t> heldByColumns(const TaskSystem& tasks) {
+    const std::size_t before = allocated.load();
+    World world(WorldDef{.gravity = {0, 10}, .tasks = tasks});
+    world.createBody({.type = BodyType::Static, .x = 0, .y = 1, .hw = 3000, .hh = 1});
+    for (int column = 0; column < 100; ++column)
+        for (int row = 0; row < 40; ++row)
+            world.createBody(
+                {.x = 4.0f * float(column), .y = -0.5f - float(row), .hw = 0.5f, .hh = 0.5f});
+    std::size_t touching = 0;
+    for (int step = 0; step < 10; ++step) {
+        world.step(1.0f / 60.0f);
+        touching = 0;
+        for (BodyId body : world.bodies())
+            touching += world.contacts(body).size();
+    }
+    return {allocated.load() - before, touching / 2};
+}
+
+// Listing the touching pairs on several workers kept each block's pairs in a list of its
+// own (36 bytes a pair) before listing them all: 120 bytes a body more than one worker
+// held in a pyramid of 100 rows. Now a pair's two flags (2 bytes) are all it keeps beside.
+TEST(PileMemory, StepsSharedAmongWorkersKeepNoSecondListOfTheTouchingPairs) {
+    const auto [alone, touching] = heldByColumns({});
+    const auto [shared, touchingShared] =
+        heldByColumns({.workers = 2, .enqueueTask = &runAtOnce, .finishTask = &finishAtOnce});
+    ASSERT_EQ(touching, touchingShared);
+    ASSERT_GE(touching, 4'000u);
+    EXPECT_LT(shared, alone + 16 * touching) << alone << " bytes alone";
 }
 
 TEST(Snapshots, ASnapshotIntoABufferBigEnoughAndAStateHashAllocateNothing) {

@@ -85,44 +85,84 @@ void reportCrushes(StepContext& step) {
     });
 }
 
+/// Whether contact `c` touches where the step leaves its bodies.
+bool touchesAtTheEnd(const StepContext& step, const Contact& c) {
+    // The solver bodies hold where the step leaves every body of a contact.
+    const float gap = -step.overlapOf(c);
+    const float skin =
+        std::max(2.0f * c.slop, kMinimumSkin * (c.axis == kAlongSlope ? c.size : c.extent));
+    // A pair that collided touched this step, if only for a moment: a bounce from the
+    // middle of the step ends it apart.
+    return gap <= skin || c.collisionImpulse > 0.0f;
+}
+
+FoundTouch touchOf(const StepContext& step, const Contact& c) {
+    return findTouch(step.world, step.bodies[c.ia].slot, step.bodies[c.ib].slot, c.normal(),
+                     c.approachSpeed, c.totalImpulse());
+}
+
+/// A contact's entry in ReportScratch::touches: it touches, and the flags of its record's
+/// two bodies (TouchingBit: four bits each).
+constexpr std::uint16_t kTouches = 0x100;
+
+/// Lists the touching contacts, in contact order, and finds the crush candidates. On one
+/// thread, each is listed as it is found. Shared among the workers, each contact that
+/// touches writes its record at its own index and its bodies' flags beside it, and one
+/// pass then closes the gaps and sets the flags in contact order: the same list and the
+/// same flags, in the list's own room.
+void listTouches(StepContext& step) {
+    WorldState& w = step.world;
+    ReportScratch& scratch = step.scratch.report;
+    std::vector<TouchRecord>& records = w.events.contactsNow;
+    const auto count = std::uint32_t(step.contacts.size());
+    scratch.crushCandidates.reset(w.tasks->blocksOf(count, kContactsPerReportBlock));
+    const bool inOrder = !w.tasks->sharing();
+    const std::size_t listed = records.size();
+    // At most a record a contact.
+    makeRoom(records, listed + count);
+    if (!inOrder) {
+        resizeAnew(scratch.touches, count);
+        records.resize(listed + count);
+    }
+    w.tasks->forEachBlock(count, kContactsPerReportBlock, [&](Block block) {
+        for (std::uint32_t k = block.begin; k < block.end; ++k) {
+            const Contact& c = step.contacts[k];
+            const bool touches = touchesAtTheEnd(step, c);
+            if (touches && inOrder) {
+                listTouch(w, touchOf(step, c));
+            } else if (touches) {
+                const FoundTouch touch = touchOf(step, c);
+                records[listed + k] = touch.record;
+                scratch.touches[k] = std::uint16_t(kTouches | touch.flagA | touch.flagB << 4);
+            } else if (!inOrder) {
+                scratch.touches[k] = 0;
+            }
+            // Only a dynamic body against an infinitely heavy one can be crushed.
+            if ((c.invMassA == 0.0f) != (c.invMassB == 0.0f))
+                findCrush(w, c, step.bodies[c.ia].slot, step.bodies[c.ib].slot, step.overlapOf(c),
+                          scratch.crushCandidates[block.index]);
+        }
+    });
+    if (inOrder)
+        return;
+    std::size_t at = listed;
+    for (std::uint32_t k = 0; k < count; ++k) {
+        const std::uint16_t touch = scratch.touches[k];
+        if (touch == 0)
+            continue;
+        const TouchRecord record = records[listed + k];
+        w.events.touching[record.a.index] |= std::uint8_t(touch & 0xF);
+        w.events.touching[record.b.index] |= std::uint8_t(touch >> 4 & 0xF);
+        records[at++] = record;
+    }
+    records.resize(at);
+}
+
 } // namespace
 
 void reportEvents(StepContext& step) {
     WorldState& w = step.world;
-    ReportScratch& scratch = step.scratch.report;
-    const auto count = std::uint32_t(step.contacts.size());
-    const std::uint32_t blocks = w.tasks->blocksOf(count, kContactsPerReportBlock);
-    scratch.touches.reset(blocks);
-    scratch.crushCandidates.reset(blocks);
-    // At most a record a contact.
-    makeRoom(w.events.contactsNow, count);
-    // Blocks not shared run in order, on this thread: what they find is listed at once.
-    const bool inOrder = !w.tasks->sharing();
-    w.tasks->forEachBlock(count, kContactsPerReportBlock, [&](Block block) {
-        std::vector<FoundTouch>& touches = scratch.touches[block.index];
-        for (std::uint32_t k = block.begin; k < block.end; ++k) {
-            const Contact& c = step.contacts[k];
-            // The solver bodies hold where the step leaves every body of a contact.
-            const float gap = -step.overlapOf(c);
-            const float skin =
-                std::max(2.0f * c.slop, kMinimumSkin * (c.axis == kAlongSlope ? c.size : c.extent));
-            const std::uint32_t slotA = step.bodies[c.ia].slot, slotB = step.bodies[c.ib].slot;
-            // A pair that collided touched this step, if only for a moment: a bounce from
-            // the middle of the step ends it apart.
-            if (gap <= skin || c.collisionImpulse > 0.0f) {
-                if (inOrder)
-                    listTouch(w, findTouch(w, slotA, slotB, c.normal(), c.approachSpeed,
-                                           c.totalImpulse()));
-                else
-                    touches.push_back(
-                        findTouch(w, slotA, slotB, c.normal(), c.approachSpeed, c.totalImpulse()));
-            }
-            // Only a dynamic body against an infinitely heavy one can be crushed.
-            if ((c.invMassA == 0.0f) != (c.invMassB == 0.0f))
-                findCrush(w, c, slotA, slotB, -gap, scratch.crushCandidates[block.index]);
-        }
-    });
-    scratch.touches.forEachInOrder([&](const FoundTouch& touch) { listTouch(w, touch); });
+    listTouches(step);
     for (const BodyPair& pair : step.scratch.sensorPairs) {
         if (!w.isLive(pair.a) || !w.isLive(pair.b))
             continue;

@@ -22,7 +22,9 @@ struct CrushCandidate {
 
 /// What each block of contacts found, read back in block order (report.cpp).
 struct ReportScratch {
-    PerBlock<FoundTouch> touches;
+    /// Shared among the workers: whether each contact touches at the end of the step, with
+    /// its bodies' touching flags (report.cpp's listTouches).
+    std::vector<std::uint16_t> touches;
     PerBlock<CrushCandidate> crushCandidates;
 };
 
