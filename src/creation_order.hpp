@@ -20,13 +20,13 @@ namespace jostle {
 /// list, and whenever the list is read (live()), which is the only way to read it.
 class CreationOrder {
 public:
-    /// Appends the body `id`, created last.
     /// Room for bodies in slots below `slots` without growing again.
     void reserve(std::size_t slots) {
         entries_.reserve(slots);
         positions_.reserve(slots);
     }
 
+    /// Appends the body `id`, created last.
     void append(BodyId id) {
         ++changes_;
         if (entries_.size() >= UINT32_MAX) // positions fit 32 bits: fewer bodies than slots

@@ -20,11 +20,12 @@ struct CrushCandidate {
     Vec2 into; ///< from the kinematic body into the dynamic one
 };
 
-/// What each block of contacts found, read back in block order (report.cpp).
+/// What listing the touching contacts keeps on the side (report.cpp).
 struct ReportScratch {
     /// Shared among the workers: whether each contact touches at the end of the step, with
     /// its bodies' touching flags (report.cpp's listTouches).
     std::vector<std::uint16_t> touches;
+    /// What each block of contacts found, read back in block order.
     PerBlock<CrushCandidate> crushCandidates;
 };
 
