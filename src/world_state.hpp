@@ -11,10 +11,12 @@
 #include "jostle/world.hpp"
 #include "physical/contact_cache.hpp"
 #include "query_index.hpp"
+#include "room.hpp"
 #include "shapes.hpp"
 #include "tasks.hpp"
 #include "tilemap.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -216,9 +218,12 @@ struct WorldState {
 
 private:
     void listMovers() const {
+        auto moves = [&](BodyId id) { return slots[id.index].type != BodyType::Static; };
+        const std::span<const BodyId> live = order.live();
         movers_.clear();
-        for (BodyId id : order.live())
-            if (slots[id.index].type != BodyType::Static)
+        makeRoom(movers_, std::size_t(std::count_if(live.begin(), live.end(), moves)));
+        for (BodyId id : live)
+            if (moves(id))
                 movers_.push_back(id);
         moversAt_ = order.changes();
         moversTypesAt_ = typeChanges;
