@@ -49,7 +49,7 @@ void storeImpulses(StepContext& step) {
     ContactCache& cache = w.contactCache;
     const auto count = std::uint32_t(step.contacts.size());
     std::vector<std::uint32_t>& ranks = step.scratch.store.ranks;
-    resizeAnew(ranks, count);
+    resizeAnewToFit(ranks, count);
     cache.beginRebuild(w.slots.size());
     for (std::uint32_t k = 0; k < count; ++k)
         ranks[k] = cache.count(step.bodies[step.contacts[k].ia].slot);

@@ -63,7 +63,7 @@ public:
         return rank;
     }
     /// Ends the counting pass.
-    void endCounting() { resizeAnew(entries_, runs_.endCounting()); }
+    void endCounting() { resizeAnewToFit(entries_, runs_.endCounting()); }
     /// Filling pass: the contact of rank `rank` among those of `a`. Contacts of different
     /// ranks may be added at once on several threads.
     void add(std::uint32_t a, std::uint32_t rank, std::uint32_t b, const CachedContact& contact) {

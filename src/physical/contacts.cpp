@@ -171,9 +171,9 @@ void buildInParallel(StepContext& step) {
     WorldState& w = step.world;
     const std::vector<BodyPair>& pairs = w.pairs;
     std::vector<std::uint8_t>& made = step.scratch.contactsBuild.made;
-    resizeAnew(made, pairs.size());
+    resizeAnewToFit(made, pairs.size());
     // Last step's contacts are overwritten, not made anew first: only the rest are.
-    resizeAnew(step.contacts, pairs.size());
+    resizeAnewToFit(step.contacts, pairs.size());
     w.tasks->forEachBlock(std::uint32_t(pairs.size()), kPairsPerBlock, [&](Block block) {
         for (std::uint32_t k = block.begin; k < block.end; ++k) {
             // The reads of a pair are scattered over memory: ask for them a few pairs ahead.

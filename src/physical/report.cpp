@@ -121,7 +121,7 @@ void listTouches(StepContext& step) {
     // At most a record a contact.
     makeRoom(records, listed + count);
     if (!inOrder) {
-        resizeAnew(scratch.touches, count);
+        resizeAnewToFit(scratch.touches, count);
         records.resize(listed + count);
     }
     w.tasks->forEachBlock(count, kContactsPerReportBlock, [&](Block block) {
