@@ -27,12 +27,17 @@ inline FoundTouch findTouch(const WorldState& world, std::uint32_t body, std::ui
             flagBody};
 }
 
+/// Sets the touching flags of `record`'s two bodies: `flagA` a's, `flagB` b's.
+inline void flagTouch(StepEvents& events, const TouchRecord& record, TouchingBit flagA,
+                      TouchingBit flagB) {
+    events.touching[record.a.index] |= flagA;
+    events.touching[record.b.index] |= flagB;
+}
+
 /// Lists a touch found by findTouch and sets both bodies' touching flags.
 inline void listTouch(WorldState& world, const FoundTouch& touch) {
-    StepEvents& events = world.events;
-    events.touching[touch.record.a.index] |= touch.flagA;
-    events.touching[touch.record.b.index] |= touch.flagB;
-    events.contactsNow.push_back(touch.record);
+    flagTouch(world.events, touch.record, touch.flagA, touch.flagB);
+    world.events.contactsNow.push_back(touch.record);
 }
 
 } // namespace jostle

@@ -85,10 +85,11 @@ void reportCrushes(StepContext& step) {
     });
 }
 
-/// Whether contact `c` touches where the step leaves its bodies.
-bool touchesAtTheEnd(const StepContext& step, const Contact& c) {
-    // The solver bodies hold where the step leaves every body of a contact.
-    const float gap = -step.overlapOf(c);
+/// Whether contact `c` touches where the step leaves its bodies, which overlap by
+/// `overlap` along its normal (StepContext::overlapOf: the solver bodies hold where the step
+/// leaves every body of a contact).
+bool touchesAtTheEnd(const Contact& c, float overlap) {
+    const float gap = -overlap;
     const float skin =
         std::max(2.0f * c.slop, kMinimumSkin * (c.axis == kAlongSlope ? c.size : c.extent));
     // A pair that collided touched this step, if only for a moment: a bounce from the
@@ -127,19 +128,21 @@ void listTouches(StepContext& step) {
     w.tasks->forEachBlock(count, kContactsPerReportBlock, [&](Block block) {
         for (std::uint32_t k = block.begin; k < block.end; ++k) {
             const Contact& c = step.contacts[k];
-            const bool touches = touchesAtTheEnd(step, c);
-            if (touches && inOrder) {
-                listTouch(w, touchOf(step, c));
+            const float overlap = step.overlapOf(c);
+            const bool touches = touchesAtTheEnd(c, overlap);
+            if (inOrder) {
+                if (touches)
+                    listTouch(w, touchOf(step, c));
             } else if (touches) {
                 const FoundTouch touch = touchOf(step, c);
                 records[listed + k] = touch.record;
                 scratch.touches[k] = std::uint16_t(kTouches | touch.flagA | touch.flagB << 4);
-            } else if (!inOrder) {
+            } else {
                 scratch.touches[k] = 0;
             }
             // Only a dynamic body against an infinitely heavy one can be crushed.
             if ((c.invMassA == 0.0f) != (c.invMassB == 0.0f))
-                findCrush(w, c, step.bodies[c.ia].slot, step.bodies[c.ib].slot, step.overlapOf(c),
+                findCrush(w, c, step.bodies[c.ia].slot, step.bodies[c.ib].slot, overlap,
                           scratch.crushCandidates[block.index]);
         }
     });
@@ -151,8 +154,7 @@ void listTouches(StepContext& step) {
         if (touch == 0)
             continue;
         const TouchRecord record = records[listed + k];
-        w.events.touching[record.a.index] |= std::uint8_t(touch & 0xF);
-        w.events.touching[record.b.index] |= std::uint8_t(touch >> 4 & 0xF);
+        flagTouch(w.events, record, TouchingBit(touch & 0xF), TouchingBit(touch >> 4 & 0xF));
         records[at++] = record;
     }
     records.resize(at);
