@@ -6,6 +6,7 @@
 #include "jostle/world.hpp"
 #include "snapshot/access.hpp"
 #include "snapshot/xxhash64.hpp"
+#include "world_access.hpp"
 
 #include <gtest/gtest.h>
 
@@ -69,6 +70,68 @@ TEST(Snapshots, ARestoredWorldSnapshotsToTheSameBytesAndHash) {
     EXPECT_EQ(other.snapshot(), saved);
     EXPECT_EQ(other.stateHash(), busy.world.stateHash());
     EXPECT_EQ(other.bodyCount(), busy.world.bodyCount());
+}
+
+/// The last step's touching pairs of `world`, as the events compare them.
+std::vector<TouchRecord> touchingOf(const World& world) {
+    return WorldAccess::state(world).events.touchingBefore();
+}
+
+bool sameRecords(const std::vector<TouchRecord>& x, const std::vector<TouchRecord>& y) {
+    return x.size() == y.size() &&
+           std::memcmp(x.data(), y.data(), x.size() * sizeof(TouchRecord)) == 0;
+}
+
+/// Restored from `world`'s snapshot, a world holds its touching pairs to the bit, in order.
+void expectTouchingComesBack(const World& world) {
+    World restored;
+    restored.restore(world.snapshot());
+    EXPECT_TRUE(sameRecords(touchingOf(restored), touchingOf(world)));
+}
+
+TEST(Snapshots, TheTouchingPairsComeBackToTheBitInTheirOrder) {
+    // The events compare the next step's pairs with these: each kind of list comes back as
+    // it was (a format that writes a pair with its contact cache entry must keep this).
+    for (Solver solver : {Solver::Physical, Solver::Classic}) { // the classic: no cache
+        BusyWorld busy(solver);
+        for (int step = 0; step < 250; ++step)
+            busy.step();
+        ASSERT_GT(touchingOf(busy.world).size(), 50u);
+        expectTouchingComesBack(busy.world);
+    }
+    // A floor under 40 boxes: a run of the cache longer than 16, lying by the other slot,
+    // and the floor is created last, so that each pair's first body is the box.
+    World row(WorldDef{.gravity = {0, 600}});
+    for (int i = 0; i < 40; ++i)
+        row.createBody({.x = 10.0f * float(i), .y = -5.0f, .hw = 5, .hh = 5});
+    const BodyId floor = row.createBody({.type = BodyType::Static, .y = 10, .hw = 500, .hh = 10});
+    for (int step = 0; step < 20; ++step)
+        row.step(kDt);
+    EXPECT_EQ(row.contacts(floor).size(), 40u);
+    expectTouchingComesBack(row);
+    // Columns asleep among awake ones: the sleepers' pairs are carried over, with no cache
+    // entry, between the others'.
+    World columns(WorldDef{.gravity = {0, 600}});
+    columns.createBody({.type = BodyType::Static, .y = 10, .hw = 500, .hh = 10});
+    std::vector<BodyId> bottoms;
+    for (int r = 0; r < 4; ++r)
+        for (int c = 0; c < 6; ++c) {
+            const BodyId id = columns.createBody(
+                {.x = 30.0f * float(c), .y = -5.0f - 10.0f * float(r), .hw = 5, .hh = 5});
+            if (r == 0)
+                bottoms.push_back(id);
+        }
+    for (int step = 0; step < 300; ++step)
+        columns.step(kDt);
+    for (int step = 0; step < 5; ++step) {
+        for (std::size_t c = 1; c < bottoms.size(); c += 2)
+            columns.wake(bottoms[c]);
+        columns.step(kDt);
+    }
+    ASSERT_FALSE(columns.isAwake(bottoms[0]));
+    ASSERT_TRUE(columns.isAwake(bottoms[1]));
+    EXPECT_EQ(touchingOf(columns).size(), 24u);
+    expectTouchingComesBack(columns);
 }
 
 /// Steps `scene` `steps` steps, snapshots it, steps `steps` more; then restores the
