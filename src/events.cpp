@@ -38,15 +38,11 @@ constexpr std::size_t kSlotsPerRecordForCounting = 16;
 /// Sorts `records` by pair (a's slot, then b's), stably: in two counting sorts, by b then
 /// by a, or, where the records are few against the slots, in a merge sort by the pair.
 /// A slot holds one body at a time, so within one list the pair of slots names the pair.
-/// A list already in order (the physical model lists its contacts so) is left as it is.
 void sortByPair(std::vector<TouchRecord>& records, std::vector<TouchRecord>& scratch,
                 Buckets& buckets, std::size_t slotCount) {
-    const auto byPair = [](const TouchRecord& x, const TouchRecord& y) {
-        return x.key() < y.key();
-    };
     // Nothing to sort (no sensors, most steps): leave the buffers, sized by the last
     // sort, as they are.
-    if (std::is_sorted(records.begin(), records.end(), byPair))
+    if (records.size() < 2)
         return;
     if (records.size() * kSlotsPerRecordForCounting < slotCount) {
         mergeSortByKey(
@@ -62,23 +58,22 @@ void sortByPair(std::vector<TouchRecord>& records, std::vector<TouchRecord>& scr
 /// Walks this step's pairs (`now`, sorted) beside the last step's (`before`, sorted):
 /// pairs only in `now` begin; pairs only in `before` end, unless the step did not look
 /// at them (then they carry over); a slot pair holding other bodies than before ends
-/// and begins. `before` becomes the new list: `now`, and the pairs carried over among
-/// them, each after this step's pairs of its key. `carried` is scratch.
+/// and begins. `before` becomes the new list.
 template <class NotEvaluated, class OnBegin, class OnEnd>
 void compare(const WorldState& world, std::vector<TouchRecord>& now,
-             std::vector<TouchRecord>& before, std::vector<std::uint8_t>& carried,
+             std::vector<TouchRecord>& before, std::vector<TouchRecord>& out,
              NotEvaluated&& notEvaluated, OnBegin&& begin, OnEnd&& end) {
-    // In order, the events; and which of `before` carry over.
-    std::size_t carriedCount = 0;
-    resizeAnew(carried, before.size());
+    out.clear();
+    // It holds this step's pairs and those carried over: about the longer of the two lists.
+    makeRoom(out, std::max(now.size(), before.size()));
     std::size_t i = 0, j = 0;
     while (i < now.size() || j < before.size()) {
         if (j == before.size() || (i < now.size() && now[i].key() < before[j].key())) {
-            begin(now[i++]);
+            begin(now[i]);
+            out.push_back(now[i++]);
         } else if (i == now.size() || before[j].key() < now[i].key()) {
-            carried[j] = notEvaluated(world, before[j]) ? 1 : 0;
-            if (carried[j] != 0)
-                ++carriedCount;
+            if (notEvaluated(world, before[j]))
+                out.push_back(before[j]);
             else
                 end(before[j]);
             ++j;
@@ -87,27 +82,11 @@ void compare(const WorldState& world, std::vector<TouchRecord>& now,
                 end(before[j]);
                 begin(now[i]);
             }
-            carried[j] = 0;
-            ++i;
+            out.push_back(now[i++]);
             ++j;
         }
     }
-    // Then the new list, in `now`'s own room: from the back, so that no record is
-    // overwritten before it is read.
-    if (carriedCount != 0) {
-        std::size_t w = now.size() + carriedCount;
-        i = now.size();
-        j = before.size();
-        makeRoom(now, w);
-        now.resize(w);
-        while (j > 0) {
-            if (i > 0 && now[i - 1].key() > before[j - 1].key())
-                now[--w] = now[--i];
-            else if (carried[--j] != 0)
-                now[--w] = before[j];
-        }
-    }
-    before.swap(now);
+    before.swap(out);
     now.clear();
 }
 
@@ -173,7 +152,7 @@ void StepEvents::publish(const WorldState& world, bool anyAwake) {
     destroyedSincePublish = false;
     sortByPair(contactsNow, contactScratch_, buckets_, world.slots.size());
     compare(
-        world, contactsNow, contactsBefore_, carried_, contactNotEvaluated,
+        world, contactsNow, contactsBefore_, contactScratch_, contactNotEvaluated,
         [&](const TouchRecord& r) {
             begins.push_back(
                 {world.idFor(r.a), world.idFor(r.b), r.normal, r.approachSpeed, pointOf(world, r)});
@@ -187,7 +166,7 @@ void StepEvents::publish(const WorldState& world, bool anyAwake) {
     }
     sortByPair(sensorsNow, sensorScratch_, buckets_, world.slots.size());
     compare(
-        world, sensorsNow, sensorsBefore_, carried_, sensorNotEvaluated,
+        world, sensorsNow, sensorsBefore_, sensorScratch_, sensorNotEvaluated,
         [&](const TouchRecord& r) {
             sensorBegins.push_back({world.idFor(r.a), world.idFor(r.b)});
         },

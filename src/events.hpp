@@ -79,13 +79,11 @@ private:
     void clearStepLists();
     friend struct snapshot::Access; // saves and restores the last step's records
     std::vector<TouchRecord> contactsBefore_, sensorsBefore_;
-    /// The sorts' buffers, one for each list: sensors' swapped with the contacts' would
-    /// leave a contact-sized buffer in sensorsBefore_. The physical model's contacts come
-    /// in order, and never use theirs.
+    /// The sorts' and comparisons' buffers, one for each list: sensors' swapped with the
+    /// contacts' would leave a contact-sized buffer in sensorsBefore_ (125 bytes a body in
+    /// a pyramid with no sensor).
     std::vector<TouchRecord> contactScratch_, sensorScratch_;
     Buckets buckets_;
-    /// The comparison's: which of the last step's pairs carry over.
-    std::vector<std::uint8_t> carried_;
     /// contactsBefore_ by slot: each slot's run of indices into it (forEachTouchOf).
     mutable std::mutex indexMutex_;
     mutable bool indexed_ = false;

@@ -72,23 +72,6 @@ public:
     /// Ends the rebuild: sorts the long runs, on `tasks`' workers.
     void endRebuild(TaskRunner& tasks);
 
-    /// After a rebuild: where the contact of rank `rank` among those of `a` was counted.
-    /// The places run through the contacts by `a`, then in the step's order, except in
-    /// the runs that endRebuild sorted (forEachSortedRun).
-    std::uint32_t countedPlace(std::uint32_t a, std::uint32_t rank) const {
-        return runs_.begin(a) + rank;
-    }
-    /// After a rebuild: visit(begin, end, countedAt) for each run sorted by the other slot,
-    /// [begin, end) its places; countedAt(place) is the counted place of the contact that
-    /// lies there now.
-    template <class Visit> void forEachSortedRun(Visit&& visit) const {
-        for (const std::uint32_t a : longRuns_) {
-            const std::uint32_t begin = runs_.begin(a);
-            visit(begin, runs_.end(a),
-                  [&](std::uint32_t place) { return begin + entries_[place].rank; });
-        }
-    }
-
 private:
     friend struct snapshot::Access; // saves and restores the entries as they lie
     /// Runs longer than this are sorted and searched by halves.

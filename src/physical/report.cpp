@@ -106,77 +106,56 @@ FoundTouch touchOf(const StepContext& step, const Contact& c) {
 /// two bodies (TouchingBit: four bits each).
 constexpr std::uint16_t kTouches = 0x100;
 
-/// Puts the records of each run the contact cache sorted by the other slot (a floor's, a
-/// crowd's) in that order: by pair, then in the step's order.
-void followSortedRuns(StepContext& step, std::size_t listed) {
-    std::vector<TouchRecord>& records = step.world.events.contactsNow;
-    ReportScratch& scratch = step.scratch.report;
-    step.world.contactCache.forEachSortedRun(
-        [&](std::uint32_t begin, std::uint32_t end, auto countedAt) {
-            scratch.runRecords.clear();
-            scratch.runTouches.clear();
-            for (std::uint32_t place = begin; place < end; ++place) {
-                const std::uint32_t from = countedAt(place);
-                scratch.runRecords.push_back(records[listed + from]);
-                scratch.runTouches.push_back(scratch.touches[from]);
-            }
-            std::copy(scratch.runRecords.begin(), scratch.runRecords.end(),
-                      records.begin() + std::ptrdiff_t(listed + begin));
-            std::copy(scratch.runTouches.begin(), scratch.runTouches.end(),
-                      scratch.touches.begin() + begin);
-        });
-}
-
-/// Lists the touching contacts by pair (a's slot, then b's, then the step's order: what
-/// sorting the contact order by pair gives, so the events need not sort them), and finds
-/// the crush candidates. Each contact that touches writes its record where the contact
-/// cache counted it (by a's slot, then in the step's order), on any thread, its bodies'
-/// flags beside it; then, on the calling thread, the runs the cache sorted are followed,
-/// one pass closes the gaps and sets the flags, and each of a's few pairs is moved to its
-/// place among them.
+/// Lists the touching contacts, in contact order, and finds the crush candidates. On one
+/// thread, each is listed as it is found. Shared among the workers, each contact that
+/// touches writes its record at its own index and its bodies' flags beside it, and one
+/// pass then closes the gaps and sets the flags in contact order: the same list and the
+/// same flags, in the list's own room.
 void listTouches(StepContext& step) {
     WorldState& w = step.world;
     ReportScratch& scratch = step.scratch.report;
     std::vector<TouchRecord>& records = w.events.contactsNow;
     const auto count = std::uint32_t(step.contacts.size());
     scratch.crushCandidates.reset(w.tasks->blocksOf(count, kContactsPerReportBlock));
+    const bool inOrder = !w.tasks->sharing();
     const std::size_t listed = records.size();
     // At most a record a contact.
     makeRoom(records, listed + count);
-    records.resize(listed + count);
-    resizeAnewToFit(scratch.touches, count);
-    const std::vector<std::uint32_t>& ranks = step.scratch.store.ranks;
+    if (!inOrder) {
+        resizeAnewToFit(scratch.touches, count);
+        records.resize(listed + count);
+    }
     w.tasks->forEachBlock(count, kContactsPerReportBlock, [&](Block block) {
         for (std::uint32_t k = block.begin; k < block.end; ++k) {
             const Contact& c = step.contacts[k];
-            const std::uint32_t slotA = step.bodies[c.ia].slot, slotB = step.bodies[c.ib].slot;
-            const std::uint32_t place = w.contactCache.countedPlace(slotA, ranks[k]);
             const float overlap = step.overlapOf(c);
-            if (touchesAtTheEnd(c, overlap)) {
+            const bool touches = touchesAtTheEnd(c, overlap);
+            if (inOrder) {
+                if (touches)
+                    listTouch(w, touchOf(step, c));
+            } else if (touches) {
                 const FoundTouch touch = touchOf(step, c);
-                records[listed + place] = touch.record;
-                scratch.touches[place] = std::uint16_t(kTouches | touch.flagA | touch.flagB << 4);
+                records[listed + k] = touch.record;
+                scratch.touches[k] = std::uint16_t(kTouches | touch.flagA | touch.flagB << 4);
             } else {
-                scratch.touches[place] = 0;
+                scratch.touches[k] = 0;
             }
             // Only a dynamic body against an infinitely heavy one can be crushed.
             if ((c.invMassA == 0.0f) != (c.invMassB == 0.0f))
-                findCrush(w, c, slotA, slotB, overlap, scratch.crushCandidates[block.index]);
+                findCrush(w, c, step.bodies[c.ia].slot, step.bodies[c.ib].slot, overlap,
+                          scratch.crushCandidates[block.index]);
         }
     });
-    followSortedRuns(step, listed);
+    if (inOrder)
+        return;
     std::size_t at = listed;
-    for (std::uint32_t place = 0; place < count; ++place) {
-        const std::uint16_t touch = scratch.touches[place];
+    for (std::uint32_t k = 0; k < count; ++k) {
+        const std::uint16_t touch = scratch.touches[k];
         if (touch == 0)
             continue;
-        const TouchRecord record = records[listed + place];
+        const TouchRecord record = records[listed + k];
         flagTouch(w.events, record, TouchingBit(touch & 0xF), TouchingBit(touch >> 4 & 0xF));
-        // Among the pairs of a's run, after those of a smaller b (a's runs come in order).
-        std::size_t to = at++;
-        for (; to > listed && record.key() < records[to - 1].key(); --to)
-            records[to] = records[to - 1];
-        records[to] = record;
+        records[at++] = record;
     }
     records.resize(at);
 }

@@ -23,12 +23,8 @@ struct CrushCandidate {
 /// What listing the touching contacts keeps on the side (report.cpp).
 struct ReportScratch {
     /// Shared among the workers: whether each contact touches at the end of the step, with
-    /// its bodies' touching flags, at the contact's place in the contact cache
-    /// (report.cpp's listTouches).
+    /// its bodies' touching flags (report.cpp's listTouches).
     std::vector<std::uint16_t> touches;
-    /// One sorted run of the contact cache's records and touches, as it is followed.
-    std::vector<TouchRecord> runRecords;
-    std::vector<std::uint16_t> runTouches;
     /// What each block of contacts found, read back in block order.
     PerBlock<CrushCandidate> crushCandidates;
 };
