@@ -93,6 +93,47 @@ TEST(Events, FallingAsleepEndsNothing) {
     EXPECT_TRUE(level.world.touching(box).floor);
 }
 
+// Columns asleep between columns kept awake, made row by row so that their pairs lie among
+// each other's by slot: each step the awake columns' pairs are this step's list and the
+// sleeping ones carry over into it, in order. Nothing begins or ends, and every box still
+// touches what it rests on and what rests on it.
+TEST(Events, PairsOfSleepingColumnsCarryOverAmongAwakeOnes) {
+    Level level(Solver::Physical, true);
+    constexpr int kColumns = 6, kRows = 4;
+    std::vector<std::vector<BodyId>> columns(kColumns);
+    for (int row = 0; row < kRows; ++row)
+        for (int column = 0; column < kColumns; ++column)
+            columns[std::size_t(column)].push_back(level.world.createBody(
+                {.x = 30.0f * float(column), .y = -5.0f - 10.0f * float(row), .hw = 5, .hh = 5}));
+    level.run(300);
+    for (const auto& column : columns)
+        ASSERT_FALSE(level.world.isAwake(column[0]));
+    level.begins.clear();
+    for (int step = 0; step < 30; ++step) {
+        for (int column = 1; column < kColumns; column += 2)
+            level.world.wake(columns[std::size_t(column)][0]);
+        level.run(1);
+    }
+    EXPECT_TRUE(level.begins.empty());
+    EXPECT_TRUE(level.ends.empty());
+    for (int column = 0; column < kColumns; ++column) {
+        const auto& boxes = columns[std::size_t(column)];
+        EXPECT_EQ(level.world.isAwake(boxes[0]), column % 2 == 1) << "column " << column;
+        for (int row = 0; row < kRows; ++row) {
+            std::vector<BodyId> expected{row == 0 ? level.floor : boxes[std::size_t(row - 1)]};
+            if (row + 1 < kRows)
+                expected.push_back(boxes[std::size_t(row + 1)]);
+            std::vector<BodyId> found;
+            for (const ContactInfo& contact : level.world.contacts(boxes[std::size_t(row)]))
+                found.push_back(contact.other);
+            const auto bySlot = [](BodyId x, BodyId y) { return x.index < y.index; };
+            std::sort(expected.begin(), expected.end(), bySlot);
+            std::sort(found.begin(), found.end(), bySlot);
+            EXPECT_EQ(found, expected) << "column " << column << ", row " << row;
+        }
+    }
+}
+
 TEST(Touching, WallsAndCeilingRelativeToGravity) {
     Level level;
     // Walls at x = ±20 (inner faces), a ceiling with its bottom face at y = -40.
