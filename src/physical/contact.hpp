@@ -26,8 +26,8 @@ struct SolverBody {
 struct Contact {
     std::uint32_t ia, ib; ///< solver bodies; a is the body created first
     /// The normal points from b towards a along one axis (kAlongX, kAlongY), with this
-    /// sign; the tangent is the other axis, with its own sign (the normal turned a quarter,
-    /// (-ny, nx)). kAlongSlope: along `sloped`, the tangent (-ny, nx).
+    /// sign; the tangent is the other axis, with tangentSign() (the normal turned a
+    /// quarter, (-ny, nx)). kAlongSlope: along `sloped` (sign 1), the tangent (-ny, nx).
     Axis axis;
     /// Which body holds the other, staying put in shock propagation and position
     /// correction (support.hpp says when): 0 none, 1 a, 2 b.
@@ -36,7 +36,7 @@ struct Contact {
     /// walkAlongSlope): at rest on the floor along the normal, and set by how fast the two
     /// move along it.
     bool walksAlongSlope = false;
-    float sign, tangentSign;
+    float sign;
     /// The value of the centres' offset along the normal, (a - b) · normal, at which the
     /// two touch: the sum of the half extents between boxes.
     float extent;
@@ -60,6 +60,8 @@ struct Contact {
     Vec2 sloped;                ///< the normal of a kAlongSlope contact, unit
     float size = 0.0f; ///< of a kAlongSlope contact: the smaller body's reach along the normal
 
+    /// The tangent's sign along its axis (kAlongSlope: 1, the tangent is (-ny, nx)).
+    float tangentSign() const { return axis == kAlongY ? -sign : sign; }
     Vec2 normal() const {
         return axis == kAlongX ? Vec2{sign, 0.0f} : axis == kAlongY ? Vec2{0.0f, sign} : sloped;
     }

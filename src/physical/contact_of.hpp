@@ -33,7 +33,6 @@ inline Contact contactOf(const StepContext& step, const Body& a, const Body& b, 
     const bool alongX = normal.x != 0.0f;
     c.axis = alongX ? kAlongX : kAlongY;
     c.sign = alongX ? normal.x : normal.y;
-    c.tangentSign = alongX ? normal.x : -normal.y;
     c.extent = alongX ? a.half.x + b.half.x : a.half.y + b.half.y;
     c.slop =
         step.options.slop * (alongX ? std::min(a.half.x, b.half.x) : std::min(a.half.y, b.half.y));
@@ -43,7 +42,7 @@ inline Contact contactOf(const StepContext& step, const Body& a, const Body& b, 
         const Vec2 down = step.world.events.down;
         c.friction = frictionOfPair(step, a, b, normal);
         Vec2 tangent;
-        tangent[1 - c.axis] = c.tangentSign;
+        tangent[1 - c.axis] = c.tangentSign();
         c.tangentTarget = dot(walkOver(a, b, normal, down), tangent);
     } else {
         c.friction = combineFriction(step.options.frictionMix, a.friction, b.friction);

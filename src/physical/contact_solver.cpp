@@ -37,7 +37,7 @@ void warmStart(StepContext& step) {
             return;
         }
         applyImpulse(step, c, c.axis, c.sign * c.normalImpulse);
-        applyImpulse(step, c, 1 - c.axis, c.tangentSign * c.tangentImpulse);
+        applyImpulse(step, c, 1 - c.axis, c.tangentSign() * c.tangentImpulse);
     });
 }
 
@@ -82,11 +82,11 @@ void velocityPass(StepContext& step) {
         // Friction: stop the sliding, within Coulomb's cone.
         {
             const int tangent = 1 - c.axis;
-            const float speed = c.tangentSign * relativeSpeed(step, c, tangent);
+            const float speed = c.tangentSign() * relativeSpeed(step, c, tangent);
             const float limit = c.friction * c.normalImpulse;
             const float impulse = std::clamp(-c.effectiveMass * (speed - c.tangentTarget),
                                              -limit - c.tangentImpulse, limit - c.tangentImpulse);
-            applyImpulse(step, c, tangent, c.tangentSign * impulse);
+            applyImpulse(step, c, tangent, c.tangentSign() * impulse);
             c.tangentImpulse = std::clamp(c.tangentImpulse + impulse, -limit, limit);
         }
     });

@@ -40,10 +40,9 @@ Contact shapedContactOf(const StepContext& step, const Body& a, const Body& b,
         const bool alongX = n.x != 0.0f;
         c.axis = alongX ? kAlongX : kAlongY;
         c.sign = alongX ? n.x : n.y;
-        c.tangentSign = alongX ? n.x : -n.y;
     } else {
         c.axis = kAlongSlope;
-        c.sign = c.tangentSign = 1.0f;
+        c.sign = 1.0f;
     }
     c.sloped = n;
     c.extent = facing.extent;
