@@ -40,7 +40,6 @@ struct Contact {
     /// The value of the centres' offset along the normal, (a - b) · normal, at which the
     /// two touch: the sum of the half extents between boxes.
     float extent;
-    float slop; ///< overlap left alone
     float friction;
     float invMassA, invMassB;
     float effectiveMass; ///< 1 / (invMassA + invMassB)
@@ -58,7 +57,10 @@ struct Contact {
     float collisionImpulse = 0.0f;
     float approachSpeed = 0.0f; ///< how fast the pair closed when the step began (>= 0)
     Vec2 sloped;                ///< the normal of a kAlongSlope contact, unit
-    float size = 0.0f; ///< of a kAlongSlope contact: the smaller body's reach along the normal
+    /// The smaller body's reach along the normal (between boxes, the smaller half extent
+    /// along the axis): the overlap left alone, the slop, is WorldOptions::slop times it
+    /// (StepContext::slopOf).
+    float size = 0.0f;
 
     /// The tangent's sign along its axis (kAlongSlope: 1, the tangent is (-ny, nx)).
     float tangentSign() const { return axis == kAlongY ? -sign : sign; }

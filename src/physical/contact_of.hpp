@@ -34,8 +34,7 @@ inline Contact contactOf(const StepContext& step, const Body& a, const Body& b, 
     c.axis = alongX ? kAlongX : kAlongY;
     c.sign = alongX ? normal.x : normal.y;
     c.extent = alongX ? a.half.x + b.half.x : a.half.y + b.half.y;
-    c.slop =
-        step.options.slop * (alongX ? std::min(a.half.x, b.half.x) : std::min(a.half.y, b.half.y));
+    c.size = alongX ? std::min(a.half.x, b.half.x) : std::min(a.half.y, b.half.y);
     if (keepsATangentSpeed(a, b, step.world.conveyors > 0)) {
         // Characters rub only on floors, and walk over them; conveyors carry what rubs on
         // them (characters.hpp).

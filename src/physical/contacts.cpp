@@ -47,7 +47,6 @@ Contact shapedContactOf(const StepContext& step, const Body& a, const Body& b,
     c.sloped = n;
     c.extent = facing.extent;
     c.size = facing.size;
-    c.slop = step.options.slop * facing.size;
     const Vec2 down = step.world.events.down;
     c.friction = frictionOfPair(step, a, b, n);
     if (keepsATangentSpeed(a, b, step.world.conveyors > 0)) {

@@ -49,7 +49,7 @@ inline bool mayMeet(const StepContext& step, const Contact& c) {
         c.sign * (step.bodies[c.ia].velocity[c.axis] - step.bodies[c.ib].velocity[c.axis]);
     const float fromGravity =
         std::min(0.0f, c.sign * (along(gravity[c.ia]) - along(gravity[c.ib])));
-    return fromGravity - vn > kStillPerSlop * c.slop;
+    return fromGravity - vn > kStillPerSlop * step.slopOf(c);
 }
 
 /// Collides the pair of contact `k` if it meets this step; true if it did. `shifted` is set
@@ -62,7 +62,7 @@ bool collide(StepContext& step, std::uint32_t k, float threshold, bool& shifted)
     const std::vector<Vec2>& gravity = step.scratch.impacts.gravityInStep;
     const float fromGravity = std::min(0.0f, dot(gravity[c.ia] - gravity[c.ib], n));
     const float approach = fromGravity - vn;
-    if (!(approach > kStillPerSlop * c.slop))
+    if (!(approach > kStillPerSlop * step.slopOf(c)))
         return false;
     const float bounce = approach > threshold ? c.bounce : 0.0f;
     const float gap = -step.overlapOf(c);

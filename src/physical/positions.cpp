@@ -23,7 +23,8 @@ bool correctionPass(StepContext& step) {
         const bool sloped = c.axis == kAlongSlope;
         if (!sloped && overlap > c.extent)
             return;
-        const float excess = overlap - c.slop;
+        const float slop = step.slopOf(c);
+        const float excess = overlap - slop;
         if (!(excess > 0.0f))
             return;
         // An excess within float noise goes at once: a fraction of it would round to
@@ -31,7 +32,7 @@ bool correctionPass(StepContext& step) {
         const float correction = excess <= step.noiseOf(c)
                                      ? excess
                                      : std::min(step.options.correction * excess,
-                                                0.25f * ((sloped ? c.size : c.extent) - c.slop));
+                                                0.25f * ((sloped ? c.size : c.extent) - slop));
         // The body that holds the other stays put (support.hpp).
         const float moveA = correction * c.shareOfA();
         const float moveB = correction * c.shareOfB();

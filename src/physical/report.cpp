@@ -88,10 +88,10 @@ void reportCrushes(StepContext& step) {
 /// Whether contact `c` touches where the step leaves its bodies, which overlap by
 /// `overlap` along its normal (StepContext::overlapOf: the solver bodies hold where the step
 /// leaves every body of a contact).
-bool touchesAtTheEnd(const Contact& c, float overlap) {
+bool touchesAtTheEnd(const StepContext& step, const Contact& c, float overlap) {
     const float gap = -overlap;
     const float skin =
-        std::max(2.0f * c.slop, kMinimumSkin * (c.axis == kAlongSlope ? c.size : c.extent));
+        std::max(2.0f * step.slopOf(c), kMinimumSkin * (c.axis == kAlongSlope ? c.size : c.extent));
     // A pair that collided touched this step, if only for a moment: a bounce from the
     // middle of the step ends it apart.
     return gap <= skin || c.collisionImpulse > 0.0f;
@@ -129,7 +129,7 @@ void listTouches(StepContext& step) {
         for (std::uint32_t k = block.begin; k < block.end; ++k) {
             const Contact& c = step.contacts[k];
             const float overlap = step.overlapOf(c);
-            const bool touches = touchesAtTheEnd(c, overlap);
+            const bool touches = touchesAtTheEnd(step, c, overlap);
             if (inOrder) {
                 if (touches)
                     listTouch(w, touchOf(step, c));

@@ -46,6 +46,9 @@ struct StepContext {
         return index;
     }
 
+    /// The overlap of contact `c` left alone (WorldOptions::slop of the smaller body).
+    float slopOf(const Contact& c) const { return options.slop * c.size; }
+
     /// The contact skin of two half extents along one axis (geometry.hpp's contactSkin).
     float skinOf(float halfA, float halfB) const { return contactSkin(options.slop, halfA, halfB); }
 
@@ -86,11 +89,11 @@ struct StepContext {
             const Vec2 pa = positionOf(c.ia), pb = positionOf(c.ib);
             const float largest = std::max({std::abs(pa.x), std::abs(pa.y), std::abs(pb.x),
                                             std::abs(pb.y), std::abs(c.extent)});
-            return c.slop * noisePerSlop_ + 4.0f * ulpOf(largest);
+            return slopOf(c) * noisePerSlop_ + 4.0f * ulpOf(largest);
         }
         const float pa = bodies[c.ia].position[c.axis], pb = bodies[c.ib].position[c.axis];
         const float largest = std::max({std::abs(pa), std::abs(pb), c.extent});
-        return c.slop * noisePerSlop_ + 4.0f * ulpOf(largest);
+        return slopOf(c) * noisePerSlop_ + 4.0f * ulpOf(largest);
     }
 
     /// Whether the pair overlaps deeper than the slop, beyond float noise, where the
@@ -98,7 +101,7 @@ struct StepContext {
     /// position correction leaves them.
     bool beyondSlop(const Contact& c) const {
         const float overlap = overlapOf(c);
-        return (c.axis == kAlongSlope || overlap <= c.extent) && overlap - c.slop > noiseOf(c);
+        return (c.axis == kAlongSlope || overlap <= c.extent) && overlap - slopOf(c) > noiseOf(c);
     }
 
 private:
