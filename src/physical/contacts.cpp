@@ -181,8 +181,8 @@ void buildInParallel(StepContext& step) {
                 __builtin_prefetch(&w.slots[ahead.b]);
                 w.contactCache.prefetch(ahead.a);
             }
+            // Written whole where the pair makes a contact, and read nowhere else.
             Contact& c = step.contacts[k];
-            c = Contact{};
             const PairOutcome outcome = examinePair(step, pairs[k], c);
             made[k] = outcome.kind;
             if (outcome.kind == PairOutcome::kContact && !finishContact(step, c, pairs[k], outcome))
