@@ -4,12 +4,14 @@
 #include "busy_worlds.hpp"
 #include "jostle/tilemap.hpp"
 #include "jostle/world.hpp"
+#include "physical/contact_cache.hpp"
 #include "snapshot/access.hpp"
 #include "snapshot/xxhash64.hpp"
 #include "world_access.hpp"
 
 #include <gtest/gtest.h>
 
+#include <bit>
 #include <cstring>
 #include <string>
 #include <vector>
@@ -473,6 +475,44 @@ TEST(Snapshots, FuzzTimeout_ASleeperMissingFromItsIslandIsRefused) {
     }
     World again = smallWorld();
     EXPECT_EQ(refusalOf(again, withChecksum(saved)), "");
+}
+
+TEST(Snapshots, FuzzNaN_ANegativeCachedNormalImpulseIsRefused) {
+    // fuzz_restore: a cached normal impulse of -6e34 was taken, and its warm start flung
+    // a sliver of a box to an infinite speed in the next step (NaN). A normal impulse only
+    // pushes, so a step never keeps a negative one: such bytes are no snapshot.
+    World world(WorldDef{.gravity = {0, 600}});
+    world.createBody({.type = BodyType::Static, .y = 10, .hw = 50, .hh = 10});
+    const BodyId box = world.createBody({.y = -5, .hw = 5, .hh = 5});
+    for (int step = 0; step < 10; ++step)
+        world.step(kDt);
+    const CachedContact* cached = WorldAccess::state(world).contactCache.find(0, box.index);
+    ASSERT_NE(cached, nullptr);
+    ASSERT_GT(cached->normalImpulse, 0.0f); // holds the box up: its weight over a step
+    const Bytes saved = world.snapshot();
+    // The impulse's four bytes, little-endian, after the section 'C'.
+    const std::uint32_t bits = std::bit_cast<std::uint32_t>(cached->normalImpulse);
+    std::size_t at = 32;
+    while (at < saved.size() && std::to_integer<char>(saved[at]) != 'C')
+        ++at;
+    auto holdsBits = [&](std::size_t k) {
+        for (int i = 0; i < 4; ++i)
+            if (std::to_integer<std::uint32_t>(saved[k + std::size_t(i)]) !=
+                ((bits >> (8 * i)) & 0xFF))
+                return false;
+        return true;
+    };
+    while (at + 4 <= saved.size() && !holdsBits(at))
+        ++at;
+    ASSERT_LE(at + 4, saved.size()) << "the cached impulse not found";
+    Bytes negative = saved;
+    negative[at + 3] |= std::byte{0x80}; // the sign bit
+    World target = smallWorld();
+    const Bytes before = target.snapshot();
+    EXPECT_EQ(refusalOf(target, withChecksum(negative)),
+              "restore: the snapshot is corrupted: a cached contact's impulses");
+    EXPECT_EQ(target.snapshot(), before);
+    EXPECT_EQ(refusalOf(target, withChecksum(saved)), "");
 }
 
 /// What reading a tile map's list of bodies from `bytes` refuses ("" if nothing).

@@ -76,7 +76,9 @@ struct Access {
                     out.f32(entry.contact.normalImpulse);
                     out.f32(entry.contact.tangentImpulse);
                 });
+                // A normal impulse only pushes: a step never keeps a negative one.
                 ar.check(std::isfinite(entry.contact.normalImpulse) &&
+                             entry.contact.normalImpulse >= 0.0f &&
                              std::isfinite(entry.contact.tangentImpulse),
                          "a cached contact's impulses");
                 // A long run lies by the other slot, then rank.
