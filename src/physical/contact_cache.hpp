@@ -49,6 +49,14 @@ public:
             __builtin_prefetch(&entries_.data()[runs_.begin(a)]);
     }
 
+    /// Visits every entry, visit(a, b, contact): for the fuzzers' checks of a restored
+    /// cache, never for a step's results.
+    template <class Visit> void forEachEntry(Visit&& visit) const {
+        for (std::uint32_t a = 0; a < runs_.keyCount(); ++a)
+            for (std::uint32_t k = runs_.begin(a); k < runs_.end(a); ++k)
+                visit(a, entries_[k].b, entries_[k].contact);
+    }
+
     /// Starts a rebuild for a world of `slotCount` slots; the old contents are gone.
     void beginRebuild(std::size_t slotCount) {
         runs_.reset(slotCount);

@@ -52,17 +52,14 @@ World target() {
 /// the warm start hold it? Until decided, such snapshots are not stepped.
 bool warmStartLeavesTheRange(World& world) {
     const WorldState& w = WorldAccess::state(world);
-    const auto slots = std::uint32_t(w.slots.size());
-    for (std::uint32_t a = 0; a < slots; ++a)
-        for (std::uint32_t b = 0; b < slots; ++b)
-            if (const CachedContact* c = w.contactCache.find(a, b)) {
-                const float kick =
-                    std::max(std::abs(c->normalImpulse), std::abs(c->tangentImpulse)) *
-                    std::max(w.slots[a].invMass, w.slots[b].invMass);
-                if (!(kick <= kMaxMagnitude * kMaxMagnitude))
-                    return true;
-            }
-    return false;
+    bool leaves = false;
+    w.contactCache.forEachEntry([&](std::uint32_t a, std::uint32_t b, const CachedContact& c) {
+        const float impulse = std::max(std::abs(c.normalImpulse), std::abs(c.tangentImpulse));
+        const float invMass = std::max(a < w.slots.size() ? w.slots[a].invMass : 0.0f,
+                                       b < w.slots.size() ? w.slots[b].invMass : 0.0f);
+        leaves = leaves || !(impulse * invMass <= kMaxMagnitude * kMaxMagnitude);
+    });
+    return leaves;
 }
 
 void putLE(std::uint8_t* at, std::uint64_t v) {
