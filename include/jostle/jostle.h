@@ -674,7 +674,8 @@ typedef struct jostle_collision {
 /// (they still hold the previous step's events), jostle_body_create (the body joins from
 /// the next step), jostle_body_destroy (either body of the pair too: the pair is then
 /// dropped), the body setters, jostle_tile_map_set_tile and _set_tile_char, and the error
-/// functions.
+/// functions. In the physical model a body's mass is taken when the step first meets it:
+/// a mass or type set from the callback for a body met already counts from the next step.
 /// Refused, as misuse, are the functions that change the world as a whole:
 /// jostle_world_step (and jostle_fixed_step_update of this world), jostle_world_destroy,
 /// jostle_world_set_pre_solve and every other jostle_world_set_*. The callback must

@@ -489,7 +489,10 @@ public:
     /// destroyed and changed, tiles set, and queries asked. Calling step() or any of the
     /// world's setters below (gravity to pre-solve) throws jostle::Error: the step reads
     /// them throughout. Destroying or move-assigning the World itself from its callback
-    /// stops the program with a message (a destructor cannot throw).
+    /// stops the program with a message (a destructor cannot throw). In the physical
+    /// model the solver takes a body's mass when the step first meets it (in its first
+    /// pair): a mass or type a callback changes for a body met already counts from the
+    /// next step.
     void step(float dt);
 
     Vec2 gravity() const;

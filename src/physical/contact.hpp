@@ -20,14 +20,14 @@ struct SolverBody {
 
 /// Two bodies touching, or about to within the step, along one normal. Bodies do not
 /// rotate, so a contact is one normal and one tangent, and its effective mass is
-/// 1 / (invMassA + invMassB) and nothing else. Between boxes the normal lies along x or
-/// y, and the passes work on that axis alone; a slope or a rounded corner gives any other
-/// normal (axis kAlongSlope).
+/// 1 / (invMassA + invMassB) and nothing else: the solver bodies' (StepContext::
+/// effectiveMassOf). Between boxes the normal lies along x or y, and the passes work on
+/// that axis alone; a slope or a rounded corner gives any other normal (axis kAlongSlope).
+/// 64 bytes, a cache line: the passes read thousands of them.
 struct Contact {
     std::uint32_t ia, ib; ///< solver bodies; a is the body created first
-    /// The normal points from b towards a along one axis (kAlongX, kAlongY), with this
-    /// sign; the tangent is the other axis, with tangentSign() (the normal turned a
-    /// quarter, (-ny, nx)). kAlongSlope: along `sloped` (sign 1), the tangent (-ny, nx).
+    /// The normal points from b towards a along one axis (kAlongX, kAlongY), or along
+    /// `normal()` (kAlongSlope). The tangent is the normal turned a quarter, (-ny, nx).
     Axis axis;
     /// Which body holds the other, staying put in shock propagation and position
     /// correction (support.hpp says when): 0 none, 1 a, 2 b.
@@ -36,13 +36,12 @@ struct Contact {
     /// walkAlongSlope): at rest on the floor along the normal, and set by how fast the two
     /// move along it.
     bool walksAlongSlope = false;
-    float sign;
+    /// The unit normal (along x or y: its axis's component is sign(), the other 0).
+    Vec2 n;
     /// The value of the centres' offset along the normal, (a - b) · normal, at which the
     /// two touch: the sum of the half extents between boxes.
     float extent;
     float friction;
-    float invMassA, invMassB;
-    float effectiveMass; ///< 1 / (invMassA + invMassB)
     /// The relative normal velocity must end >= this: 0 to stop, -gap/dt to let a
     /// speculative contact close its gap. Bounces are the impacts stage's.
     float targetSpeed;
@@ -56,21 +55,17 @@ struct Contact {
     /// Of the impacts stage (impacts.hpp): both bodies felt it; not warm-started.
     float collisionImpulse = 0.0f;
     float approachSpeed = 0.0f; ///< how fast the pair closed when the step began (>= 0)
-    Vec2 sloped;                ///< the normal of a kAlongSlope contact, unit
     /// The smaller body's reach along the normal (between boxes, the smaller half extent
     /// along the axis): the overlap left alone, the slop, is WorldOptions::slop times it
     /// (StepContext::slopOf).
     float size = 0.0f;
 
-    /// The tangent's sign along its axis (kAlongSlope: 1, the tangent is (-ny, nx)).
-    float tangentSign() const { return axis == kAlongY ? -sign : sign; }
-    Vec2 normal() const {
-        return axis == kAlongX ? Vec2{sign, 0.0f} : axis == kAlongY ? Vec2{0.0f, sign} : sloped;
-    }
-    Vec2 tangent() const {
-        const Vec2 n = normal();
-        return {-n.y, n.x};
-    }
+    /// Along x or y: the normal's sign along its axis (±1, or nearly for a round shape's).
+    float sign() const { return n[axis]; }
+    /// Along x or y: the tangent's sign along the other axis.
+    float tangentSign() const { return axis == kAlongY ? -n.y : n.x; }
+    Vec2 normal() const { return n; }
+    Vec2 tangent() const { return {-n.y, n.x}; }
     /// The tangent speed friction keeps when the pair moves along the normal at
     /// `normalSpeed`: tangentTarget, but for a character walking along a sloped floor, which
     /// moves across gravity (along `right`) at its walk speed whatever part of its motion is
@@ -78,24 +73,16 @@ struct Contact {
     float tangentTargetAt(float normalSpeed, Vec2 right) const {
         if (!walksAlongSlope)
             return tangentTarget;
-        return tangentTarget - normalSpeed * dot(sloped, right) / dot(tangent(), right);
+        return tangentTarget - normalSpeed * dot(n, right) / dot(tangent(), right);
     }
     /// The normal impulse of the step, what the held body's partner felt.
     float totalImpulse() const { return normalImpulse + shockImpulse + collisionImpulse; }
-
-    /// Who gives way when the pair is moved apart (position correction, an impact that met
-    /// from a gap): the body that holds the other stays put, and the other takes the whole
-    /// move; where neither holds, the two share it by inverse mass. a's share, then b's.
-    float shareOfA() const {
-        return supporter == 1   ? 0.0f
-               : supporter == 2 ? (invMassA > 0.0f ? 1.0f : 0.0f)
-                                : invMassA * effectiveMass;
-    }
-    float shareOfB() const {
-        return supporter == 2   ? 0.0f
-               : supporter == 1 ? (invMassB > 0.0f ? 1.0f : 0.0f)
-                                : invMassB * effectiveMass;
-    }
 };
+static_assert(sizeof(Contact) == 64, "a contact fills one cache line");
+
+/// The normal along `axis` (kAlongX or kAlongY) with `sign`: the other component +0.
+inline Vec2 axisNormal(Axis axis, float sign) {
+    return axis == kAlongX ? Vec2{sign, 0.0f} : Vec2{0.0f, sign};
+}
 
 } // namespace jostle

@@ -72,12 +72,12 @@ void storeImpulses(StepContext& step) {
         // shock pass's. An infinitely heavy body is pushed nowhere (its separation stays 0),
         // and may be in several contacts of a layer at once.
         const float total = c.totalImpulse();
-        if (c.invMassA > 0.0f)
-            a.separation +=
-                c.normal() * ((c.supporter == 1 ? c.normalImpulse : total) * c.invMassA * step.dt);
-        if (c.invMassB > 0.0f)
-            b.separation -=
-                c.normal() * ((c.supporter == 2 ? c.normalImpulse : total) * c.invMassB * step.dt);
+        if (step.invMassA(c) > 0.0f)
+            a.separation += c.normal() * ((c.supporter == 1 ? c.normalImpulse : total) *
+                                          step.invMassA(c) * step.dt);
+        if (step.invMassB(c) > 0.0f)
+            b.separation -= c.normal() * ((c.supporter == 2 ? c.normalImpulse : total) *
+                                          step.invMassB(c) * step.dt);
     });
     cache.endRebuild(*w.tasks);
 }

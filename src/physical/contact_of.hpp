@@ -32,7 +32,7 @@ inline Contact contactOf(const StepContext& step, const Body& a, const Body& b, 
     Contact c;
     const bool alongX = normal.x != 0.0f;
     c.axis = alongX ? kAlongX : kAlongY;
-    c.sign = alongX ? normal.x : normal.y;
+    c.n = axisNormal(c.axis, alongX ? normal.x : normal.y);
     c.extent = alongX ? a.half.x + b.half.x : a.half.y + b.half.y;
     c.size = alongX ? std::min(a.half.x, b.half.x) : std::min(a.half.y, b.half.y);
     if (keepsATangentSpeed(a, b, step.world.conveyors > 0)) {

@@ -15,10 +15,12 @@ namespace {
 /// Applies `impulse` to both bodies of `c` along `axis`, as step_context.hpp's
 /// applyImpulse: an infinitely heavy body is left alone.
 void applyImpulse(StepContext& step, const Contact& c, int axis, float impulse) {
-    if (c.invMassA > 0.0f)
-        step.bodies[c.ia].velocity[axis] += impulse * c.invMassA;
-    if (c.invMassB > 0.0f)
-        step.bodies[c.ib].velocity[axis] -= impulse * c.invMassB;
+    SolverBody& a = step.bodies[c.ia];
+    if (a.invMass > 0.0f)
+        a.velocity[axis] += impulse * a.invMass;
+    SolverBody& b = step.bodies[c.ib];
+    if (b.invMass > 0.0f)
+        b.velocity[axis] -= impulse * b.invMass;
 }
 
 float relativeSpeed(const StepContext& step, const Contact& c, int axis) {
@@ -32,11 +34,11 @@ float relativeSpeed(const StepContext& step, const Contact& c, Vec2 direction) {
 void warmStart(StepContext& step) {
     forEachContact(step, [&](const Contact& c) {
         if (c.axis == kAlongSlope) {
-            applyImpulse(step, c, c.sloped, c.normalImpulse);
+            applyImpulse(step, c, c.n, c.normalImpulse);
             applyImpulse(step, c, c.tangent(), c.tangentImpulse);
             return;
         }
-        applyImpulse(step, c, c.axis, c.sign * c.normalImpulse);
+        applyImpulse(step, c, c.axis, c.sign() * c.normalImpulse);
         applyImpulse(step, c, 1 - c.axis, c.tangentSign() * c.tangentImpulse);
     });
 }
@@ -44,21 +46,21 @@ void warmStart(StepContext& step) {
 /// velocityPass for a contact along a slope or a rounded corner: the same, along its
 /// normal and tangent.
 void solveSloped(StepContext& step, Contact& c) {
+    const float effectiveMass = step.effectiveMassOf(c);
     float normalSpeed;
     {
-        const float speed = relativeSpeed(step, c, c.sloped);
-        const float impulse =
-            std::max(-c.effectiveMass * (speed - c.targetSpeed), -c.normalImpulse);
-        applyImpulse(step, c, c.sloped, impulse);
+        const float speed = relativeSpeed(step, c, c.n);
+        const float impulse = std::max(-effectiveMass * (speed - c.targetSpeed), -c.normalImpulse);
+        applyImpulse(step, c, c.n, impulse);
         c.normalImpulse += impulse;
-        normalSpeed = speed + impulse / c.effectiveMass;
+        normalSpeed = speed + impulse / effectiveMass;
     }
     {
         const Vec2 tangent = c.tangent();
         const float speed = relativeSpeed(step, c, tangent);
         const float limit = c.friction * c.normalImpulse;
         const float target = c.tangentTargetAt(normalSpeed, step.right());
-        const float impulse = std::clamp(-c.effectiveMass * (speed - target),
+        const float impulse = std::clamp(-effectiveMass * (speed - target),
                                          -limit - c.tangentImpulse, limit - c.tangentImpulse);
         applyImpulse(step, c, tangent, impulse);
         c.tangentImpulse = std::clamp(c.tangentImpulse + impulse, -limit, limit);
@@ -71,12 +73,14 @@ void velocityPass(StepContext& step) {
             solveSloped(step, c);
             return;
         }
+        const float effectiveMass = step.effectiveMassOf(c);
+        const float sign = c.sign();
         // Normal: push (never pull) until the pair stops approaching.
         {
-            const float speed = c.sign * relativeSpeed(step, c, c.axis);
+            const float speed = sign * relativeSpeed(step, c, c.axis);
             const float impulse =
-                std::max(-c.effectiveMass * (speed - c.targetSpeed), -c.normalImpulse);
-            applyImpulse(step, c, c.axis, c.sign * impulse);
+                std::max(-effectiveMass * (speed - c.targetSpeed), -c.normalImpulse);
+            applyImpulse(step, c, c.axis, sign * impulse);
             c.normalImpulse += impulse;
         }
         // Friction: stop the sliding, within Coulomb's cone.
@@ -84,7 +88,7 @@ void velocityPass(StepContext& step) {
             const int tangent = 1 - c.axis;
             const float speed = c.tangentSign() * relativeSpeed(step, c, tangent);
             const float limit = c.friction * c.normalImpulse;
-            const float impulse = std::clamp(-c.effectiveMass * (speed - c.tangentTarget),
+            const float impulse = std::clamp(-effectiveMass * (speed - c.tangentTarget),
                                              -limit - c.tangentImpulse, limit - c.tangentImpulse);
             applyImpulse(step, c, tangent, c.tangentSign() * impulse);
             c.tangentImpulse = std::clamp(c.tangentImpulse + impulse, -limit, limit);
@@ -105,25 +109,25 @@ void propagateShock(StepContext& step) {
         if (c.supporter == 0)
             return;
         // The supporter is held fixed: the other body takes the whole impulse.
-        const float invMass = c.supporter == 1 ? c.invMassB : c.invMassA;
+        const float invMass = c.supporter == 1 ? step.invMassB(c) : step.invMassA(c);
         if (invMass <= 0.0f)
             return;
         if (c.axis == kAlongSlope) {
-            const float speed = relativeSpeed(step, c, c.sloped);
+            const float speed = relativeSpeed(step, c, c.n);
             const float impulse = std::max(-(speed - c.targetSpeed) / invMass, -c.normalImpulse);
             SolverBody& held = step.bodies[c.supporter == 1 ? c.ib : c.ia];
             const float sign = c.supporter == 1 ? -1.0f : 1.0f;
-            held.velocity[0] += sign * c.sloped.x * impulse * invMass;
-            held.velocity[1] += sign * c.sloped.y * impulse * invMass;
+            held.velocity[0] += sign * c.n.x * impulse * invMass;
+            held.velocity[1] += sign * c.n.y * impulse * invMass;
             c.shockImpulse = impulse;
             return;
         }
-        const float speed = c.sign * relativeSpeed(step, c, c.axis);
+        const float speed = c.sign() * relativeSpeed(step, c, c.axis);
         const float impulse = std::max(-(speed - c.targetSpeed) / invMass, -c.normalImpulse);
         if (c.supporter == 1)
-            step.bodies[c.ib].velocity[c.axis] -= c.sign * impulse * c.invMassB;
+            step.bodies[c.ib].velocity[c.axis] -= c.sign() * impulse * invMass;
         else
-            step.bodies[c.ia].velocity[c.axis] += c.sign * impulse * c.invMassA;
+            step.bodies[c.ia].velocity[c.axis] += c.sign() * impulse * invMass;
         // Kept apart from the impulse both bodies felt: the held body felt none of it, and
         // warm starting the next step with it would fling a much lighter held body.
         c.shockImpulse = impulse;

@@ -39,12 +39,11 @@ Contact shapedContactOf(const StepContext& step, const Body& a, const Body& b,
     if (n.x == 0.0f || n.y == 0.0f) {
         const bool alongX = n.x != 0.0f;
         c.axis = alongX ? kAlongX : kAlongY;
-        c.sign = alongX ? n.x : n.y;
+        c.n = axisNormal(c.axis, alongX ? n.x : n.y);
     } else {
         c.axis = kAlongSlope;
-        c.sign = 1.0f;
+        c.n = n;
     }
-    c.sloped = n;
     c.extent = facing.extent;
     c.size = facing.size;
     const Vec2 down = step.world.events.down;
@@ -137,16 +136,12 @@ PairOutcome examinePair(const StepContext& step, const BodyPair& pair, Contact& 
     return outcome;
 }
 
-/// Fills in the masses, the warm start and the target of a contact examinePair made;
-/// false if both bodies are infinitely heavy (a callback made them so).
+/// Fills in the warm start and the target of a contact examinePair made; false if both
+/// bodies are infinitely heavy (a callback made them so).
 bool finishContact(const StepContext& step, Contact& c, const BodyPair& pair,
                    const PairOutcome& outcome) {
-    c.invMassA = step.world.slots[pair.a].invMass;
-    c.invMassB = step.world.slots[pair.b].invMass;
-    const float invMassSum = c.invMassA + c.invMassB;
-    if (invMassSum <= 0.0f)
+    if (step.world.slots[pair.a].invMass + step.world.slots[pair.b].invMass <= 0.0f)
         return false;
-    c.effectiveMass = 1.0f / invMassSum;
     warmStart(step, c, pair.a, pair.b, outcome.normal);
     setTarget(c, outcome.bounce, outcome.gap, step.dt);
     return true;
@@ -232,7 +227,9 @@ void buildWithCallback(StepContext& step) {
         // The callback may have created bodies: finishContact reads them afresh.
         c.ia = step.solverBodyOf(pair.a);
         c.ib = step.solverBodyOf(pair.b);
-        if (finishContact(step, c, pair, outcome))
+        // The solver reads the masses its bodies had when the step met them: a body a
+        // callback made heavier or lighter since keeps them to the end of the step.
+        if (step.invMassA(c) + step.invMassB(c) > 0.0f && finishContact(step, c, pair, outcome))
             step.contacts.push_back(c);
     }
     std::sort(vetoed.begin(), vetoed.end());

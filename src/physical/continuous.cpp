@@ -135,9 +135,6 @@ void addFoundContact(StepContext& step, std::uint32_t slot, const FirstHit& firs
                     : contactAlongShape(step, a, b, fromB, first.extent, first.size);
     c.ia = ia;
     c.ib = ib;
-    c.invMassA = a.invMass;
-    c.invMassB = b.invMass;
-    c.effectiveMass = 1.0f / (a.invMass + b.invMass);
     c.targetSpeed = 0.0f;
     c.approachSpeed = speed;
     s.found.push_back(c);

@@ -23,11 +23,11 @@ constexpr int kMaxSweeps = 8;
 constexpr float kStillPerSlop = 5.0f;
 
 /// Moves the bodies of `c` so that their offset along the normal changes by `shift`, as
-/// position correction moves them (Contact::shareOfA): the body that holds the other
+/// position correction moves them (StepContext::shareOfA): the body that holds the other
 /// stays put, so that a blow from above never drives a held body into what holds it.
 void shiftApart(StepContext& step, const Contact& c, Vec2 normal, float shift) {
-    const float shiftA = shift * c.shareOfA();
-    const float shiftB = shift * c.shareOfB();
+    const float shiftA = shift * step.shareOfA(c);
+    const float shiftB = shift * step.shareOfB(c);
     for (auto [solverBody, by] : {std::pair{c.ia, shiftA}, std::pair{c.ib, -shiftB}}) {
         SolverBody& s = step.bodies[solverBody];
         s.position[0] += normal.x * by;
@@ -46,9 +46,9 @@ inline bool mayMeet(const StepContext& step, const Contact& c) {
     const std::vector<Vec2>& gravity = step.scratch.impacts.gravityInStep;
     const auto along = [&](Vec2 v) { return c.axis == kAlongX ? v.x : v.y; };
     const float vn =
-        c.sign * (step.bodies[c.ia].velocity[c.axis] - step.bodies[c.ib].velocity[c.axis]);
+        c.sign() * (step.bodies[c.ia].velocity[c.axis] - step.bodies[c.ib].velocity[c.axis]);
     const float fromGravity =
-        std::min(0.0f, c.sign * (along(gravity[c.ia]) - along(gravity[c.ib])));
+        std::min(0.0f, c.sign() * (along(gravity[c.ia]) - along(gravity[c.ib])));
     return fromGravity - vn > kStillPerSlop * step.slopOf(c);
 }
 
@@ -73,13 +73,13 @@ bool collide(StepContext& step, std::uint32_t k, float threshold, bool& shifted)
     float meetAfter = 0.0f;
     if (gap > 0.0f && bounce <= 0.0f) {
         // Without a bounce: it closes the gap by the end of the step, and meets no faster.
-        impulse = c.effectiveMass * (-gap / step.dt - vn);
+        impulse = step.effectiveMassOf(c) * (-gap / step.dt - vn);
     } else {
         // They part at `bounce` times the speed they met at, from the moment they met (in
         // which gravity has acted for part of the step only).
         meetAfter = gap > 0.0f ? gap / -vn : 0.0f;
         const float meeting = approach - fromGravity * meetAfter / step.dt;
-        impulse = (1.0f + bounce) * c.effectiveMass * meeting;
+        impulse = (1.0f + bounce) * step.effectiveMassOf(c) * meeting;
     }
     applyImpulse(step, c, n, impulse);
     c.collisionImpulse += impulse;
@@ -89,7 +89,7 @@ bool collide(StepContext& step, std::uint32_t k, float threshold, bool& shifted)
     const float slide = dot(step.velocityOf(c.ia) - step.velocityOf(c.ib), t) -
                         c.tangentTargetAt(leaving, step.right());
     const float limit = c.friction * impulse;
-    applyImpulse(step, c, t, std::clamp(-c.effectiveMass * slide, -limit, limit));
+    applyImpulse(step, c, t, std::clamp(-step.effectiveMassOf(c) * slide, -limit, limit));
     if (meetAfter > 0.0f) {
         // Met after meetAfter, then parted at the speed it left with: where that ends the
         // step, not a gap's width further off.

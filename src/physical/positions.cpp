@@ -34,24 +34,24 @@ bool correctionPass(StepContext& step) {
                                      : std::min(step.options.correction * excess,
                                                 0.25f * ((sloped ? c.size : c.extent) - slop));
         // The body that holds the other stays put (support.hpp).
-        const float moveA = correction * c.shareOfA();
-        const float moveB = correction * c.shareOfB();
+        const float moveA = correction * step.shareOfA(c);
+        const float moveB = correction * step.shareOfB(c);
         // An infinitely heavy body never moves (and may be in several contacts at once on
         // several threads: solver_layers.hpp).
         if (sloped) {
-            if (c.invMassA > 0.0f) {
-                a.position[0] += c.sloped.x * moveA;
-                a.position[1] += c.sloped.y * moveA;
+            if (step.invMassA(c) > 0.0f) {
+                a.position[0] += c.n.x * moveA;
+                a.position[1] += c.n.y * moveA;
             }
-            if (c.invMassB > 0.0f) {
-                b.position[0] -= c.sloped.x * moveB;
-                b.position[1] -= c.sloped.y * moveB;
+            if (step.invMassB(c) > 0.0f) {
+                b.position[0] -= c.n.x * moveB;
+                b.position[1] -= c.n.y * moveB;
             }
         } else {
-            if (c.invMassA > 0.0f)
-                a.position[c.axis] += c.sign * moveA;
-            if (c.invMassB > 0.0f)
-                b.position[c.axis] -= c.sign * moveB;
+            if (step.invMassA(c) > 0.0f)
+                a.position[c.axis] += c.sign() * moveA;
+            if (step.invMassB(c) > 0.0f)
+                b.position[c.axis] -= c.sign() * moveB;
         }
         moved.store(true, std::memory_order_relaxed);
     });

@@ -141,7 +141,7 @@ void listTouches(StepContext& step) {
                 scratch.touches[k] = 0;
             }
             // Only a dynamic body against an infinitely heavy one can be crushed.
-            if ((c.invMassA == 0.0f) != (c.invMassB == 0.0f))
+            if ((step.invMassA(c) == 0.0f) != (step.invMassB(c) == 0.0f))
                 findCrush(w, c, step.bodies[c.ia].slot, step.bodies[c.ib].slot, overlap,
                           scratch.crushCandidates[block.index]);
         }

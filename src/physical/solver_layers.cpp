@@ -21,13 +21,13 @@ void layerContacts(StepContext& step) {
     for (std::uint32_t k = 0; k < count; ++k) {
         const Contact& c = step.contacts[k];
         std::uint32_t layer = 0;
-        if (c.invMassA > 0.0f)
+        if (step.invMassA(c) > 0.0f)
             layer = layers.next[c.ia];
-        if (c.invMassB > 0.0f)
+        if (step.invMassB(c) > 0.0f)
             layer = std::max(layer, layers.next[c.ib]);
-        if (c.invMassA > 0.0f)
+        if (step.invMassA(c) > 0.0f)
             layers.next[c.ia] = layer + 1;
-        if (c.invMassB > 0.0f)
+        if (step.invMassB(c) > 0.0f)
             layers.next[c.ib] = layer + 1;
         layers.layerOf[k] = layer;
         depth = std::max(depth, layer + 1);

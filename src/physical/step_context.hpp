@@ -56,8 +56,29 @@ struct StepContext {
     /// are now (negative: the gap between them).
     float overlapOf(const Contact& c) const {
         if (c.axis == kAlongSlope)
-            return c.extent - dot(positionOf(c.ia) - positionOf(c.ib), c.sloped);
-        return c.extent - c.sign * (bodies[c.ia].position[c.axis] - bodies[c.ib].position[c.axis]);
+            return c.extent - dot(positionOf(c.ia) - positionOf(c.ib), c.n);
+        return c.extent -
+               c.sign() * (bodies[c.ia].position[c.axis] - bodies[c.ib].position[c.axis]);
+    }
+
+    /// The inverse masses of the two bodies of `c`, and its effective mass.
+    float invMassA(const Contact& c) const { return bodies[c.ia].invMass; }
+    float invMassB(const Contact& c) const { return bodies[c.ib].invMass; }
+    float effectiveMassOf(const Contact& c) const { return 1.0f / (invMassA(c) + invMassB(c)); }
+
+    /// Who gives way when the pair of `c` is moved apart (position correction, an impact
+    /// that met from a gap): the body that holds the other stays put, and the other takes
+    /// the whole move; where neither holds, the two share it by inverse mass. a's share,
+    /// then b's.
+    float shareOfA(const Contact& c) const {
+        return c.supporter == 1   ? 0.0f
+               : c.supporter == 2 ? (invMassA(c) > 0.0f ? 1.0f : 0.0f)
+                                  : invMassA(c) * effectiveMassOf(c);
+    }
+    float shareOfB(const Contact& c) const {
+        return c.supporter == 2   ? 0.0f
+               : c.supporter == 1 ? (invMassB(c) > 0.0f ? 1.0f : 0.0f)
+                                  : invMassB(c) * effectiveMassOf(c);
     }
 
     /// An approach slower than this does not bounce: gravity alone hands a resting body
@@ -113,15 +134,15 @@ private:
 /// inverse mass. An infinitely heavy body is left alone: several contacts may touch it at
 /// once on several threads (solver_layers.hpp).
 inline void applyImpulse(StepContext& step, const Contact& c, Vec2 direction, float impulse) {
-    if (c.invMassA > 0.0f) {
-        SolverBody& a = step.bodies[c.ia];
-        a.velocity[0] += direction.x * impulse * c.invMassA;
-        a.velocity[1] += direction.y * impulse * c.invMassA;
+    SolverBody& a = step.bodies[c.ia];
+    if (a.invMass > 0.0f) {
+        a.velocity[0] += direction.x * impulse * a.invMass;
+        a.velocity[1] += direction.y * impulse * a.invMass;
     }
-    if (c.invMassB > 0.0f) {
-        SolverBody& b = step.bodies[c.ib];
-        b.velocity[0] -= direction.x * impulse * c.invMassB;
-        b.velocity[1] -= direction.y * impulse * c.invMassB;
+    SolverBody& b = step.bodies[c.ib];
+    if (b.invMass > 0.0f) {
+        b.velocity[0] -= direction.x * impulse * b.invMass;
+        b.velocity[1] -= direction.y * impulse * b.invMass;
     }
 }
 

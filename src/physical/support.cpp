@@ -76,10 +76,10 @@ void findBacking(StepContext& step) {
         if (c.targetSpeed < 0.0f || c.axis == kAlongSlope)
             continue;
         // The normal points from b towards a: b lies on a's side -sign, a on b's +sign.
-        if (c.invMassB == 0.0f)
-            backing[c.ia] |= backingBit(c.axis, -c.sign);
-        if (c.invMassA == 0.0f)
-            backing[c.ib] |= backingBit(c.axis, c.sign);
+        if (step.invMassB(c) == 0.0f)
+            backing[c.ia] |= backingBit(c.axis, -c.sign());
+        if (step.invMassA(c) == 0.0f)
+            backing[c.ib] |= backingBit(c.axis, c.sign());
     }
 }
 
@@ -106,9 +106,10 @@ std::uint8_t supporterOf(const StepContext& step, const Contact& c) {
     }
     // Neither holding the other up, between two dynamic bodies: one with a static or
     // kinematic body right behind it, on the side the contact pushes it to.
-    if (supporter == 0 && c.invMassA > 0.0f && c.invMassB > 0.0f && c.axis != kAlongSlope) {
-        const bool aHeld = isBacked(step, c.ia, c.axis, c.sign);
-        const bool bHeld = isBacked(step, c.ib, c.axis, -c.sign);
+    if (supporter == 0 && step.invMassA(c) > 0.0f && step.invMassB(c) > 0.0f &&
+        c.axis != kAlongSlope) {
+        const bool aHeld = isBacked(step, c.ia, c.axis, c.sign());
+        const bool bHeld = isBacked(step, c.ib, c.axis, -c.sign());
         supporter = aHeld && !bHeld ? 1 : bHeld && !aHeld ? 2 : 0;
     }
     return supporter;
