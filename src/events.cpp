@@ -58,22 +58,21 @@ void sortByPair(std::vector<TouchRecord>& records, std::vector<TouchRecord>& scr
 /// Walks this step's pairs (`now`, sorted) beside the last step's (`before`, sorted):
 /// pairs only in `now` begin; pairs only in `before` end, unless the step did not look
 /// at them (then they carry over); a slot pair holding other bodies than before ends
-/// and begins. `before` becomes the new list.
+/// and begins. `before` becomes the new list, merged in `now`'s room: `carried` notes
+/// where each pair carried over goes (before its place in `before`, the count of `now`'s
+/// pairs ahead of it).
 template <class NotEvaluated, class OnBegin, class OnEnd>
 void compare(const WorldState& world, std::vector<TouchRecord>& now,
-             std::vector<TouchRecord>& before, std::vector<TouchRecord>& out,
+             std::vector<TouchRecord>& before, std::vector<CarriedPair>& carried,
              NotEvaluated&& notEvaluated, OnBegin&& begin, OnEnd&& end) {
-    out.clear();
-    // It holds this step's pairs and those carried over: about the longer of the two lists.
-    makeRoom(out, std::max(now.size(), before.size()));
+    carried.clear();
     std::size_t i = 0, j = 0;
     while (i < now.size() || j < before.size()) {
         if (j == before.size() || (i < now.size() && now[i].key() < before[j].key())) {
-            begin(now[i]);
-            out.push_back(now[i++]);
+            begin(now[i++]);
         } else if (i == now.size() || before[j].key() < now[i].key()) {
             if (notEvaluated(world, before[j]))
-                out.push_back(before[j]);
+                carried.push_back({std::uint32_t(j), std::uint32_t(i)});
             else
                 end(before[j]);
             ++j;
@@ -82,11 +81,23 @@ void compare(const WorldState& world, std::vector<TouchRecord>& now,
                 end(before[j]);
                 begin(now[i]);
             }
-            out.push_back(now[i++]);
+            ++i;
             ++j;
         }
     }
-    before.swap(out);
+    // The pairs carried over go in among now's, from the back: each of now's moves up by
+    // the count carried over ahead of it, to a place not yet read.
+    std::size_t moved = now.size();
+    makeRoom(now, now.size() + carried.size());
+    now.resize(now.size() + carried.size());
+    for (std::size_t m = carried.size(); m-- > 0;) {
+        const CarriedPair pair = carried[m];
+        for (std::size_t q = moved; q-- > pair.nowAhead;)
+            now[q + m + 1] = now[q];
+        moved = pair.nowAhead;
+        now[pair.nowAhead + m] = before[pair.before];
+    }
+    before.swap(now);
     now.clear();
 }
 
@@ -119,6 +130,7 @@ void StepEvents::clearStepLists() {
     clearAfterBurst(crushEnds);
     contactsNow.clear();
     sensorsNow.clear();
+    contactsNowSorted = false;
 }
 
 void StepEvents::beginStep(const WorldState& world) {
@@ -150,9 +162,10 @@ void StepEvents::publish(const WorldState& world, bool anyAwake) {
         std::erase_if(sensorsNow, gone);
     }
     destroyedSincePublish = false;
-    sortByPair(contactsNow, contactScratch_, buckets_, world.slots.size());
+    if (!contactsNowSorted)
+        sortByPair(contactsNow, contactScratch_, buckets_, world.slots.size());
     compare(
-        world, contactsNow, contactsBefore_, contactScratch_, contactNotEvaluated,
+        world, contactsNow, contactsBefore_, carried_, contactNotEvaluated,
         [&](const TouchRecord& r) {
             begins.push_back(
                 {world.idFor(r.a), world.idFor(r.b), r.normal, r.approachSpeed, pointOf(world, r)});
@@ -166,7 +179,7 @@ void StepEvents::publish(const WorldState& world, bool anyAwake) {
     }
     sortByPair(sensorsNow, sensorScratch_, buckets_, world.slots.size());
     compare(
-        world, sensorsNow, sensorsBefore_, sensorScratch_, sensorNotEvaluated,
+        world, sensorsNow, sensorsBefore_, carried_, sensorNotEvaluated,
         [&](const TouchRecord& r) {
             sensorBegins.push_back({world.idFor(r.a), world.idFor(r.b)});
         },

@@ -30,6 +30,12 @@ struct TouchRecord {
 };
 static_assert(sizeof(TouchRecord) == 32, "a record of the bodies' slots, not their handles");
 
+/// A pair of the last step's that carries over to this step's list: its place in the last
+/// step's, and how many of this step's pairs go ahead of it.
+struct CarriedPair {
+    std::uint32_t before, nowAhead;
+};
+
 struct StepEvents {
     std::vector<ContactEvent> begins, ends;
     std::vector<SensorEvent> sensorBegins, sensorEnds;
@@ -44,6 +50,8 @@ struct StepEvents {
 
     /// Filled by the solver during a step: what touches (overlaps) at its end.
     std::vector<TouchRecord> contactsNow, sensorsNow;
+    /// Set by a step that lists contactsNow sorted by pair already, as publish() needs it.
+    bool contactsNowSorted = false;
 
     /// Empties the outputs and the lists of the step about to run.
     void beginStep(const WorldState& world);
@@ -74,15 +82,22 @@ struct StepEvents {
             visit(contactsBefore_[touchIndex_[k]]);
     }
 
+    /// The room the lists of touching contacts hold, in records (this step's, the last
+    /// step's, the sort's): for the tests of what a step keeps.
+    std::size_t contactRecordRoom() const {
+        return contactsNow.capacity() + contactsBefore_.capacity() + contactScratch_.capacity();
+    }
+
 private:
     /// Empties the outputs and this step's lists (beginStep and clear).
     void clearStepLists();
     friend struct snapshot::Access; // saves and restores the last step's records
     std::vector<TouchRecord> contactsBefore_, sensorsBefore_;
-    /// The sorts' and comparisons' buffers, one for each list: sensors' swapped with the
-    /// contacts' would leave a contact-sized buffer in sensorsBefore_ (125 bytes a body in
-    /// a pyramid with no sensor).
+    /// The sorts' buffers, one for each list (the physical model lists its contacts
+    /// sorted, and leaves contactScratch_ empty).
     std::vector<TouchRecord> contactScratch_, sensorScratch_;
+    /// The comparisons' notes of the pairs carried over (events.cpp's compare).
+    std::vector<CarriedPair> carried_;
     Buckets buckets_;
     /// contactsBefore_ by slot: each slot's run of indices into it (forEachTouchOf).
     mutable std::mutex indexMutex_;

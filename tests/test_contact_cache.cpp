@@ -28,7 +28,7 @@ void rebuild(ContactCache& cache, const std::vector<Added>& contacts, TaskRunner
     cache.endCounting();
     // Filled back to front: the filling pass may go in any order.
     for (std::size_t k = contacts.size(); k-- > 0;)
-        cache.add(contacts[k].a, ranks[k], contacts[k].b,
+        cache.add(contacts[k].a, ranks[k], contacts[k].b, std::uint32_t(k),
                   {1, 1, {0.0f, -1.0f}, contacts[k].impulse, 0.0f});
     cache.endRebuild(tasks);
 }

@@ -1,6 +1,8 @@
 // What a step reports: contact begin and end, touching flags, crushes.
 #include "counting_sort.hpp"
 #include "jostle/world.hpp"
+#include "world_access.hpp"
+#include "world_state.hpp"
 
 #include <gtest/gtest.h>
 
@@ -131,6 +133,31 @@ TEST(Events, PairsOfSleepingColumnsCarryOverAmongAwakeOnes) {
             std::sort(found.begin(), found.end(), bySlot);
             EXPECT_EQ(found, expected) << "column " << column << ", row " << row;
         }
+    }
+}
+
+// The physical model lists its touching contacts sorted by pair (in the order of the contact
+// cache it has just stored) and merges them with the last step's in the list's own room: two
+// lists of touching pairs, each with room for an eighth more than it holds, where sorting
+// and merging through a third list kept three.
+TEST(Events, ThePhysicalModelKeepsTwoListsOfTouchingPairs) {
+    for (int workers : {1, 2}) {
+        World world(WorldDef{.gravity = {0, kG}, .tasks = {.workers = workers}});
+        world.createBody({.type = BodyType::Static, .x = 0, .y = 50, .hw = 1000, .hh = 50});
+        for (int column = 0; column < 40; ++column)
+            for (int row = 0; row < 20; ++row)
+                world.createBody({.x = 20.0f * float(column) - 400.0f,
+                                  .y = -5.0f - 10.0f * float(row),
+                                  .hw = 5,
+                                  .hh = 5});
+        std::size_t touching = 0;
+        for (int step = 0; step < 30; ++step) {
+            world.step(kDt);
+            touching = WorldAccess::state(world).events.touchingBefore().size();
+        }
+        ASSERT_EQ(touching, 40u * 20u) << "each box on the one below, the bottom ones on the floor";
+        EXPECT_LE(WorldAccess::state(world).events.contactRecordRoom(), 2 * touching * 9 / 8 + 2)
+            << workers << " workers";
     }
 }
 

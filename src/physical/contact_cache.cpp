@@ -64,7 +64,7 @@ void storeImpulses(StepContext& step) {
         // What held a touching pair together starts the next step; what closed a gap was a
         // blow, not a push that goes on.
         const bool closing = c.targetSpeed < 0.0f;
-        cache.add(slotA, ranks[k], slotB,
+        cache.add(slotA, ranks[k], slotB, k,
                   {a.generation, b.generation, c.normal(), closing ? 0.0f : c.normalImpulse,
                    closing ? 0.0f : c.tangentImpulse});
         // How far the contact's impulse pushed each body out this step (position

@@ -31,8 +31,9 @@ struct CachedContact {
 /// slot (a counting sort, rebuilt every step), so a lookup scans the few contacts of one
 /// body, and lookups in creation order walk the table front to back. A body with many
 /// contacts (a floor under a crowd) has its run sorted by the other slot and searched by
-/// halves. Never iterated for results, so nothing of its layout can leak into them: a
-/// lookup finds the first of the step's contacts of the pair, however the runs lie.
+/// halves. Nothing of its layout leaks into results: a lookup finds the first of the
+/// step's contacts of the pair, however the runs lie, and the events walk it only to list
+/// the touching contacts by first body, then sort each body's by the other.
 ///
 /// Rebuilt in place from this step's contacts, with no second copy: a counting pass
 /// (count(a) for each, in order, giving each its rank), a filling pass (add for each, in
@@ -74,8 +75,23 @@ public:
     void endCounting() { resizeAnewToFit(entries_, runs_.endCounting()); }
     /// Filling pass: the contact of rank `rank` among those of `a`. Contacts of different
     /// ranks may be added at once on several threads.
-    void add(std::uint32_t a, std::uint32_t rank, std::uint32_t b, const CachedContact& contact) {
-        entries_[runs_.begin(a) + rank] = {b, rank, contact};
+    /// `k` is the contact's index in the step's list (forEachStepContact).
+    void add(std::uint32_t a, std::uint32_t rank, std::uint32_t b, std::uint32_t k,
+             const CachedContact& contact) {
+        entries_[runs_.begin(a) + rank] = {b, rank, k, contact};
+    }
+    /// After a rebuild, the step's contacts in the cache's order: the entries' places
+    /// [0, size()), each holding the index of the step's contact it came from
+    /// (stepContactAt), in runs by the first slot: forEachRun(visit(begin, end, sortedByB))
+    /// in slot order, a run in the step's order, or by the other slot where sortedByB.
+    std::uint32_t size() const { return std::uint32_t(entries_.size()); }
+    std::uint32_t stepContactAt(std::uint32_t place) const { return entries_[place].stepContact; }
+    template <class Visit> void forEachRun(Visit&& visit) const {
+        for (std::uint32_t a = 0; a < runs_.keyCount(); ++a) {
+            const std::uint32_t begin = runs_.begin(a), end = runs_.end(a);
+            if (begin != end)
+                visit(begin, end, end - begin > kLongRun);
+        }
     }
     /// Ends the rebuild: sorts the long runs, on `tasks`' workers.
     void endRebuild(TaskRunner& tasks);
@@ -86,7 +102,8 @@ private:
     static constexpr std::uint32_t kLongRun = 16;
     struct Entry {
         std::uint32_t b = 0;
-        std::uint32_t rank = 0; ///< in the run as counted: the step's order of its contacts
+        std::uint32_t rank = 0;        ///< in the run as counted: the step's order of its contacts
+        std::uint32_t stepContact = 0; ///< its index in the step's contacts
         CachedContact contact;
     };
     Buckets runs_; ///< by slot a: its entries

@@ -4,6 +4,7 @@
 #include "../events.hpp"
 #include "../record_touch.hpp"
 #include "../room.hpp"
+#include "contact_cache.hpp"
 #include "step_context.hpp"
 
 #include <algorithm>
@@ -22,8 +23,8 @@ constexpr std::uint32_t kContactsPerReportBlock = 1024;
 
 /// A dynamic body that a kinematic body moving into it overlaps deeper than kCrushDepth
 /// of its size becomes a candidate.
-void findCrush(const WorldState& w, const Contact& c, std::uint32_t slotA, std::uint32_t slotB,
-               float overlap, std::vector<CrushCandidate>& candidates) {
+void findCrush(const WorldState& w, const Contact& c, std::uint32_t k, std::uint32_t slotA,
+               std::uint32_t slotB, float overlap, std::vector<CrushCandidate>& candidates) {
     const Body& a = w.slots[slotA];
     const Body& b = w.slots[slotB];
     const bool kinematicA = a.type == BodyType::Kinematic,
@@ -36,7 +37,7 @@ void findCrush(const WorldState& w, const Contact& c, std::uint32_t slotA, std::
     const Vec2 bodyHalf = w.slots[body].half;
     const float half = c.axis == kAlongSlope ? std::min(bodyHalf.x, bodyHalf.y) : bodyHalf[c.axis];
     if (dot(w.slots[by].velocity, into) > 0.0f && overlap > kCrushDepth * half)
-        candidates.push_back({body, by, into});
+        candidates.push_back({body, by, into, k});
 }
 
 /// Whether the crush under way `e` goes on: both bodies are still there and overlap.
@@ -61,7 +62,7 @@ void reportCrushes(StepContext& step) {
         return std::any_of(events.crushing.begin(), events.crushing.end(),
                            [&](const CrushEvent& e) { return e.body == body && e.by == by; });
     };
-    step.scratch.report.crushCandidates.forEachInOrder([&](const CrushCandidate& candidate) {
+    for (const CrushCandidate& candidate : step.scratch.report.candidatesInOrder) {
         for (const Contact& c : step.contacts) {
             const std::uint32_t slotA = step.bodies[c.ia].slot, slotB = step.bodies[c.ib].slot;
             if (slotA != candidate.body && slotB != candidate.body)
@@ -82,7 +83,7 @@ void reportCrushes(StepContext& step) {
                 break;
             }
         }
-    });
+    }
 }
 
 /// Whether contact `c` touches where the step leaves its bodies, which overlap by
@@ -106,58 +107,98 @@ FoundTouch touchOf(const StepContext& step, const Contact& c) {
 /// two bodies (TouchingBit: four bits each).
 constexpr std::uint16_t kTouches = 0x100;
 
-/// Lists the touching contacts, in contact order, and finds the crush candidates. On one
-/// thread, each is listed as it is found. Shared among the workers, each contact that
-/// touches writes its record at its own index and its bodies' flags beside it, and one
-/// pass then closes the gaps and sets the flags in contact order: the same list and the
-/// same flags, in the list's own room.
+/// Sorts the records of one run of the contact cache (one first body) by the other body,
+/// stably: a run is short (ContactCache's long runs lie sorted).
+void sortRunByB(TouchRecord* first, TouchRecord* last) {
+    for (TouchRecord* i = first + 1; i < last; ++i) {
+        const TouchRecord record = *i;
+        TouchRecord* j = i;
+        for (; j > first && (j - 1)->b.index > record.b.index; --j)
+            *j = *(j - 1);
+        *j = record;
+    }
+}
+
+/// Lists the touching contacts sorted by pair, as publish() compares them, and finds the
+/// crush candidates. The contacts are taken in the contact cache's order, which storeImpulses
+/// has just made: by first body, so that sorting each body's few records by the other
+/// gives the whole list sorted. On one thread, each is listed as it is found. Shared
+/// among the workers, each contact that touches writes its record at its cache place and
+/// its bodies' flags beside it, and one pass then closes the gaps and sets the flags in
+/// that order: the same list and the same flags.
 void listTouches(StepContext& step) {
     WorldState& w = step.world;
     ReportScratch& scratch = step.scratch.report;
     std::vector<TouchRecord>& records = w.events.contactsNow;
-    const auto count = std::uint32_t(step.contacts.size());
-    scratch.crushCandidates.reset(w.tasks->blocksOf(count, kContactsPerReportBlock));
-    const bool inOrder = !w.tasks->sharing();
-    const std::size_t listed = records.size();
+    const ContactCache& cache = w.contactCache;
+    const std::uint32_t count = cache.size();
+    std::vector<CrushCandidate>& candidates = scratch.candidatesInOrder;
+    candidates.clear();
     // At most a record a contact.
-    makeRoom(records, listed + count);
-    if (!inOrder) {
-        resizeAnewToFit(scratch.touches, count);
-        records.resize(listed + count);
-    }
-    w.tasks->forEachBlock(count, kContactsPerReportBlock, [&](Block block) {
-        for (std::uint32_t k = block.begin; k < block.end; ++k) {
-            const Contact& c = step.contacts[k];
-            const float overlap = step.overlapOf(c);
-            const bool touches = touchesAtTheEnd(step, c, overlap);
-            if (inOrder) {
-                if (touches)
+    makeRoom(records, count);
+    // Only a dynamic body against an infinitely heavy one can be crushed.
+    const auto lookForCrush = [&](const Contact& c, std::uint32_t k, float overlap,
+                                  std::vector<CrushCandidate>& found) {
+        if ((step.invMassA(c) == 0.0f) != (step.invMassB(c) == 0.0f))
+            findCrush(w, c, k, step.bodies[c.ia].slot, step.bodies[c.ib].slot, overlap, found);
+    };
+    if (!w.tasks->sharing()) {
+        cache.forEachRun([&](std::uint32_t begin, std::uint32_t end, bool sortedByB) {
+            const std::size_t first = records.size();
+            for (std::uint32_t place = begin; place < end; ++place) {
+                const std::uint32_t k = cache.stepContactAt(place);
+                const Contact& c = step.contacts[k];
+                const float overlap = step.overlapOf(c);
+                if (touchesAtTheEnd(step, c, overlap))
                     listTouch(w, touchOf(step, c));
-            } else if (touches) {
-                const FoundTouch touch = touchOf(step, c);
-                records[listed + k] = touch.record;
-                scratch.touches[k] = std::uint16_t(kTouches | touch.flagA | touch.flagB << 4);
-            } else {
-                scratch.touches[k] = 0;
+                lookForCrush(c, k, overlap, candidates);
             }
-            // Only a dynamic body against an infinitely heavy one can be crushed.
-            if ((step.invMassA(c) == 0.0f) != (step.invMassB(c) == 0.0f))
-                findCrush(w, c, step.bodies[c.ia].slot, step.bodies[c.ib].slot, overlap,
-                          scratch.crushCandidates[block.index]);
-        }
-    });
-    if (inOrder)
-        return;
-    std::size_t at = listed;
-    for (std::uint32_t k = 0; k < count; ++k) {
-        const std::uint16_t touch = scratch.touches[k];
-        if (touch == 0)
-            continue;
-        const TouchRecord record = records[listed + k];
-        flagTouch(w.events, record, TouchingBit(touch & 0xF), TouchingBit(touch >> 4 & 0xF));
-        records[at++] = record;
+            if (!sortedByB)
+                sortRunByB(records.data() + first, records.data() + records.size());
+        });
+    } else {
+        scratch.crushCandidates.reset(w.tasks->blocksOf(count, kContactsPerReportBlock));
+        resizeAnewToFit(scratch.touches, count);
+        records.resize(count);
+        w.tasks->forEachBlock(count, kContactsPerReportBlock, [&](Block block) {
+            for (std::uint32_t place = block.begin; place < block.end; ++place) {
+                const std::uint32_t k = cache.stepContactAt(place);
+                const Contact& c = step.contacts[k];
+                const float overlap = step.overlapOf(c);
+                scratch.touches[place] = 0;
+                if (touchesAtTheEnd(step, c, overlap)) {
+                    const FoundTouch touch = touchOf(step, c);
+                    records[place] = touch.record;
+                    scratch.touches[place] =
+                        std::uint16_t(kTouches | touch.flagA | touch.flagB << 4);
+                }
+                lookForCrush(c, k, overlap, scratch.crushCandidates[block.index]);
+            }
+        });
+        std::size_t at = 0;
+        cache.forEachRun([&](std::uint32_t begin, std::uint32_t end, bool sortedByB) {
+            const std::size_t first = at;
+            for (std::uint32_t place = begin; place < end; ++place) {
+                const std::uint16_t touch = scratch.touches[place];
+                if (touch == 0)
+                    continue;
+                const TouchRecord record = records[place];
+                flagTouch(w.events, record, TouchingBit(touch & 0xF),
+                          TouchingBit(touch >> 4 & 0xF));
+                records[at++] = record;
+            }
+            if (!sortedByB)
+                sortRunByB(records.data() + first, records.data() + at);
+        });
+        records.resize(at);
+        scratch.crushCandidates.forEachInOrder(
+            [&](const CrushCandidate& candidate) { candidates.push_back(candidate); });
     }
-    records.resize(at);
+    w.events.contactsNowSorted = true;
+    // Crushes are reported in contact order.
+    std::sort(
+        candidates.begin(), candidates.end(),
+        [](const CrushCandidate& x, const CrushCandidate& y) { return x.contact < y.contact; });
 }
 
 } // namespace

@@ -17,7 +17,8 @@ struct StepContext;
 /// on the other side.
 struct CrushCandidate {
     std::uint32_t body, by;
-    Vec2 into; ///< from the kinematic body into the dynamic one
+    Vec2 into;             ///< from the kinematic body into the dynamic one
+    std::uint32_t contact; ///< the contact's index in the step's list
 };
 
 /// What listing the touching contacts keeps on the side (report.cpp).
@@ -25,8 +26,9 @@ struct ReportScratch {
     /// Shared among the workers: whether each contact touches at the end of the step, with
     /// its bodies' touching flags (report.cpp's listTouches).
     std::vector<std::uint16_t> touches;
-    /// What each block of contacts found, read back in block order.
+    /// What each block of contacts found, then all of them in contact order.
     PerBlock<CrushCandidate> crushCandidates;
+    std::vector<CrushCandidate> candidatesInOrder;
 };
 
 void reportEvents(StepContext& step);
