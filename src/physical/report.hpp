@@ -24,7 +24,8 @@ struct CrushCandidate {
 /// What listing the touching contacts keeps on the side (report.cpp).
 struct ReportScratch {
     /// Shared among the workers: whether each contact touches at the end of the step, with
-    /// its bodies' touching flags (report.cpp's listTouches).
+    /// its bodies' touching flags, at its place in the contact cache (report.cpp's
+    /// listTouches).
     std::vector<std::uint16_t> touches;
     /// What each block of contacts found, then all of them in contact order.
     PerBlock<CrushCandidate> crushCandidates;
