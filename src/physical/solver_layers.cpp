@@ -14,6 +14,16 @@ void layerContacts(StepContext& step) {
     const std::uint32_t block = step.world.tasks->blockSize(kContactsPerBlock);
     if (!step.world.tasks->sharing() || count < 2 * block)
         return;
+    // The support levels bound the layers from below: where even that many would be too
+    // narrow (below), the layers are not worked out.
+    if (count / std::max(step.scratch.support.top, 1u) < kBlocksPerLayer * block)
+        return;
+    // Layers found too narrow are looked for again only every kStepsBetweenNarrowLooks
+    // steps: a world's layers change slowly, and working them out costs.
+    if (layers.stepsToNextLook > 0) {
+        --layers.stepsToNextLook;
+        return;
+    }
     // Each contact's layer, kept in `order` for now; `next` holds each body's next layer.
     layers.next.assign(step.bodies.size(), 0);
     layers.layerOf.resize(count);
@@ -35,8 +45,10 @@ void layerContacts(StepContext& step) {
     // Narrow layers cost more in handing out and in cache lines passed between cores than
     // they save: many_pyramids_200 (29,000 contacts, 36 layers, three blocks a layer on
     // average) stepped 0.7 to 0.8 times as fast on two workers as on one (docs/threads.md).
-    if (count / depth < kBlocksPerLayer * block)
+    if (count / depth < kBlocksPerLayer * block) {
+        layers.stepsToNextLook = kStepsBetweenNarrowLooks - 1;
         return;
+    }
     // A counting sort of the contacts by layer, each layer in contact order.
     layers.starts.assign(depth + 1, 0);
     for (std::uint32_t k = 0; k < count; ++k)

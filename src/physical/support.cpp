@@ -177,6 +177,7 @@ void orderBySupport(StepContext& step) {
     std::uint32_t top = 0;
     for (std::uint32_t blockTop : s.topOfBlock)
         top = std::max(top, blockTop);
+    s.top = top;
     sortByLevel(step, top);
 }
 

@@ -25,6 +25,11 @@ struct SupportScratch {
     Buckets byLevel;
     std::vector<std::uint32_t> destination; ///< the sort's scratch
     std::vector<std::uint32_t> topOfBlock;  ///< one above the highest level, by block of contacts
+    /// One above the highest level of a contact (its lower body's). A contact of level L
+    /// and the contacts down its lower body's path to the ground are L + 1 contacts in
+    /// support order, each sharing a dynamic body with the next: solver layers (which
+    /// keep that order) number at least this many.
+    std::uint32_t top = 0;
 };
 
 /// Sets each contact's supporter and sorts step.contacts by support level, ties in the
