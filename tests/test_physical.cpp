@@ -204,6 +204,29 @@ TEST(Restitution, BouncyBoxesComeToRestAndDoNotBuzz) {
     }
 }
 
+// Found by fuzz_api's settled mode (tests/fuzz/open/README.md, bounce-behind-a-bounce): two
+// boxes a gap of 1 apart in a column fall at 240 a second, 8 a step at 30 Hz, onto a static
+// block 4 high, the lower one bouncy. Neither may end inside the block or pass through it:
+// each ends on the block (centre at 4.5 or above) or above it. Disabled until the impacts
+// stage is fixed: the upper box ends inside the block, or both fall through.
+TEST(Restitution, DISABLED_ABoxRightBehindABouncingOneStaysOnTheBlock) {
+    for (float bounce : {0.25f, 0.5f, 0.75f, 1.0f}) {
+        World world = physicalWorld({0, -1200});
+        world.createBody({.type = BodyType::Static, .x = -190, .y = 2, .hw = 6, .hh = 2});
+        const BodyId lower = world.createBody(
+            {.x = -191.25f, .y = 40.5f, .hw = 0.5f, .hh = 0.5f, .bounce = bounce, .friction = 1});
+        const BodyId upper =
+            world.createBody({.x = -191.25f, .y = 42.5f, .hw = 0.5f, .hh = 0.5f, .friction = 0});
+        for (int step = 0; step < 60; ++step) {
+            world.step(1.0f / 30.0f);
+            ASSERT_GE(world.position(lower).y, 4.5f - 0.01f)
+                << "bounce " << bounce << ", step " << step;
+            ASSERT_GE(world.position(upper).y, 4.5f - 0.01f)
+                << "bounce " << bounce << ", step " << step;
+        }
+    }
+}
+
 // --- Rest and stacks -----------------------------------------------------------------
 
 TEST(Rest, ABoxOnAFloorStaysPutForAMinute) {
