@@ -75,7 +75,7 @@ public:
     void endCounting() { resizeAnewToFit(entries_, runs_.endCounting()); }
     /// Filling pass: the contact of rank `rank` among those of `a`. Contacts of different
     /// ranks may be added at once on several threads.
-    /// `k` is the contact's index in the step's list (forEachStepContact).
+    /// `k` is the contact's index in the step's list (stepContactAt).
     void add(std::uint32_t a, std::uint32_t rank, std::uint32_t b, std::uint32_t k,
              const CachedContact& contact) {
         entries_[runs_.begin(a) + rank] = {b, rank, k, contact};
