@@ -415,7 +415,9 @@ export class World {
   profile(): StepProfile;
   /**
    * Calls callback for every pair the solver is about to respond to: false lets the pair
-   * pass through this time; bounce and friction may be changed. null removes it.
+   * pass through this time; bounce and friction may be changed. null removes it. In the
+   * physical model a body's mass is taken when the step first meets it: a mass or type the
+   * callback changes for a body met already counts from the next step.
    */
   setPreSolve(callback: ((collision: Collision) => boolean | void) | null): void;
 
