@@ -136,15 +136,11 @@ PairOutcome examinePair(const StepContext& step, const BodyPair& pair, Contact& 
     return outcome;
 }
 
-/// Fills in the warm start and the target of a contact examinePair made; false if both
-/// bodies are infinitely heavy (a callback made them so).
-bool finishContact(const StepContext& step, Contact& c, const BodyPair& pair,
+/// Fills in the warm start and the target of a contact examinePair made.
+void finishContact(const StepContext& step, Contact& c, const BodyPair& pair,
                    const PairOutcome& outcome) {
-    if (step.world.slots[pair.a].invMass + step.world.slots[pair.b].invMass <= 0.0f)
-        return false;
     warmStart(step, c, pair.a, pair.b, outcome.normal);
     setTarget(c, outcome.bounce, outcome.gap, step.dt);
-    return true;
 }
 
 /// Keeps a pair of a sensor and a body that may overlap it, the sensor first.
@@ -180,8 +176,13 @@ void buildInParallel(StepContext& step) {
             Contact& c = step.contacts[k];
             const PairOutcome outcome = examinePair(step, pairs[k], c);
             made[k] = outcome.kind;
-            if (outcome.kind == PairOutcome::kContact && !finishContact(step, c, pairs[k], outcome))
+            if (outcome.kind != PairOutcome::kContact)
+                continue;
+            // No callback runs here: the bodies' masses are those the step met them with.
+            if (w.slots[pairs[k].a].invMass + w.slots[pairs[k].b].invMass <= 0.0f)
                 made[k] = PairOutcome::kNothing;
+            else
+                finishContact(step, c, pairs[k], outcome);
         }
     });
     std::size_t kept = 0;
@@ -229,8 +230,10 @@ void buildWithCallback(StepContext& step) {
         c.ib = step.solverBodyOf(pair.b);
         // The solver reads the masses its bodies had when the step met them: a body a
         // callback made heavier or lighter since keeps them to the end of the step.
-        if (step.invMassA(c) + step.invMassB(c) > 0.0f && finishContact(step, c, pair, outcome))
+        if (step.invMassA(c) + step.invMassB(c) > 0.0f) {
+            finishContact(step, c, pair, outcome);
             step.contacts.push_back(c);
+        }
     }
     std::sort(vetoed.begin(), vetoed.end());
     // A callback may have destroyed a body after its contact was made: the body is left
