@@ -167,6 +167,9 @@ inline bool sameBytes(const std::uint8_t* at, const FieldCodec& codec) {
 struct GroupCodecs {
     std::size_t count = 0;
     const FieldCodec* codec[kBodyCodecs] = {};
+    /// Every field a float or a vector of them (the state group): read and written without
+    /// a switch over the kinds, whose jumps a loop over many bodies mispredicts.
+    bool floatsOnly = true;
 };
 
 inline const GroupCodecs& groupCodecs(FieldCodec::Group group) {
@@ -176,6 +179,8 @@ inline const GroupCodecs& groupCodecs(FieldCodec::Group group) {
             if (codec.kind != FieldCodec::Skip) {
                 GroupCodecs& into = made[codec.group];
                 into.codec[into.count++] = &codec;
+                into.floatsOnly = into.floatsOnly && (codec.kind == FieldCodec::Number ||
+                                                      codec.kind == FieldCodec::Vector);
             }
         return made;
     }();
@@ -231,6 +236,17 @@ template <class Ar> void groupFields(Ar& ar, const PlaceBytes& body, FieldCodec:
                 present |= std::uint64_t{1} << j;
     ar.var(present);
     ar.check(present >> fields.count == 0, "a body's fields");
+    if (fields.floatsOnly) {
+        for (std::uint64_t left = present; left != 0; left &= left - 1) {
+            const FieldCodec& codec = *fields.codec[std::countr_zero(left)];
+            std::uint8_t* at = body.of(codec);
+            if (codec.kind == FieldCodec::Number)
+                ar.f32(*reinterpret_cast<float*>(at));
+            else
+                ar.vec(*reinterpret_cast<Vec2*>(at));
+        }
+        return;
+    }
     for (std::uint64_t left = present; left != 0; left &= left - 1) {
         const FieldCodec& codec = *fields.codec[std::countr_zero(left)];
         std::uint8_t* at = body.of(codec);
