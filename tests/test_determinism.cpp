@@ -59,6 +59,14 @@
 //               are found in another order, and contacts are solved in that order; no
 //               rule of the physics changed. The busy world's and classic hashes, and the
 //               snapshot hashes, unchanged (their sizes do not fall in the new merge).
+//   2026-11-28  physical model, both worlds, and the snapshot hashes (the busy world
+//               bounces): each body of a pair that meets from a gap is moved by its own
+//               velocity change times the moment they met (by inverse mass, no longer the
+//               upper body alone), a pair meets no earlier than either body's last such
+//               collision, a sweep starts such a body from where its path was then, and
+//               a body met eight times in a step bounces no more in it (a box right behind
+//               a bouncing one fell into or through the block under them: fuzz_api,
+//               bounce-behind-a-bounce). Classic unchanged.
 
 #include "busy_worlds.hpp"
 #include "jostle/query.hpp"
@@ -88,8 +96,8 @@ using namespace jostle;
 using namespace jostle::testing;
 
 // The recorded hashes (see the history at the top of the file).
-constexpr std::uint64_t kSlopesHash = 8037145719584943420ULL;
-constexpr std::uint64_t kPhysicalHash = 5073434225265816725ULL;
+constexpr std::uint64_t kSlopesHash = 12594686326039723044ULL;
+constexpr std::uint64_t kPhysicalHash = 2492747402153504595ULL;
 constexpr std::uint64_t kClassicHash = 11721795189068454326ULL;
 constexpr int kSteps = 3000; // 50 seconds of a busy world
 
@@ -347,8 +355,8 @@ TEST(Determinism, ClassicModelGivesTheRecordedHash) {
 // from, whose state after 500 steps is recorded too. scripts/cross.sh runs this on aarch64
 // and s390x (big-endian), the web build in Node: the bytes written there are the bytes
 // written here, and what is restored there continues as here.
-constexpr std::uint64_t kSnapshotAt200 = 17889004582955641399ULL;
-constexpr std::uint64_t kStateAt500 = 9527961619193312567ULL;
+constexpr std::uint64_t kSnapshotAt200 = 3261869203689531040ULL;
+constexpr std::uint64_t kStateAt500 = 4803197623505471453ULL;
 
 TEST(Determinism, ASnapshotIsTheSameBytesEverywhereAndContinuesToTheRecordedHash) {
     BusyWorld taken(Solver::Physical);

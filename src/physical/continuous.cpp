@@ -177,6 +177,14 @@ void sweep(StepContext& step, std::uint32_t slot, Vec2 motion) {
         body.velocity = {};
 }
 
+/// When in the step a collision from a gap last changed the body in `slot` (0: never).
+float changedAt(const StepContext& step, std::uint32_t slot) {
+    const std::vector<std::uint32_t>& index = step.scratch.solverIndex;
+    const std::vector<float>& at = step.scratch.impacts.changedAt;
+    const std::uint32_t solver = slot < index.size() ? index[slot] : StepContext::kNoSolverBody;
+    return solver < at.size() ? at[solver] : 0.0f;
+}
+
 } // namespace
 
 void sweepFastBodies(StepContext& step) {
@@ -209,12 +217,22 @@ void sweepFastBodies(StepContext& step) {
             const float size = std::min(body.half.x, body.half.y);
             if (std::abs(motion.x) <= size && std::abs(motion.y) <= size && !s.unforeseen[slot])
                 continue;
-            if (body.bullet || firstHit(step, slot, motion))
+            if (body.bullet || changedAt(step, slot) > 0.0f || firstHit(step, slot, motion))
                 s.toSweep[block.index].push_back(slot);
         }
     });
-    s.toSweep.forEachInOrder(
-        [&](std::uint32_t slot) { sweep(step, slot, w.slots[slot].velocity * step.dt); });
+    s.toSweep.forEachInOrder([&](std::uint32_t slot) {
+        // A body the impacts moved is where its velocity took it from its last collision:
+        // swept from there, for the rest of the step.
+        const float since = changedAt(step, slot);
+        Body& body = w.slots[slot];
+        const Vec2 before = body.position;
+        body.position += body.velocity * since;
+        const Vec2 start = body.position;
+        sweep(step, slot, body.velocity * (step.dt - since));
+        if (body.position == start)
+            body.position = before;
+    });
     // What the sweeps met joins the step's contacts, for position correction and events.
     if (!s.found.empty()) {
         step.contacts.insert(step.contacts.end(), s.found.begin(), s.found.end());

@@ -22,13 +22,12 @@ constexpr int kMaxSweeps = 8;
 /// float noise in the velocities of a resting pile.
 constexpr float kStillPerSlop = 5.0f;
 
-/// Moves the bodies of `c` so that their offset along the normal changes by `shift`, as
-/// position correction moves them (StepContext::shareOfA): the body that holds the other
-/// stays put, so that a blow from above never drives a held body into what holds it.
-void shiftApart(StepContext& step, const Contact& c, Vec2 normal, float shift) {
-    const float shiftA = shift * step.shareOfA(c);
-    const float shiftB = shift * step.shareOfB(c);
-    for (auto [solverBody, by] : {std::pair{c.ia, shiftA}, std::pair{c.ib, -shiftB}}) {
+/// Moves the bodies of `c` so that their offset along the normal changes by `shift`,
+/// body A taking `shareA` of it and body B `shareB`.
+void shiftApart(StepContext& step, const Contact& c, Vec2 normal, float shift, float shareA,
+                float shareB) {
+    for (auto [solverBody, by] :
+         {std::pair{c.ia, shift * shareA}, std::pair{c.ib, -shift * shareB}}) {
         SolverBody& s = step.bodies[solverBody];
         s.position[0] += normal.x * by;
         s.position[1] += normal.y * by;
@@ -64,20 +63,32 @@ bool collide(StepContext& step, std::uint32_t k, float threshold, bool& shifted)
     const float approach = fromGravity - vn;
     if (!(approach > kStillPerSlop * step.slopOf(c)))
         return false;
-    const float bounce = approach > threshold ? c.bounce : 0.0f;
     const float gap = -step.overlapOf(c);
     // A pair still apart meets if it closes its gap within the step.
     if (gap > 0.0f && -vn * step.dt <= gap)
         return false;
+    // A body that has met kMaxSweeps times in the step is in a rattle (a light body between
+    // a heavy one and a held one is met some pi sqrt(M / m) times before they part, more
+    // than the sweeps follow): its meetings from then on do not bounce (inelastic collapse).
+    bool rattling = false;
+    for (std::uint32_t body : {c.ia, c.ib})
+        if (step.bodies[body].invMass > 0.0f) {
+            std::uint8_t& meetings = step.scratch.impacts.meetings[body];
+            rattling = rattling || meetings == kMaxSweeps;
+            meetings = static_cast<std::uint8_t>(std::min(meetings + 1, kMaxSweeps));
+        }
+    const float bounce = approach > threshold && !rattling ? c.bounce : 0.0f;
     float impulse;
     float meetAfter = 0.0f;
-    if (gap > 0.0f && bounce <= 0.0f) {
+    std::vector<float>& changedAt = step.scratch.impacts.changedAt;
+    const float since = std::max(changedAt[c.ia], changedAt[c.ib]);
+    if (gap > 0.0f && bounce <= 0.0f && since <= 0.0f) {
         // Without a bounce: it closes the gap by the end of the step, and meets no faster.
         impulse = step.effectiveMassOf(c) * (-gap / step.dt - vn);
     } else {
         // They part at `bounce` times the speed they met at, from the moment they met (in
         // which gravity has acted for part of the step only).
-        meetAfter = gap > 0.0f ? gap / -vn : 0.0f;
+        meetAfter = std::max(gap > 0.0f ? gap / -vn : 0.0f, since);
         const float meeting = approach - fromGravity * meetAfter / step.dt;
         impulse = (1.0f + bounce) * step.effectiveMassOf(c) * meeting;
     }
@@ -93,7 +104,15 @@ bool collide(StepContext& step, std::uint32_t k, float threshold, bool& shifted)
     if (meetAfter > 0.0f) {
         // Met after meetAfter, then parted at the speed it left with: where that ends the
         // step, not a gap's width further off.
-        shiftApart(step, c, n, -gap - leaving * meetAfter);
+        // Each body by its own velocity change times the moment they met: each one's path
+        // passes through the meeting point.
+        const float m = step.effectiveMassOf(c);
+        shiftApart(step, c, n, (vn - leaving) * meetAfter, step.invMassA(c) * m,
+                   step.invMassB(c) * m);
+        if (step.invMassA(c) > 0.0f)
+            changedAt[c.ia] = meetAfter;
+        if (step.invMassB(c) > 0.0f)
+            changedAt[c.ib] = meetAfter;
         step.scratch.impacts.bounced.push_back({k, meetAfter, leaving});
         shifted = true;
     }
@@ -114,6 +133,8 @@ void resolveImpacts(StepContext& step) {
         }
     });
     s.changedInSweep.assign(bodyCount, 0);
+    s.changedAt.assign(bodyCount, 0.0f);
+    s.meetings.assign(bodyCount, 0);
     const float threshold = step.restitutionThreshold();
     bool shifted = false;
     // Notes the bodies of a contact that collided in `sweep`, once each.
@@ -151,6 +172,12 @@ void resolveImpacts(StepContext& step) {
                     noteChanged(step.contacts[k], sweep);
             }
     }
+    // What the contacts may take back of a bounce is what they change of the pair's
+    // parting after every collision of the step (a later collision's own shift counts it).
+    for (ImpactsScratch::Bounced& b : s.bounced) {
+        const Contact& c = step.contacts[b.contact];
+        b.leaving = dot(step.velocityOf(c.ia) - step.velocityOf(c.ib), c.normal());
+    }
     // The gaps the contacts may close are those between the bodies as they are now.
     if (shifted)
         for (Contact& c : step.contacts)
@@ -165,7 +192,9 @@ void settleBounces(StepContext& step) {
         const float leaving = dot(step.velocityOf(c.ia) - step.velocityOf(c.ib), n);
         const float unmade = (b.leaving - leaving) * b.meetAfter;
         if (unmade > 0.0f)
-            shiftApart(step, c, n, unmade);
+            // As position correction moves them: the body that holds the other stays put,
+            // so that taking a bounce back never drives a held body into what holds it.
+            shiftApart(step, c, n, unmade, step.shareOfA(c), step.shareOfB(c));
     }
 }
 

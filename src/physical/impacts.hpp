@@ -21,8 +21,12 @@ struct ImpactsScratch {
     std::vector<std::uint32_t> changed, next; ///< solver bodies changed in a sweep
     std::vector<Vec2> gravityInStep;          ///< by solver body: what gravity adds to its velocity
     std::vector<std::uint64_t> queued;        ///< a bit per contact: to look at in this sweep
-    /// A pair that met from a gap after `meetAfter` of the step and was moved for parting
-    /// at `leaving` for the rest of it (by contact index).
+    /// By solver body: when in the step (s) a collision from a gap last changed it, 0 if none.
+    std::vector<float> changedAt;
+    /// By solver body: how many times it met something in the step, up to kMaxSweeps.
+    std::vector<std::uint8_t> meetings;
+    /// A pair that met from a gap `meetAfter` into the step, and the speed it parts at
+    /// after every collision of the step (by contact index).
     struct Bounced {
         std::uint32_t contact;
         float meetAfter, leaving;
@@ -30,15 +34,15 @@ struct ImpactsScratch {
     std::vector<Bounced> bounced;
 };
 
-/// Resolves the step's impacts on the solver bodies' velocities; a pair that closes a gap
-/// to bounce is moved so that it ends the step where bouncing at the moment of contact
-/// takes it.
+/// Resolves the step's impacts on the solver bodies' velocities; each body of a pair that
+/// closes a gap to bounce is moved so that it ends the step where its new velocity takes
+/// it from the moment of contact.
 void resolveImpacts(StepContext& step);
 
 /// After the contacts are solved: a pair moved for a bounce that it no longer makes at
 /// that speed (a heavy body landed on top and held it down) is moved back by the part of
-/// the bounce that is not made, so that it ends the step where its final velocity takes it
-/// from the moment of contact, never inside what it met.
+/// the bounce that is not made, as position correction moves bodies, never into what
+/// holds them.
 void settleBounces(StepContext& step);
 
 } // namespace jostle

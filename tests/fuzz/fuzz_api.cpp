@@ -2177,10 +2177,6 @@ private:
         d.density = densities[in_.byte() % densities.size()];
         const std::uint8_t material = in_.byte();
         d.bounce = static_cast<float>(material % 5) / 4.0f;
-        // OPEN QUESTION bounce-behind-a-bounce: a box right behind a bouncing one passes
-        // into it and the static body it bounced off (tests/fuzz/open/README.md).
-        if (!check::checkOpen("bounce-behind-a-bounce"))
-            d.bounce = 0.0f;
         d.friction = static_cast<float>(material / 5 % 5) / 4.0f;
         return d;
     }
