@@ -67,15 +67,43 @@ inline std::optional<FieldError> rowsProblem(const std::vector<std::string>& row
     return std::nullopt;
 }
 
-/// The first ramp tile of `rows`, which a world of the classic model refuses; else nothing.
-inline std::optional<FieldError> rampProblem(const std::vector<std::string>& rows,
-                                             Notation notation) {
+/// Why a one-way map refuses a ramp tile: BodyDef::oneWay is for boxes, and a ramp blocks
+/// from every side.
+inline constexpr const char* kNoRampsOneWay =
+    "a one-way map has boxes only: no ramps (a ramp blocks from every side)";
+
+/// The first ramp tile of `rows` as a problem saying `why`; else nothing.
+inline std::optional<FieldError> firstRampProblem(const std::vector<std::string>& rows,
+                                                  Notation notation, const char* why) {
     for (std::size_t row = 0; row < rows.size(); ++row)
         for (std::size_t column = 0; column < rows[row].size(); ++column)
             if (rampTile(rows[row][column]))
                 return FieldError{tilePlace(column, row, notation),
-                                  kNoRampsInClassic + tileCoordinates(column, row, notation)};
+                                  why + tileCoordinates(column, row, notation)};
     return std::nullopt;
+}
+
+/// The first ramp tile of `rows`, which a world of the classic model refuses; else nothing.
+inline std::optional<FieldError> rampProblem(const std::vector<std::string>& rows,
+                                             Notation notation) {
+    return firstRampProblem(rows, notation, kNoRampsInClassic);
+}
+
+/// The first ramp tile of the rows of a one-way map (`oneWay` not {0, 0}); else nothing.
+inline std::optional<FieldError> oneWayRampProblem(const std::vector<std::string>& rows,
+                                                   Vec2 oneWay, Notation notation) {
+    if (oneWay == Vec2{})
+        return std::nullopt;
+    return firstRampProblem(rows, notation, kNoRampsOneWay);
+}
+
+/// Whether `rows` hold a half of a 2:1 ramp, a body half a tile high.
+inline bool hasHalfTiles(const std::vector<std::string>& rows) {
+    for (const std::string& row : rows)
+        for (char tile : row)
+            if (const RampTile* ramp = rampTile(tile); ramp && ramp->height != 0)
+                return true;
+    return false;
 }
 
 } // namespace jostle

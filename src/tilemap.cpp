@@ -37,6 +37,13 @@ const TileMapData& lookUp(const WorldState& world, TileMapId id, const char* fun
 
 } // namespace
 
+bool TileMaps::hasRampTiles() const {
+    return std::any_of(maps.begin(), maps.end(), [](const TileMapData& map) {
+        return map.alive && std::any_of(map.tiles.begin(), map.tiles.end(),
+                                        [](char tile) { return rampTile(tile) != nullptr; });
+    });
+}
+
 // --- Maps --------------------------------------------------------------------------------
 
 TileMapId createTileMap(World& world, const TileMapDef& def) {
@@ -167,8 +174,16 @@ void setTile(World& world, TileMapId id, int column, int row, char tile) {
                             " rows)");
     if (!isTileChar(tile))
         fail("setTile", "expected '#', '.' or a ramp, got " + describeChar(tile));
-    if (rampTile(tile) && world.solver() == Solver::Classic)
-        fail("setTile", kNoRampsInClassic);
+    // A tile createTileMap would refuse in its place is refused before anything changes.
+    if (const RampTile* ramp = rampTile(tile)) {
+        if (world.solver() == Solver::Classic)
+            fail("setTile", kNoRampsInClassic);
+        if (map.settings.oneWay != Vec2{})
+            fail("setTile", kNoRampsOneWay);
+        if (ramp->height != 0 && !halfTilesFit(map.settings, static_cast<std::size_t>(map.rows)))
+            fail("setTile", "the map's tile is too small for its position: the halves of a 2:1 "
+                            "ramp would be narrower than 2e-9 (math.hpp)");
+    }
     char& here = map.tiles[map.at(column, row)];
     if (here == tile)
         return;

@@ -17,6 +17,10 @@ namespace snapshot {
 struct Access;
 }
 
+/// Whether the halves of 2:1 ramps, half a tile high, are bodies createBody accepts in each
+/// of a map's first `rows` rows at def.y with tiles of def.tile (tilemap_def.cpp).
+bool halfTilesFit(const TileMapDef& def, std::size_t rows);
+
 /// A map's bodies in creation order (tileMapBodies), with appending and removing in O(1)
 /// whatever their number, as CreationOrder does for the world's: removing one leaves a
 /// gap (the null handle), found through the ticket its piece keeps, not by a search. The
@@ -180,6 +184,9 @@ struct TileMaps {
     /// Held by tileMapBodies, a const function several threads may call at once, while it
     /// closes the gaps of a map's list.
     mutable std::mutex listLock;
+
+    /// Whether a live map has a ramp tile (its ramp bodies made, or destroyed by the game).
+    bool hasRampTiles() const;
 };
 
 } // namespace jostle

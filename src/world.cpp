@@ -231,6 +231,9 @@ void World::setSolver(Solver solver) {
     if (solver == Solver::Classic && state_->shapedBodies > 0)
         fail("setSolver", "the classic model has sharp boxes only, and this world has "
                           "rounded bodies, ramps or segments");
+    if (solver == Solver::Classic && state_->tileMaps.hasRampTiles())
+        fail("setSolver", "the classic model has sharp boxes only, and a tile map of this world "
+                          "has ramp tiles");
     state_->def.solver = solver;
     state_->contactCache.clear();
     state_->events.clear();

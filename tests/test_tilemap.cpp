@@ -272,6 +272,79 @@ TEST(TileMapChecks, TheClassicModelRefusesRampTilesAndChangesNothing) {
     EXPECT_EQ(world.halfExtents(tileMapBodies(world, map)[0]), (Vec2{24, 8}));
 }
 
+// Found by fuzz_api (tests/fuzz/corpus/api/one-way-ramp-tiles-1): a one-way map with a
+// ramp was accepted by checkTileMapDef, then createTileMap made the map's boxes and threw
+// at the ramp (createBody refuses oneWay for a ramp), leaving the boxes with no map; setTile
+// threw from the same place with the tile already changed. A ramp blocks from every side,
+// so a one-way map has boxes only, and both refuse a ramp before anything is made.
+TEST(TileMapChecks, AOneWayMapRefusesRampTilesAndChangesNothing) {
+    World world;
+    TileMapDef def = mapDef({"##..", "##/."});
+    def.oneWay = {0, -1};
+    ASSERT_TRUE(checkTileMapDef(def).has_value());
+    EXPECT_EQ(checkTileMapDef(def)->field, "rows[1][2]");
+    try {
+        createTileMap(world, def);
+        FAIL() << "no jostle::Error";
+    } catch (const Error& error) {
+        EXPECT_EQ(std::string(error.what()),
+                  "createTileMap: TileMapDef.rows[1][2]: a one-way map has boxes only: no ramps "
+                  "(a ramp blocks from every side)");
+    }
+    EXPECT_EQ(world.bodyCount(), 0u);
+    def.rows = {"##.."};
+    const TileMapId map = createTileMap(world, def);
+    for (char ramp : {'/', 'l', 'D'}) {
+        EXPECT_THROW(setTile(world, map, 2, 0, ramp), Error) << ramp;
+        EXPECT_EQ(tileOf(world, map, 2, 0), '.');
+        EXPECT_EQ(world.bodyCount(), 1u);
+    }
+}
+
+// Found by fuzz_api (tests/fuzz/corpus/api/small-ramp-tiles-1): the half of a 2:1 ramp is
+// a body half a tile high, so a quarter tile in half height; checkTileMapDef held only
+// whole tiles to the smallest size (a half extent of 1e-9, math.hpp) and accepted a map of
+// tiles 2e-9 wide with such a half, which createTileMap then failed to make after the
+// map's box. A 45-degree ramp takes a whole tile and is made at that size.
+TEST(TileMapChecks, TheHalvesOf2To1RampsMustBeBodiesOfTheSmallestSizeOrMore) {
+    TileMapDef def{.tile = 2e-9f, .rows = {"#l"}};
+    ASSERT_TRUE(checkTileMapDef(def).has_value());
+    EXPECT_EQ(checkTileMapDef(def)->field, "tile");
+    World world;
+    EXPECT_THROW(createTileMap(world, def), Error);
+    EXPECT_EQ(world.bodyCount(), 0u);
+    def.rows = {"#/"}; // a whole tile: half extents of 1e-9
+    EXPECT_FALSE(checkTileMapDef(def).has_value());
+    const TileMapId map = createTileMap(world, def);
+    EXPECT_EQ(world.bodyCount(), 2u);
+    EXPECT_THROW(setTile(world, map, 1, 0, 'r'), Error);
+    EXPECT_EQ(tileOf(world, map, 1, 0), '/');
+    EXPECT_EQ(world.bodyCount(), 2u);
+    def.tile = 4e-9f; // its halves' half height 1e-9: the smallest size
+    def.rows = {"#l"};
+    EXPECT_FALSE(checkTileMapDef(def).has_value());
+    EXPECT_NO_THROW(createTileMap(world, def));
+}
+
+// Found by fuzz_api (tests/fuzz/corpus/api/classic-with-ramp-tiles-1): a map whose ramp
+// bodies the game destroyed keeps its ramp tiles; with no shaped body left, setSolver took
+// the classic model, and the next setTile in that row, even to '.', threw from rebuilding
+// the row's ramps with the tile already changed. setSolver now refuses the classic model
+// while a map has ramp tiles.
+TEST(TileMapChecks, TheClassicModelIsRefusedWhileAMapHasRampTiles) {
+    World world;
+    const TileMapId map = createTileMap(world, mapDef({"#/."}));
+    for (BodyId body :
+         std::vector<BodyId>(tileMapBodies(world, map).begin(), tileMapBodies(world, map).end()))
+        if (world.bodyDef(body).slope != Vec2{})
+            world.destroyBody(body);
+    EXPECT_THROW(world.setSolver(Solver::Classic), Error);
+    EXPECT_EQ(world.solver(), Solver::Physical);
+    setTile(world, map, 1, 0, '.'); // no ramp tile left
+    world.setSolver(Solver::Classic);
+    EXPECT_EQ(world.solver(), Solver::Classic);
+}
+
 TEST(TileMapChecks, HandlesAreChecked) {
     World world;
     World other;

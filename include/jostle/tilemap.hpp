@@ -88,8 +88,10 @@ struct TileMapDef {
 /// The first problem with `def`, or nothing if createTileMap will accept it. The rules:
 /// x, y finite and tile > 0, with the whole map within float range; at least one row,
 /// rows all as long as the first, at least one column, and only '#', '.' and the ramps in
-/// them (the field is named like "rows[2][5]"); friction and bounce in [0, 1]; oneWay
-/// {0, 0} or a unit vector along x or y.
+/// them (the field is named like "rows[2][5]"); no ramp in a one-way map (a ramp blocks
+/// from every side); every body's half extent at least 1e-9 where the map lies (math.hpp),
+/// the halves of 2:1 ramps, half a tile high, included; friction and bounce in [0, 1];
+/// oneWay {0, 0} or a unit vector along x or y.
 std::optional<FieldError> checkTileMapDef(const TileMapDef& def);
 
 /// Creates a tile map and the static bodies of its solid tiles, in order, top row first
@@ -111,7 +113,9 @@ void destroyTileMap(World& world, TileMapId map);
 /// solid where a dynamic body is pushes the body out, as any overlap does.
 void setTile(World& world, TileMapId map, int column, int row, bool solid);
 /// Sets the tile at (column, row) to any character `rows` may hold ('#', '.', a ramp);
-/// jostle::Error for another, and for a ramp in the classic model. Of the ramps, only the
+/// jostle::Error, with nothing changed, for another, and for a ramp where createTileMap
+/// would refuse it: in the classic model, in a one-way map, and a half of a 2:1 ramp in a
+/// map whose tiles are too small for it (checkTileMapDef). Of the ramps, only the
 /// bodies of the tile and of a 2:1 half beside it that pairs or unpairs with it are
 /// destroyed and created again: a few bodies, whatever the map's size.
 void setTile(World& world, TileMapId map, int column, int row, char tile);

@@ -502,7 +502,9 @@ public:
     void setMaxVelocity(float maxVelocity);
     Solver solver() const;
     /// Throws jostle::Error for the classic model while the world has bodies that are not
-    /// sharp boxes (the tutorial's model has boxes only; createBody refuses them there).
+    /// sharp boxes, or a tile map has ramp tiles (even one whose ramp bodies the game
+    /// destroyed): the tutorial's model has boxes only, and createBody refuses the others
+    /// there.
     void setSolver(Solver solver);
     bool sleeping() const;
     /// Turning sleeping off wakes every body.

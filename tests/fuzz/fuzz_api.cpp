@@ -181,24 +181,6 @@ bool hasRamp(const std::vector<std::string>& rows) {
     return false;
 }
 
-/// OPEN QUESTION small-ramp-tiles: a 2:1 ramp's half tile is a body half a tile high, a
-/// quarter tile in half height, which createBody refuses below 1e-9 (math.hpp) once the
-/// map's boxes are made, while checkTileMapDef holds only whole tiles to it: the map is left
-/// half made and createTileMap throws. Should checkTileMapDef hold ramps to it too? Until
-/// decided, no ramp is put in a map whose tiles are that small for their place.
-bool rampsTooSmall(const TileMapDef& d) {
-    return d.tile < 8e-9f || d.tile < 1e-6f * std::max(std::abs(d.x), std::abs(d.y));
-}
-
-/// OPEN QUESTION weak-gravity: the direction of a gravity so weak that its length squared
-/// is no normal float (below about 1e-19: 1e-30, a denormal) is worked out as 0/0, so a
-/// character's walk makes its velocity and position NaN at the first step, in both
-/// models. Should such a gravity count as none, or be refused? Until decided, the
-/// operations of characters come with no such gravity.
-bool weakGravity(Vec2 g) {
-    return g != Vec2{} && !(length(g) >= 1e-18f);
-}
-
 /// Where a ramp's outline leaves `point`: < 0 on the solid side of its slope, > 0 on the
 /// cut-away side, in units of its half extents (its box's far corners are at -2 and 2).
 double slopeSide(Vec2 centre, Vec2 half, Vec2 slope, double x, double y) {
@@ -584,9 +566,6 @@ private:
     void makeWorld() {
         WorldDef d;
         d.gravity = {in_.flag() ? 0.0f : in_.number(-100, 100), in_.number(-1000, 1000)};
-        // OPEN QUESTION weak-gravity (above).
-        if (characters_ && weakGravity(d.gravity) && !check::checkOpen("weak-gravity"))
-            d.gravity = {};
         if (in_.byte() > 200)
             d.maxVelocity = in_.number(1, 2000);
         d.solver = in_.byte() % 4 == 0 ? Solver::Classic : Solver::Physical;
@@ -1368,16 +1347,6 @@ private:
             TileMapDef d = makeTileMapDef();
             if (maps_.size() >= kMaxMaps || live_.size() >= kMaxBodies)
                 return;
-            // OPEN QUESTION one-way-ramp-tiles: a one-way map's ramps are made one-way too,
-            // which createBody refuses for a ramp, after the map's boxes are made: the map
-            // is left half made and createTileMap throws. Should its ramps block from every
-            // side, or checkTileMapDef refuse the map? Until decided, such a map is made
-            // solid on every side.
-            if (d.oneWay != Vec2{} && hasRamp(d.rows) && !check::checkOpen("one-way-ramp-tiles"))
-                d.oneWay = {};
-            // OPEN QUESTION small-ramp-tiles (rampsTooSmall).
-            if (hasRamp(d.rows) && rampsTooSmall(d) && !check::checkOpen("small-ramp-tiles"))
-                return;
             const bool documented = inRange(d.x) && inRange(d.y) && inRange(d.tile) &&
                                     d.tile / 2 >= kMinMagnitude && inRange(d.friction) &&
                                     inRange(d.bounce) && !d.rows.empty() && !d.rows[0].empty() &&
@@ -1492,17 +1461,16 @@ private:
             const int rows = m ? static_cast<int>(m->rows.size()) : 4;
             const int column = in_.integer(-1, columns), row = in_.integer(-1, rows);
             const char tile = pickTile();
-            // OPEN QUESTIONS one-way-ramp-tiles (createTileMap above) and small-ramp-tiles
-            // (rampsTooSmall): no ramp put in a one-way map, nor in one of tiny tiles.
-            if (m && isRampChar(tile)) {
-                const TileMapDef map = tileMapDef(world_, id);
-                if ((map.oneWay != Vec2{} && !check::checkOpen("one-way-ramp-tiles")) ||
-                    (rampsTooSmall(map) && !check::checkOpen("small-ramp-tiles")))
-                    return;
+            const bool inside = m && column >= 0 && column < columns && row >= 0 && row < rows;
+            // A ramp where createTileMap would refuse it is refused: in the classic model, in
+            // a one-way map, a 2:1 half in a map of tiles too small for it.
+            bool rampRefused = false;
+            if (inside && isRampChar(tile)) {
+                TileMapDef placed = tileMapDef(world_, id);
+                placed.rows[static_cast<std::size_t>(row)][static_cast<std::size_t>(column)] = tile;
+                rampRefused = world_.solver() == Solver::Classic || checkTileMapDef(placed);
             }
-            const bool ok = m && column >= 0 && column < columns && row >= 0 && row < rows &&
-                            isTileChar(tile) &&
-                            !(isRampChar(tile) && world_.solver() == Solver::Classic);
+            const bool ok = inside && isTileChar(tile) && !rampRefused;
             if (verbosity() >= 1)
                 std::fprintf(stderr, "setTile: (%d, %d) to byte 0x%02X\n", column, row,
                              static_cast<unsigned>(static_cast<unsigned char>(tile)));
@@ -1622,9 +1590,6 @@ private:
         switch (in_.byte() % 6) {
         case 0: {
             const Vec2 g = in_.vec(-1000, 1000);
-            // OPEN QUESTION weak-gravity (above).
-            if (characters_ && weakGravity(g) && !check::checkOpen("weak-gravity"))
-                break;
             if (expect(inRange(g), "setGravity", [&] { world_.setGravity(g); }) &&
                 !same(world_.gravity(), g))
                 finding("setGravity did not take");
@@ -1637,20 +1602,12 @@ private:
         }
         case 2: {
             const auto s = static_cast<Solver>(in_.byte() % 3);
-            // OPEN QUESTION classic-with-ramp-tiles: a map whose ramp bodies the program
-            // destroyed keeps its ramp tiles, and setSolver takes the classic model, where
-            // the next setTile in a row with a ramp (even '.') throws from rebuilding the
-            // row's ramps, with the tile already changed. Should setSolver refuse while a
-            // map has ramp tiles, or setTile leave the ramps it cannot make? Until decided,
-            // the world keeps its model while a map has ramp tiles but no ramp bodies.
-            if (s == Solver::Classic && !check::checkOpen("classic-with-ramp-tiles") &&
-                !anyShaped() && std::any_of(maps_.begin(), maps_.end(), [](const Map& m) {
-                    return hasRamp(m.rows);
-                }))
-                break;
-            // The classic model has sharp boxes only: not while the world has a shape.
-            expect(s == Solver::Physical || (s == Solver::Classic && !anyShaped()), "setSolver",
-                   [&] { world_.setSolver(s); });
+            // The classic model has sharp boxes only: not while the world has a shape, nor
+            // while a map has ramp tiles (even with its ramp bodies destroyed).
+            const bool rampTiles = std::any_of(maps_.begin(), maps_.end(),
+                                               [](const Map& m) { return hasRamp(m.rows); });
+            expect(s == Solver::Physical || (s == Solver::Classic && !anyShaped() && !rampTiles),
+                   "setSolver", [&] { world_.setSolver(s); });
             break;
         }
         case 3: {

@@ -6,7 +6,6 @@
 // world keeps every invariant of tests/fuzz/invariants.hpp. Anything else (another
 // exception, a crash, a sanitizer report, a NaN) is a finding: the fuzzer aborts.
 #include "invariants.hpp"
-#include "open_questions.hpp"
 
 #include "jostle/scene.hpp"
 
@@ -89,35 +88,6 @@ void checkScene(const Scene& scene) {
                     problem->problem);
 }
 
-/// True if the scene holds what an open question of tests/fuzz/open/README.md is about:
-/// until it is decided, such a scene is left out.
-bool openQuestion(const Scene& scene) {
-    const auto hasRamp = [](const TileMapDef& map) {
-        for (const std::string& row : map.rows)
-            if (row.find_first_not_of("#.") != std::string::npos)
-                return true;
-        return false;
-    };
-    for (const TileMapDef& map : scene.tileMaps) {
-        // OPEN QUESTION one-way-ramp-tiles: a one-way map's ramps are made one-way, which
-        // createBody refuses, once the map's boxes are made.
-        if (hasRamp(map) && map.oneWay != Vec2{} && !check::checkOpen("one-way-ramp-tiles"))
-            return true;
-        // OPEN QUESTION small-ramp-tiles: a 2:1 ramp's half tile is below the smallest
-        // size where a whole tile is not.
-        if (hasRamp(map) && !check::checkOpen("small-ramp-tiles") &&
-            (map.tile < 8e-9f || map.tile < 1e-6f * std::max(std::abs(map.x), std::abs(map.y))))
-            return true;
-    }
-    // OPEN QUESTION weak-gravity: a character's walk goes NaN in a gravity whose length
-    // squared is no normal float.
-    const Vec2 g = scene.world.gravity;
-    const bool weak = g != Vec2{} && !(length(g) >= 1e-18f);
-    return weak && !check::checkOpen("weak-gravity") &&
-           std::any_of(scene.bodies.begin(), scene.bodies.end(),
-                       [](const SceneBody& body) { return body.def.character; });
-}
-
 /// Builds the world as `jostle run` does (maps first) and steps it a little.
 void runScene(const Scene& scene) {
     try {
@@ -159,8 +129,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     }
     // Any other exception escapes, and libFuzzer reports it as a crash.
     checkScene(scene);
-    if (openQuestion(scene))
-        return 0;
     runScene(scene);
     return 0;
 }

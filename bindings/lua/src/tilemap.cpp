@@ -96,8 +96,11 @@ int worldNewTileMap(lua_State* L) {
         // createTileMap's checks, in its order, a problem of the rows told in Lua's
         // counting (rows[1] is the first row, rows[1]:sub(1, 1) its first tile).
         std::optional<FieldError> problem = checkTileMapDef(def);
-        if (problem && problem->field.starts_with("rows"))
+        if (problem && problem->field.starts_with("rows")) {
             problem = rowsProblem(def.rows, Notation::Lua);
+            if (!problem)
+                problem = oneWayRampProblem(def.rows, def.oneWay, Notation::Lua);
+        }
         if (!problem && handle.data->world.solver() == Solver::Classic)
             problem = rampProblem(def.rows, Notation::Lua);
         if (problem) {

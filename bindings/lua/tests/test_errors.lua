@@ -240,6 +240,17 @@ test("the classic model takes no ramp tiles", function()
   t.equal(map:tileOf(1, 0), ".", "left as it was")
 end)
 
+test("a one-way map takes no ramp tiles", function()
+  local world = jostle.newWorld()
+  t.raises({"World:newTileMap",
+    "rows[1][2]: a one-way map has boxes only: no ramps (a ramp blocks from every side) (tile column 1, row 0)"},
+    world.newTileMap, world, {tile = 16, rows = {"#/"}, oneWay = {0, -1}})
+  t.equal(world:getBodyCount(), 0, "nothing made")
+  local map = world:newTileMap({tile = 16, rows = {"#."}, oneWay = {0, -1}})
+  t.raises({"TileMap:setTile", "a one-way map has boxes only"}, map.setTile, map, 1, 0, "/")
+  t.equal(map:tileOf(1, 0), ".", "left as it was")
+end)
+
 test("fixed step arguments", function()
   t.raises({"jostle.newFixedStep", "dt: must be a number of seconds from 1e-6 to 3600"},
     jostle.newFixedStep, 0)
