@@ -9,6 +9,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
+#include <numbers>
 #include <stdexcept>
 #include <vector>
 
@@ -255,6 +257,51 @@ TEST(PreSolve, TheClassicPreSolveSeesNoBodyBeyondTheEdge) {
         world.step(1.0f / 60.0f);
         EXPECT_GE(calls, 1) << "ccd " << ccd;
     }
+}
+
+// Found by fuzz_api (tests/fuzz/corpus/api/firm-footing-in-pre-solve-1): a character stands
+// firm on a floor as steep as its floorAngle whatever the friction (it walks there as on
+// level ground). The pre-solve callback was given that footing as the pair's friction
+// (1000, outside the documented [0, 1]) and clamped it to 1 on return even when it changed
+// nothing, so a callback that only returned true made the character slide down a 55-degree
+// floor (tan 55 > 1). The callback now sees the pair's mixed friction, and the footing
+// stays firm unless it changes the friction.
+TEST(PreSolve, ACallbackThatChangesNothingLeavesACharacterFirmOnASteepFloor) {
+    const float theta = 55.0f * std::numbers::pi_v<float> / 180.0f;
+    const Vec2 normal{-std::sin(theta), -std::cos(theta)}; // the floor's, y down
+    auto slid = [&](bool callback, float setFriction) {
+        World world(WorldDef{.gravity = {0, 800}});
+        world.createBody({.type = BodyType::Static,
+                          .hw = 100,
+                          .hh = 100 * std::tan(theta),
+                          .friction = 0.5f,
+                          .slope = {-1, -1}});
+        // On the slope's line y = -x tan(theta), 40 up it, its low corner touching.
+        const Vec2 onLine = Vec2{std::cos(theta), -std::sin(theta)} * 40.0f;
+        const float reach = std::abs(normal.x) * 4 + std::abs(normal.y) * 8;
+        const Vec2 centre = onLine + normal * reach;
+        const BodyId player = world.createBody(
+            {.x = centre.x, .y = centre.y, .hw = 4, .hh = 8, .friction = 0.5f, .character = true});
+        float seen = -1.0f;
+        if (callback)
+            world.setPreSolve([&](Collision& c) {
+                seen = c.friction;
+                if (!std::isnan(setFriction))
+                    c.friction = setFriction;
+                return true;
+            });
+        for (int step = 0; step < 120; ++step)
+            world.step(kDt);
+        if (callback) {
+            EXPECT_EQ(seen, 0.5f); // the pair's friction as the world mixes it
+        }
+        return length(world.position(player) - centre);
+    };
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    EXPECT_LT(slid(false, nan), 0.1f);
+    EXPECT_LT(slid(true, nan), 0.1f);
+    EXPECT_LT(slid(true, 0.5f), 0.1f);  // set to what it was: no change
+    EXPECT_GT(slid(true, 0.0f), 10.0f); // on ice it slides
 }
 
 } // namespace

@@ -139,7 +139,10 @@ struct Collision {
     /// gap); 0 where the classic ccd option's sweep stopped a body against another.
     float depth;
     float bounce;   ///< max of the pair's bounce
-    float friction; ///< the pair's friction as the world mixes it (min, or geometric mean)
+    /// The pair's friction as the world mixes it (min, or geometric mean), in [0, 1]. A
+    /// value set here is clamped to [0, 1]; left as given, a character keeps its firm
+    /// footing on a slope it stands on (it walks there as on level ground).
+    float friction;
 };
 
 /// Two bodies that started or stopped touching.

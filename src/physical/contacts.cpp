@@ -214,8 +214,13 @@ void buildWithCallback(StepContext& step) {
             addSensorPair(step, pair);
         if (outcome.kind != PairOutcome::kContact)
             continue;
+        // The callback sees the pair's friction as the world mixes it, also where a
+        // character stands firm on a slope: that footing stays unless it changes it.
+        const float mixed = c.walksAlongSlope ? frictionOfPair(step, w.slots[pair.a],
+                                                               w.slots[pair.b], outcome.normal)
+                                              : c.friction;
         Collision info{w.idOf(pair.a), w.idOf(pair.b), outcome.normal,
-                       -outcome.gap,   outcome.bounce, c.friction};
+                       -outcome.gap,   outcome.bounce, mixed};
         const bool keep = w.preSolve(info);
         if (!keep)
             vetoed.push_back(pairKey(pair.a, pair.b));
@@ -223,7 +228,7 @@ void buildWithCallback(StepContext& step) {
             continue;
         if (!std::isnan(info.bounce))
             outcome.bounce = std::clamp(info.bounce, 0.0f, 1.0f);
-        if (!std::isnan(info.friction))
+        if (!std::isnan(info.friction) && info.friction != mixed)
             c.friction = std::clamp(info.friction, 0.0f, 1.0f);
         // The callback may have created bodies: finishContact reads them afresh.
         c.ia = step.solverBodyOf(pair.a);

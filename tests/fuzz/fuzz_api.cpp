@@ -1664,18 +1664,8 @@ private:
                     (world_.isValid(c.b) ? "" : " (gone)") + " in the " +
                     toString(world_.solver()) + " model, callback mode " +
                     std::to_string(callbackMode_) + ", call " + std::to_string(callbackCalls_));
-        // OPEN QUESTION firm-footing-in-pre-solve: the contact of a character with a sloped
-        // floor carries the friction 1000 ("enough for any walk", contacts.cpp), which the
-        // callback is given as the pair's friction, and which it clamps to 1 when it returns,
-        // even if it changed nothing: a character standing on a steep floor slides down it
-        // once any pre-solve callback is installed. Should the callback see the mixed
-        // friction, and the footing stay firm unless it changes it? Until decided, the
-        // friction of a character's pair with a shape is not held to [0, 1].
-        const bool footing = (world_.isCharacter(c.a) || world_.isCharacter(c.b)) &&
-                             (isShaped(c.a) || isShaped(c.b)) &&
-                             !check::checkOpen("firm-footing-in-pre-solve");
         if (!goodNormal(c.normal, c.a, c.b) || !std::isfinite(c.depth) ||
-            !(c.bounce >= 0 && c.bounce <= 1) || !(footing || (c.friction >= 0 && c.friction <= 1)))
+            !(c.bounce >= 0 && c.bounce <= 1) || !(c.friction >= 0 && c.friction <= 1))
             finding("pre-solve given a bad Collision: normal " + check::describe(c.normal) +
                     (isShaped(c.a) || isShaped(c.b) ? " (a shape)" : "") + ", depth " +
                     std::to_string(c.depth) + ", bounce " + std::to_string(c.bounce) +
