@@ -147,6 +147,9 @@ MoveOutcome move(World& world, BodyId id, Vec2 delta, const MoveFilter& filter) 
     if (!inRange(self.position + delta))
         fail("move", "position + delta must be of magnitude <= 1e9 (math.hpp)");
     MoveOutcome out = walk(w, id, delta, filter);
+    // A bounce may turn it back past the edge of the range jostle works in: it stops there.
+    for (float* at : {&out.centre.x, &out.centre.y})
+        *at = std::clamp(*at, -kMaxMagnitude, kMaxMagnitude);
     world.setPosition(id, out.centre);
     return out;
 }

@@ -93,6 +93,22 @@ TEST_F(MoveTest, BounceTurnsTheRestOfTheMoveBack) {
     EXPECT_EQ(out.collisions[0].touch, (Vec2{0.5f, 1.5f}));
 }
 
+// Found by fuzz_api (tests/fuzz/corpus/api/move-bounces-past-the-edge-1): a move that
+// keeps the body within the range of math.hpp bounced it back past the edge of that range,
+// and move threw setPosition's error. It stops at the edge, as a step stops a body there.
+// Near 1e9 floats are 64 apart: every number here is a multiple of 64.
+TEST_F(MoveTest, ABounceBackPastTheEdgeOfTheWorldStopsThere) {
+    const BodyId box =
+        world.createBody({.type = BodyType::Kinematic, .x = 999999872.0f, .hw = 1024, .hh = 1024});
+    // A wall whose right face is 64 left of the box's left face.
+    world.createBody({.type = BodyType::Static, .x = 999997760.0f, .hw = 1024, .hh = 1024});
+    // 64 to the wall, then the 236 left of 300 back to the right: 1,000,000,044, past 1e9.
+    const MoveOutcome out = move(world, box, {-300, 0}, always(Response::Bounce));
+    EXPECT_EQ(out.centre, (Vec2{1e9f, 0.0f}));
+    EXPECT_EQ(world.position(box), (Vec2{1e9f, 0.0f}));
+    ASSERT_EQ(out.collisions.size(), 1u);
+}
+
 TEST_F(MoveTest, AFloorAndAWallMetTogetherAreBothReported) {
     // A 10 × 10 item moving by (20, 20) meets a floor (top 20) and a wall (left 20) after
     // half of it: both stop it there, reported in creation order.

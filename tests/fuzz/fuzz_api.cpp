@@ -871,17 +871,6 @@ private:
             const Vec2 d = in_.vec(-300, 300);
             const bool ok = live && inRange(d) && inRange(world_.position(id) + d);
             const std::uint8_t responses = in_.byte();
-            // OPEN QUESTION move-bounces-past-the-edge: a move from the world's corner into
-            // bodies it bounces off sends the body past the edge of the world (math.hpp),
-            // and move throws setPosition's error for a delta that keeps it inside. Should
-            // the bounce stop at the edge? Until decided, no move comes within its length of
-            // the edge.
-            if (live && !check::checkOpen("move-bounces-past-the-edge")) {
-                const float reach = std::abs(d.x) + std::abs(d.y);
-                const Vec2 p = world_.position(id);
-                if (!(inRange(p + Vec2{reach, reach}) && inRange(p - Vec2{reach, reach})))
-                    break;
-            }
             if (verbosity() >= 1 && live)
                 std::fprintf(stderr, "move: from %s by %s, responses %d\n",
                              check::describe(world_.position(id)).c_str(),
