@@ -176,11 +176,14 @@ void setTile(World& world, TileMapId id, int column, int row, char tile) {
         fail("setTile", "expected '#', '.' or a ramp, got " + describeChar(tile));
     // A tile createTileMap would refuse in its place is refused before anything changes.
     if (const RampTile* ramp = rampTile(tile)) {
-        if (world.solver() == Solver::Classic)
-            fail("setTile", kNoRampsInClassic);
         if (map.settings.oneWay != Vec2{})
             fail("setTile", kNoRampsOneWay);
-        if (ramp->height != 0 && !halfTilesFit(map.settings, static_cast<std::size_t>(map.rows)))
+        if (world.solver() == Solver::Classic)
+            fail("setTile", kNoRampsInClassic);
+        if (ramp->height != 0 && map.halfTilesFitKnown < 0)
+            map.halfTilesFitKnown =
+                halfTilesFit(map.settings, static_cast<std::size_t>(map.rows)) ? 1 : 0;
+        if (ramp->height != 0 && map.halfTilesFitKnown == 0)
             fail("setTile", "the map's tile is too small for its position: the halves of a 2:1 "
                             "ramp would be narrower than 2e-9 (math.hpp)");
     }

@@ -153,6 +153,9 @@ struct TileMapData {
     /// each tile it scans or labels and each piece it makes or unmakes (bodies.moved()
     /// adds the list's entries moved). Never read by the library.
     mutable std::uint64_t work = 0;
+    /// Whether the halves of 2:1 ramps fit its rows (halfTilesFit), worked out at the first
+    /// setTile that asks: -1 until then. Its settings never change.
+    mutable std::int8_t halfTilesFitKnown = -1;
 
     bool alive = false;
     /// Counts the slot's reuses, as Body::generation does.

@@ -44,8 +44,6 @@ std::optional<FieldError> checkTileMapDef(const TileMapDef& def) {
 
     if (auto problem = rowsProblem(def.rows, Notation::Cpp))
         return problem;
-    if (auto problem = oneWayRampProblem(def.rows, def.oneWay, Notation::Cpp))
-        return problem;
     const std::size_t columns = def.rows[0].size();
 
     // The far corner must be in the range jostle works in (math.hpp), like every body.
@@ -65,8 +63,10 @@ std::optional<FieldError> checkTileMapDef(const TileMapDef& def) {
         return FieldError{"tile", "is too small for the map's position: the halves of its 2:1 "
                                   "ramps would be narrower than 2e-9 (math.hpp)"};
 
-    // The rules the map shares with bodies (friction, bounce, oneWay).
-    return properties::ruleProblem(def, properties::kTileMapFields);
+    // The rules the map shares with bodies (friction, bounce, oneWay), then ramps.
+    if (auto problem = properties::ruleProblem(def, properties::kTileMapFields))
+        return problem;
+    return oneWayRampProblem(def.rows, def.oneWay, Notation::Cpp);
 }
 
 } // namespace jostle

@@ -265,7 +265,7 @@ TEST(PreSolve, TheClassicPreSolveSeesNoBodyBeyondTheEdge) {
 // (1000, outside the documented [0, 1]) and clamped it to 1 on return even when it changed
 // nothing, so a callback that only returned true made the character slide down a 55-degree
 // floor (tan 55 > 1). The callback now sees the pair's mixed friction, and the footing
-// stays firm unless it changes the friction.
+// stays firm unless it lowers the friction.
 TEST(PreSolve, ACallbackThatChangesNothingLeavesACharacterFirmOnASteepFloor) {
     const float theta = 55.0f * std::numbers::pi_v<float> / 180.0f;
     const Vec2 normal{-std::sin(theta), -std::cos(theta)}; // the floor's, y down
@@ -301,6 +301,7 @@ TEST(PreSolve, ACallbackThatChangesNothingLeavesACharacterFirmOnASteepFloor) {
     EXPECT_LT(slid(false, nan), 0.1f);
     EXPECT_LT(slid(true, nan), 0.1f);
     EXPECT_LT(slid(true, 0.5f), 0.1f);  // set to what it was: no change
+    EXPECT_LT(slid(true, 0.9f), 0.1f);  // more grip: still firm
     EXPECT_GT(slid(true, 0.0f), 10.0f); // on ice it slides
 }
 

@@ -661,8 +661,8 @@ typedef struct jostle_collision {
     /// the step (-depth is the gap), 0 where the classic ccd sweep stopped a body.
     float depth;
     float bounce;   ///< the pair's bounce; the callback may change it (clamped to [0, 1])
-    /// The pair's friction; the callback may change it (clamped to [0, 1]). Left as given,
-    /// a character keeps its firm footing on a slope it stands on.
+    /// The pair's friction; the callback may change it (clamped to [0, 1]). Unless it is
+    /// lowered, a character keeps its firm footing on a slope it stands on.
     float friction;
 } jostle_collision;
 

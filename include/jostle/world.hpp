@@ -140,7 +140,7 @@ struct Collision {
     float depth;
     float bounce;   ///< max of the pair's bounce
     /// The pair's friction as the world mixes it (min, or geometric mean), in [0, 1]. A
-    /// value set here is clamped to [0, 1]; left as given, a character keeps its firm
+    /// value set here is clamped to [0, 1]; unless lowered, a character keeps its firm
     /// footing on a slope it stands on (it walks there as on level ground).
     float friction;
 };

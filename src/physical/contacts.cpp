@@ -215,7 +215,7 @@ void buildWithCallback(StepContext& step) {
         if (outcome.kind != PairOutcome::kContact)
             continue;
         // The callback sees the pair's friction as the world mixes it, also where a
-        // character stands firm on a slope: that footing stays unless it changes it.
+        // character stands firm on a slope: that footing stays unless it lowers it.
         const float mixed = c.walksAlongSlope ? frictionOfPair(step, w.slots[pair.a],
                                                                w.slots[pair.b], outcome.normal)
                                               : c.friction;
@@ -228,7 +228,8 @@ void buildWithCallback(StepContext& step) {
             continue;
         if (!std::isnan(info.bounce))
             outcome.bounce = std::clamp(info.bounce, 0.0f, 1.0f);
-        if (!std::isnan(info.friction) && info.friction != mixed)
+        if (!std::isnan(info.friction) && info.friction != mixed &&
+            !(c.walksAlongSlope && info.friction > mixed))
             c.friction = std::clamp(info.friction, 0.0f, 1.0f);
         // The callback may have created bodies: finishContact reads them afresh.
         c.ia = step.solverBodyOf(pair.a);

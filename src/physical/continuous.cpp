@@ -145,14 +145,14 @@ namespace {
 /// Sweeps the body along `motion`; at the first hit, moves it there and takes away its
 /// velocity into the obstacle, then sweeps again along what is left of its velocity
 /// (sliding along a floor into a wall, say). The step's own integration then moves it by
-/// that velocity from there, a path just swept clear.
-void sweep(StepContext& step, std::uint32_t slot, Vec2 motion) {
+/// that velocity from there, a path just swept clear. True if it hit something.
+bool sweep(StepContext& step, std::uint32_t slot, Vec2 motion) {
     step.scratch.continuous.sweepStart = step.scratch.continuous.found.size();
     Body& body = step.world.slots[slot];
     for (int hits = 0; hits < kMaxHits; ++hits) {
         const std::optional<FirstHit> first = firstHit(step, slot, motion);
         if (!first)
-            return;
+            return hits > 0;
         const Hit& hit = first->hit;
         const std::uint32_t hitSlot = first->slot;
         // Where it touches the obstacle as the obstacle is now: the integration that
@@ -175,14 +175,15 @@ void sweep(StepContext& step, std::uint32_t slot, Vec2 motion) {
     }
     if (firstHit(step, slot, motion))
         body.velocity = {};
+    return true;
 }
 
-/// When in the step a collision from a gap last changed the body in `slot` (0: never).
+/// When in the step the impacts last changed the path of the body in `slot` (0: never).
 float changedAt(const StepContext& step, std::uint32_t slot) {
     const std::vector<std::uint32_t>& index = step.scratch.solverIndex;
-    const std::vector<float>& at = step.scratch.impacts.changedAt;
+    const std::vector<Vec2>& at = step.scratch.impacts.changedAt;
     const std::uint32_t solver = slot < index.size() ? index[slot] : StepContext::kNoSolverBody;
-    return solver < at.size() ? at[solver] : 0.0f;
+    return solver < at.size() ? std::max(at[solver].x, at[solver].y) : 0.0f;
 }
 
 } // namespace
@@ -228,9 +229,7 @@ void sweepFastBodies(StepContext& step) {
         Body& body = w.slots[slot];
         const Vec2 before = body.position;
         body.position += body.velocity * since;
-        const Vec2 start = body.position;
-        sweep(step, slot, body.velocity * (step.dt - since));
-        if (body.position == start)
+        if (!sweep(step, slot, body.velocity * (step.dt - since)))
             body.position = before;
     });
     // What the sweeps met joins the step's contacts, for position correction and events.

@@ -18,6 +18,9 @@ namespace {
 /// sweep whichever way the contacts are ordered.
 constexpr int kMaxSweeps = 8;
 
+/// A body met this many times in one step is in a rattle (collide): as many as the sweeps.
+constexpr int kRattleMeetings = kMaxSweeps;
+
 /// Meeting slower than this fraction of the contact's slop per second is not meeting:
 /// float noise in the velocities of a resting pile.
 constexpr float kStillPerSlop = 5.0f;
@@ -67,21 +70,26 @@ bool collide(StepContext& step, std::uint32_t k, float threshold, bool& shifted)
     // A pair still apart meets if it closes its gap within the step.
     if (gap > 0.0f && -vn * step.dt <= gap)
         return false;
-    // A body that has met kMaxSweeps times in the step is in a rattle (a light body between
+    // A body that has met kRattleMeetings times in the step is in a rattle (a light body between
     // a heavy one and a held one is met some pi sqrt(M / m) times before they part, more
     // than the sweeps follow): its meetings from then on do not bounce (inelastic collapse).
     bool rattling = false;
     for (std::uint32_t body : {c.ia, c.ib})
         if (step.bodies[body].invMass > 0.0f) {
             std::uint8_t& meetings = step.scratch.impacts.meetings[body];
-            rattling = rattling || meetings == kMaxSweeps;
-            meetings = static_cast<std::uint8_t>(std::min(meetings + 1, kMaxSweeps));
+            rattling = rattling || meetings == kRattleMeetings;
+            meetings = static_cast<std::uint8_t>(std::min(meetings + 1, kRattleMeetings));
         }
     const float bounce = approach > threshold && !rattling ? c.bounce : 0.0f;
     float impulse;
     float meetAfter = 0.0f;
-    std::vector<float>& changedAt = step.scratch.impacts.changedAt;
-    const float since = std::max(changedAt[c.ia], changedAt[c.ib]);
+    // A pair meets no earlier than its bodies' last change across it (along its axis; both
+    // for a slope): its path before then is not the one their velocities now give.
+    std::vector<Vec2>& changedAt = step.scratch.impacts.changedAt;
+    const auto across = [&](Vec2 at) {
+        return c.axis == kAlongSlope ? std::max(at.x, at.y) : c.axis == kAlongX ? at.x : at.y;
+    };
+    const float since = std::max(across(changedAt[c.ia]), across(changedAt[c.ib]));
     if (gap > 0.0f && bounce <= 0.0f && since <= 0.0f) {
         // Without a bounce: it closes the gap by the end of the step, and meets no faster.
         impulse = step.effectiveMassOf(c) * (-gap / step.dt - vn);
@@ -100,20 +108,29 @@ bool collide(StepContext& step, std::uint32_t k, float threshold, bool& shifted)
     const float slide = dot(step.velocityOf(c.ia) - step.velocityOf(c.ib), t) -
                         c.tangentTargetAt(leaving, step.right());
     const float limit = c.friction * impulse;
-    applyImpulse(step, c, t, std::clamp(-step.effectiveMassOf(c) * slide, -limit, limit));
+    const float rub = std::clamp(-step.effectiveMassOf(c) * slide, -limit, limit);
+    applyImpulse(step, c, t, rub);
+    // What friction changed, which no shift follows: settleBounces takes it back.
+    std::vector<Vec2>& rubbed = step.scratch.impacts.rubbed;
+    rubbed[c.ia] += t * (rub * step.invMassA(c));
+    rubbed[c.ib] -= t * (rub * step.invMassB(c));
     if (meetAfter > 0.0f) {
         // Met after meetAfter, then parted at the speed it left with: where that ends the
-        // step, not a gap's width further off.
-        // Each body by its own velocity change times the moment they met: each one's path
-        // passes through the meeting point.
+        // step, not a gap's width further off. Each body is moved by its own velocity change
+        // times the moment they met, so that each one's path passes through the meeting point.
         const float m = step.effectiveMassOf(c);
         shiftApart(step, c, n, (vn - leaving) * meetAfter, step.invMassA(c) * m,
                    step.invMassB(c) * m);
-        if (step.invMassA(c) > 0.0f)
-            changedAt[c.ia] = meetAfter;
-        if (step.invMassB(c) > 0.0f)
-            changedAt[c.ib] = meetAfter;
-        step.scratch.impacts.bounced.push_back({k, meetAfter, leaving});
+        for (std::uint32_t body : {c.ia, c.ib})
+            if (step.bodies[body].invMass > 0.0f) {
+                Vec2& at = changedAt[body];
+                if (c.axis != kAlongY)
+                    at.x = meetAfter;
+                if (c.axis != kAlongX)
+                    at.y = meetAfter;
+            }
+        step.scratch.impacts.bounced.push_back(
+            {k, meetAfter, leaving, rubbed[c.ia] - rubbed[c.ib]});
         shifted = true;
     }
     return true;
@@ -133,8 +150,9 @@ void resolveImpacts(StepContext& step) {
         }
     });
     s.changedInSweep.assign(bodyCount, 0);
-    s.changedAt.assign(bodyCount, 0.0f);
+    s.changedAt.assign(bodyCount, Vec2{});
     s.meetings.assign(bodyCount, 0);
+    s.rubbed.assign(bodyCount, Vec2{});
     const float threshold = step.restitutionThreshold();
     bool shifted = false;
     // Notes the bodies of a contact that collided in `sweep`, once each.
@@ -176,7 +194,8 @@ void resolveImpacts(StepContext& step) {
     // parting after every collision of the step (a later collision's own shift counts it).
     for (ImpactsScratch::Bounced& b : s.bounced) {
         const Contact& c = step.contacts[b.contact];
-        b.leaving = dot(step.velocityOf(c.ia) - step.velocityOf(c.ib), c.normal());
+        const Vec2 rubbedSince = s.rubbed[c.ia] - s.rubbed[c.ib] - b.rubbed;
+        b.leaving = dot(step.velocityOf(c.ia) - step.velocityOf(c.ib) - rubbedSince, c.normal());
     }
     // The gaps the contacts may close are those between the bodies as they are now.
     if (shifted)

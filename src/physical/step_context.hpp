@@ -66,8 +66,8 @@ struct StepContext {
     float invMassB(const Contact& c) const { return bodies[c.ib].invMass; }
     float effectiveMassOf(const Contact& c) const { return 1.0f / (invMassA(c) + invMassB(c)); }
 
-    /// Who gives way when the pair of `c` is moved apart (position correction, an impact
-    /// that met from a gap): the body that holds the other stays put, and the other takes
+    /// Who gives way when the pair of `c` is moved apart (position correction, a bounce
+    /// taken back by settleBounces): the body that holds the other stays put, and the other takes
     /// the whole move; where neither holds, the two share it by inverse mass. a's share,
     /// then b's.
     float shareOfA(const Contact& c) const {

@@ -188,8 +188,8 @@ export interface Collision {
   depth: number;
   /** The pair's bounce: change it for this pair and step. */
   bounce: number;
-  /** The pair's friction: change it for this pair and step. Left as given, a character
-   * keeps its firm footing on a slope it stands on. */
+  /** The pair's friction: change it for this pair and step. Unless it is lowered, a
+   * character keeps its firm footing on a slope it stands on. */
   friction: number;
 }
 
