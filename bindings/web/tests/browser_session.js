@@ -101,12 +101,17 @@ async function canvasShowsBodies(page) {
       checked++;
       if (!near(pixel, colours[type])) wrong.push([x, y, type, pixel]);
     }
-    // Empty points: on a grid over the view, 8 px or more from every body.
+    // A label's text above its body (draw.js: its baseline 5 px over the body's top), as
+    // a box: some 8 px a character wide and 12 px high.
+    const taken = boxes.slice();
+    for (const l of p.labels(0))
+      taken.push([l.x, l.y - l.hh - 11 / scale, (l.text.length * 4 + 2) / scale, 6 / scale]);
+    // Empty points: on a grid over the view, 8 px or more from every body and label.
     const v = p.view(0), margin = 8 / scale;
     let empty = 0, notEmpty = [];
     for (let gx = v.minX; gx <= v.maxX; gx += (v.maxX - v.minX) / 23)
       for (let gy = v.minY; gy <= v.maxY; gy += (v.maxY - v.minY) / 17) {
-        if (boxes.some(([x, y, hw, hh]) => Math.abs(gx - x) < hw + margin && Math.abs(gy - y) < hh + margin)) continue;
+        if (taken.some(([x, y, hw, hh]) => Math.abs(gx - x) < hw + margin && Math.abs(gy - y) < hh + margin)) continue;
         const pixel = jostlePage.pixel(...jostlePage.toCanvas(0, gx, gy));
         empty++;
         if (!near(pixel, [24, 26, 33])) notEmpty.push([gx, gy, pixel]);
