@@ -284,9 +284,10 @@ struct MoveOutcome {
 /// where the last one left it. A rounded body (BodyDef::radius) moves as its shape: a
 /// circle rolls round a corner that its box would have caught on; a ramp or a segment
 /// moves as its box. Against a slope or a curve, Slide goes on along it (as moveAndSlide)
-/// and Bounce is reflected off it; a bounce that would carry it past the edge of the range
-/// of math.hpp stops it there. Throws jostle::Error for a stale `id` or a delta that is not
-/// finite, or that carries the body out of the range of math.hpp.
+/// and Bounce is reflected off it; where a bounce or a slide would carry it past the edge
+/// of the range of math.hpp, it stops at the edge (that last stretch is not checked against
+/// bodies). Throws jostle::Error for a stale `id` or a delta that is not finite, or that
+/// carries the body out of the range of math.hpp.
 MoveOutcome move(World& world, BodyId id, Vec2 delta, const MoveFilter& filter = {});
 
 JOSTLE_EXPORT_END
