@@ -181,9 +181,9 @@ bool sweep(StepContext& step, std::uint32_t slot, Vec2 motion) {
 /// When in the step the impacts last changed the path of the body in `slot` (0: never).
 float changedAt(const StepContext& step, std::uint32_t slot) {
     const std::vector<std::uint32_t>& index = step.scratch.solverIndex;
-    const std::vector<Vec2>& at = step.scratch.impacts.changedAt;
+    const std::vector<ImpactsScratch::OfBody>& of = step.scratch.impacts.ofBody;
     const std::uint32_t solver = slot < index.size() ? index[slot] : StepContext::kNoSolverBody;
-    return solver < at.size() ? std::max(at[solver].x, at[solver].y) : 0.0f;
+    return solver < of.size() ? std::max(of[solver].changedAt.x, of[solver].changedAt.y) : 0.0f;
 }
 
 } // namespace

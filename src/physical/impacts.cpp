@@ -70,13 +70,15 @@ bool collide(StepContext& step, std::uint32_t k, float threshold, bool& shifted)
     // A pair still apart meets if it closes its gap within the step.
     if (gap > 0.0f && -vn * step.dt <= gap)
         return false;
-    // A body that has met kRattleMeetings times in the step is in a rattle (a light body between
-    // a heavy one and a held one is met some pi sqrt(M / m) times before they part, more
-    // than the sweeps follow): its meetings from then on do not bounce (inelastic collapse).
+    std::vector<ImpactsScratch::OfBody>& ofBody = step.scratch.impacts.ofBody;
+    // A body that has met kRattleMeetings times in the step is in a rattle (a light body
+    // between a heavy one and a held one is met some pi sqrt(M / m) times before they part,
+    // more than the sweeps follow): its meetings from then on do not bounce (inelastic
+    // collapse).
     bool rattling = false;
     for (std::uint32_t body : {c.ia, c.ib})
         if (step.bodies[body].invMass > 0.0f) {
-            std::uint8_t& meetings = step.scratch.impacts.meetings[body];
+            std::uint8_t& meetings = ofBody[body].meetings;
             rattling = rattling || meetings == kRattleMeetings;
             meetings = static_cast<std::uint8_t>(std::min(meetings + 1, kRattleMeetings));
         }
@@ -85,11 +87,10 @@ bool collide(StepContext& step, std::uint32_t k, float threshold, bool& shifted)
     float meetAfter = 0.0f;
     // A pair meets no earlier than its bodies' last change across it (along its axis; both
     // for a slope): its path before then is not the one their velocities now give.
-    std::vector<Vec2>& changedAt = step.scratch.impacts.changedAt;
     const auto across = [&](Vec2 at) {
         return c.axis == kAlongSlope ? std::max(at.x, at.y) : c.axis == kAlongX ? at.x : at.y;
     };
-    const float since = std::max(across(changedAt[c.ia]), across(changedAt[c.ib]));
+    const float since = std::max(across(ofBody[c.ia].changedAt), across(ofBody[c.ib].changedAt));
     if (gap > 0.0f && bounce <= 0.0f && since <= 0.0f) {
         // Without a bounce: it closes the gap by the end of the step, and meets no faster.
         impulse = step.effectiveMassOf(c) * (-gap / step.dt - vn);
@@ -111,9 +112,8 @@ bool collide(StepContext& step, std::uint32_t k, float threshold, bool& shifted)
     const float rub = std::clamp(-step.effectiveMassOf(c) * slide, -limit, limit);
     applyImpulse(step, c, t, rub);
     // What friction changed, which no shift follows: settleBounces takes it back.
-    std::vector<Vec2>& rubbed = step.scratch.impacts.rubbed;
-    rubbed[c.ia] += t * (rub * step.invMassA(c));
-    rubbed[c.ib] -= t * (rub * step.invMassB(c));
+    ofBody[c.ia].rubbed += t * (rub * step.invMassA(c));
+    ofBody[c.ib].rubbed -= t * (rub * step.invMassB(c));
     if (meetAfter > 0.0f) {
         // Met after meetAfter, then parted at the speed it left with: where that ends the
         // step, not a gap's width further off. Each body is moved by its own velocity change
@@ -123,14 +123,14 @@ bool collide(StepContext& step, std::uint32_t k, float threshold, bool& shifted)
                    step.invMassB(c) * m);
         for (std::uint32_t body : {c.ia, c.ib})
             if (step.bodies[body].invMass > 0.0f) {
-                Vec2& at = changedAt[body];
+                Vec2& at = ofBody[body].changedAt;
                 if (c.axis != kAlongY)
                     at.x = meetAfter;
                 if (c.axis != kAlongX)
                     at.y = meetAfter;
             }
         step.scratch.impacts.bounced.push_back(
-            {k, meetAfter, leaving, rubbed[c.ia] - rubbed[c.ib]});
+            {k, meetAfter, leaving, ofBody[c.ia].rubbed - ofBody[c.ib].rubbed});
         shifted = true;
     }
     return true;
@@ -149,17 +149,14 @@ void resolveImpacts(StepContext& step) {
                 body.isDynamic() ? step.world.def.gravity * (body.gravityScale * step.dt) : Vec2{};
         }
     });
-    s.changedInSweep.assign(bodyCount, 0);
-    s.changedAt.assign(bodyCount, Vec2{});
-    s.meetings.assign(bodyCount, 0);
-    s.rubbed.assign(bodyCount, Vec2{});
+    s.ofBody.assign(bodyCount, ImpactsScratch::OfBody{});
     const float threshold = step.restitutionThreshold();
     bool shifted = false;
     // Notes the bodies of a contact that collided in `sweep`, once each.
     auto noteChanged = [&](const Contact& c, int sweep) {
         for (std::uint32_t body : {c.ia, c.ib})
-            if (s.changedInSweep[body] != sweep) {
-                s.changedInSweep[body] = sweep;
+            if (s.ofBody[body].changedInSweep != sweep) {
+                s.ofBody[body].changedInSweep = sweep;
                 s.next.push_back(body);
             }
     };
@@ -194,7 +191,7 @@ void resolveImpacts(StepContext& step) {
     // parting after every collision of the step (a later collision's own shift counts it).
     for (ImpactsScratch::Bounced& b : s.bounced) {
         const Contact& c = step.contacts[b.contact];
-        const Vec2 rubbedSince = s.rubbed[c.ia] - s.rubbed[c.ib] - b.rubbed;
+        const Vec2 rubbedSince = s.ofBody[c.ia].rubbed - s.ofBody[c.ib].rubbed - b.rubbed;
         b.leaving = dot(step.velocityOf(c.ia) - step.velocityOf(c.ib) - rubbedSince, c.normal());
     }
     // The gaps the contacts may close are those between the bodies as they are now.

@@ -17,17 +17,19 @@ namespace jostle {
 struct StepContext;
 
 struct ImpactsScratch {
-    std::vector<int> changedInSweep;          ///< by solver body: the last sweep that changed it
+    /// What the impacts know of one solver body in this step.
+    struct OfBody {
+        int changedInSweep = 0; ///< the last sweep that changed it
+        /// When in the step (s) a collision met after a gap or at a body's earlier change
+        /// last changed it, along x and along y (both for a slope); 0 if none.
+        Vec2 changedAt{};
+        Vec2 rubbed{};             ///< the velocity friction has given it so far
+        std::uint8_t meetings = 0; ///< how many times it met something, up to kRattleMeetings
+    };
+    std::vector<OfBody> ofBody;               ///< by solver body, made anew each step
     std::vector<std::uint32_t> changed, next; ///< solver bodies changed in a sweep
     std::vector<Vec2> gravityInStep;          ///< by solver body: what gravity adds to its velocity
     std::vector<std::uint64_t> queued;        ///< a bit per contact: to look at in this sweep
-    /// By solver body: when in the step (s) a collision met after a gap or at a body's
-    /// earlier change last changed it, along x and along y (both for a slope); 0 if none.
-    std::vector<Vec2> changedAt;
-    /// By solver body: how many times it met something in the step, up to kRattleMeetings.
-    std::vector<std::uint8_t> meetings;
-    /// By solver body: the velocity friction has given it in the impacts so far.
-    std::vector<Vec2> rubbed;
     /// A pair that met from a gap `meetAfter` into the step (by contact index), and the
     /// speed it parts at after every collision of the step, but for what friction changed
     /// of it after this one (`rubbed`: the pair's friction velocities when it met).
