@@ -72,6 +72,12 @@ inline std::optional<FieldError> rowsProblem(const std::vector<std::string>& row
 inline constexpr const char* kNoRampsOneWay =
     "a one-way map has boxes only: no ramps (a ramp blocks from every side)";
 
+/// Why a map refuses 2:1 ramps: their halves, half a tile high, would be smaller than a body
+/// may be where the map lies (said of its `tile`).
+inline constexpr const char* kHalfTilesTooSmall =
+    "is too small for the map's position: the halves of its 2:1 ramps would be narrower "
+    "than 2e-9 (math.hpp)";
+
 /// The first ramp tile of `rows` as a problem saying `why`; else nothing.
 inline std::optional<FieldError> firstRampProblem(const std::vector<std::string>& rows,
                                                   Notation notation, const char* why) {

@@ -180,12 +180,8 @@ void setTile(World& world, TileMapId id, int column, int row, char tile) {
             fail("setTile", kNoRampsOneWay);
         if (world.solver() == Solver::Classic)
             fail("setTile", kNoRampsInClassic);
-        if (ramp->height != 0 && map.halfTilesFitKnown < 0)
-            map.halfTilesFitKnown =
-                halfTilesFit(map.settings, static_cast<std::size_t>(map.rows)) ? 1 : 0;
-        if (ramp->height != 0 && map.halfTilesFitKnown == 0)
-            fail("setTile", "the map's tile is too small for its position: the halves of a 2:1 "
-                            "ramp would be narrower than 2e-9 (math.hpp)");
+        if (ramp->height != 0 && !map.halfTilesFit())
+            fail("setTile", std::string("the map's tile ") + kHalfTilesTooSmall);
     }
     char& here = map.tiles[map.at(column, row)];
     if (here == tile)

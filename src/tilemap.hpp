@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <mutex>
+#include <optional>
 #include <span>
 #include <unordered_map>
 #include <vector>
@@ -153,9 +154,14 @@ struct TileMapData {
     /// each tile it scans or labels and each piece it makes or unmakes (bodies.moved()
     /// adds the list's entries moved). Never read by the library.
     mutable std::uint64_t work = 0;
-    /// Whether the halves of 2:1 ramps fit its rows (halfTilesFit), worked out at the first
-    /// setTile that asks: -1 until then. Its settings never change.
-    mutable std::int8_t halfTilesFitKnown = -1;
+    /// Whether the halves of 2:1 ramps fit its rows (jostle::halfTilesFit), worked out once,
+    /// when first asked: its settings never change.
+    bool halfTilesFit() const {
+        if (!halfTilesFit_)
+            halfTilesFit_ = jostle::halfTilesFit(settings, static_cast<std::size_t>(rows));
+        return *halfTilesFit_;
+    }
+    mutable std::optional<bool> halfTilesFit_;
 
     bool alive = false;
     /// Counts the slot's reuses, as Body::generation does.

@@ -60,8 +60,7 @@ std::optional<FieldError> checkTileMapDef(const TileMapDef& def) {
         return FieldError{"tile", "is too small for the map's position: its boxes would be "
                                   "narrower than 2e-9 (math.hpp)"};
     if (hasHalfTiles(def.rows) && !halfTilesFit(def, def.rows.size()))
-        return FieldError{"tile", "is too small for the map's position: the halves of its 2:1 "
-                                  "ramps would be narrower than 2e-9 (math.hpp)"};
+        return FieldError{"tile", kHalfTilesTooSmall};
 
     // The rules the map shares with bodies (friction, bounce, oneWay), then ramps.
     if (auto problem = properties::ruleProblem(def, properties::kTileMapFields))
