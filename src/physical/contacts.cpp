@@ -228,8 +228,7 @@ void buildWithCallback(StepContext& step) {
             continue;
         if (!std::isnan(info.bounce))
             outcome.bounce = std::clamp(info.bounce, 0.0f, 1.0f);
-        if (!std::isnan(info.friction) && info.friction != mixed &&
-            !(c.walksAlongSlope && info.friction > mixed))
+        if (!std::isnan(info.friction) && !(c.walksAlongSlope && info.friction >= mixed))
             c.friction = std::clamp(info.friction, 0.0f, 1.0f);
         // The callback may have created bodies: finishContact reads them afresh.
         c.ia = step.solverBodyOf(pair.a);
