@@ -14,6 +14,7 @@
 #include <bit>
 #include <cstring>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace {
@@ -477,21 +478,10 @@ TEST(Snapshots, FuzzTimeout_ASleeperMissingFromItsIslandIsRefused) {
     EXPECT_EQ(refusalOf(again, withChecksum(saved)), "");
 }
 
-TEST(Snapshots, FuzzNaN_ANegativeCachedNormalImpulseIsRefused) {
-    // fuzz_restore: a cached normal impulse of -6e34 was taken, and its warm start flung
-    // a sliver of a box to an infinite speed in the next step (NaN). A normal impulse only
-    // pushes, so a step never keeps a negative one: such bytes are no snapshot.
-    World world(WorldDef{.gravity = {0, 600}});
-    world.createBody({.type = BodyType::Static, .y = 10, .hw = 50, .hh = 10});
-    const BodyId box = world.createBody({.y = -5, .hw = 5, .hh = 5});
-    for (int step = 0; step < 10; ++step)
-        world.step(kDt);
-    const CachedContact* cached = WorldAccess::state(world).contactCache.find(0, box.index);
-    ASSERT_NE(cached, nullptr);
-    ASSERT_GT(cached->normalImpulse, 0.0f); // holds the box up: its weight over a step
-    const Bytes saved = world.snapshot();
-    // The impulse's four bytes, little-endian, after the section 'C'.
-    const std::uint32_t bits = std::bit_cast<std::uint32_t>(cached->normalImpulse);
+/// Where the four bytes of `impulse` (little-endian) lie in `saved`, after section 'C':
+/// the place of a cached contact's impulse in a snapshot of a world with one contact.
+std::size_t placeOfCachedImpulse(const Bytes& saved, float impulse) {
+    const std::uint32_t bits = std::bit_cast<std::uint32_t>(impulse);
     std::size_t at = 32;
     while (at < saved.size() && std::to_integer<char>(saved[at]) != 'C')
         ++at;
@@ -504,7 +494,29 @@ TEST(Snapshots, FuzzNaN_ANegativeCachedNormalImpulseIsRefused) {
     };
     while (at + 4 <= saved.size() && !holdsBits(at))
         ++at;
-    ASSERT_LE(at + 4, saved.size()) << "the cached impulse not found";
+    return at + 4 <= saved.size() ? at : saved.size();
+}
+
+/// A box of `hw` × 5 resting on a floor, and the impulse its contact with the floor cached.
+std::pair<World, float> boxRestingOnAFloor(float hw) {
+    World world(WorldDef{.gravity = {0, 600}});
+    world.createBody({.type = BodyType::Static, .y = 10, .hw = 50, .hh = 10});
+    const BodyId box = world.createBody({.y = -5, .hw = hw, .hh = 5});
+    for (int step = 0; step < 10; ++step)
+        world.step(kDt);
+    const CachedContact* cached = WorldAccess::state(world).contactCache.find(0, box.index);
+    return {std::move(world), cached != nullptr ? cached->normalImpulse : 0.0f};
+}
+
+TEST(Snapshots, FuzzNaN_ANegativeCachedNormalImpulseIsRefused) {
+    // fuzz_restore: a cached normal impulse of -6e34 was taken, and its warm start flung
+    // a sliver of a box to an infinite speed in the next step (NaN). A normal impulse only
+    // pushes, so a step never keeps a negative one: such bytes are no snapshot.
+    auto [world, impulse] = boxRestingOnAFloor(5);
+    ASSERT_GT(impulse, 0.0f); // holds the box up: its weight over a step
+    const Bytes saved = world.snapshot();
+    const std::size_t at = placeOfCachedImpulse(saved, impulse);
+    ASSERT_LT(at, saved.size()) << "the cached impulse not found";
     Bytes negative = saved;
     negative[at + 3] |= std::byte{0x80}; // the sign bit
     World target = smallWorld();
@@ -513,6 +525,34 @@ TEST(Snapshots, FuzzNaN_ANegativeCachedNormalImpulseIsRefused) {
               "restore: the snapshot is corrupted: a cached contact's impulses");
     EXPECT_EQ(target.snapshot(), before);
     EXPECT_EQ(refusalOf(target, withChecksum(saved)), "");
+}
+
+TEST(Snapshots, FuzzNaN_AHugeCachedImpulseOnASliverStepsToFiniteNumbers) {
+    // fuzz_restore (huge-cached-impulse): a cached normal impulse of 6e34 under a sliver of
+    // a box (1e-5 wide, 10 high: its inverse mass 1e4) flung it to an infinite speed in the
+    // next step's warm start, then NaN. A warm start takes of a cached impulse at most what
+    // changes a velocity by 1e18 (kMaxMagnitude squared): 1e14 here.
+    auto [world, impulse] = boxRestingOnAFloor(5e-6f);
+    ASSERT_GT(impulse, 0.0f);
+    const Bytes saved = world.snapshot();
+    const std::size_t at = placeOfCachedImpulse(saved, impulse);
+    ASSERT_LT(at, saved.size()) << "the cached impulse not found";
+    Bytes huge = saved;
+    const auto bits = std::bit_cast<std::uint32_t>(6e34f);
+    for (std::size_t i = 0; i < 4; ++i)
+        huge[at + i] = static_cast<std::byte>(bits >> (8 * i));
+    World target;
+    ASSERT_EQ(refusalOf(target, withChecksum(huge)), "");
+    const BodyId box = target.bodies()[1];
+    for (int step = 0; step < 10; ++step) {
+        target.step(kDt);
+        const Body& body = WorldAccess::state(target).slots[box.index];
+        ASSERT_TRUE(inRange(body.position) && inRange(body.velocity) && isFinite(body.separation))
+            << "step " << step;
+    }
+    // And the first velocity pass takes back what the warm start gave beyond what holds the
+    // box up (a cached normal impulse may fall to 0 within a step): it rests where it was.
+    EXPECT_NEAR(target.position(box).y, -5.0f, 0.01f);
 }
 
 /// What reading a tile map's list of bodies from `bytes` refuses ("" if nothing).

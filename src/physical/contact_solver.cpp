@@ -31,8 +31,24 @@ float relativeSpeed(const StepContext& step, const Contact& c, Vec2 direction) {
     return dot(step.velocityOf(c.ia) - step.velocityOf(c.ib), direction);
 }
 
+/// The most a warm start takes of a cached impulse: what changes the lighter body's velocity
+/// by kMaxMagnitude squared. A restored snapshot may hold any finite impulse, and a larger
+/// one would overflow the step's arithmetic (a velocity, a separation); what the steps of a
+/// world in math.hpp's range keep stays far below it, so it holds their bits.
+void takeAtMostTheLargestImpulse(StepContext& step, Contact& c) {
+    constexpr float kLargestChange = kMaxMagnitude * kMaxMagnitude;
+    const float invMass = std::max(step.invMassA(c), step.invMassB(c));
+    const float largest = std::max(std::abs(c.normalImpulse), std::abs(c.tangentImpulse));
+    if (largest * invMass <= kLargestChange) [[likely]]
+        return;
+    const float most = kLargestChange / invMass;
+    c.normalImpulse = std::min(c.normalImpulse, most);
+    c.tangentImpulse = std::clamp(c.tangentImpulse, -most, most);
+}
+
 void warmStart(StepContext& step) {
-    forEachContact(step, [&](const Contact& c) {
+    forEachContact(step, [&](Contact& c) {
+        takeAtMostTheLargestImpulse(step, c);
         if (c.axis == kAlongSlope) {
             applyImpulse(step, c, c.n, c.normalImpulse);
             applyImpulse(step, c, c.tangent(), c.tangentImpulse);
