@@ -48,6 +48,26 @@ void report(const char* function, const char* message) noexcept {
     inHandler = false;
 }
 
+void reportCurrentException(const char* function) noexcept {
+    try {
+        throw;
+    } catch (const std::bad_alloc&) {
+        report(function, "out of memory");
+    } catch (const std::exception& e) {
+        report(function, e.what());
+    } catch (...) {
+        report(function, "unknown error");
+    }
+}
+
+void misuse(const char* message) {
+    throw Error(message);
+}
+
+void nullArgument(const char* name) {
+    misuse(std::string(name) + " is NULL");
+}
+
 } // namespace jostle::c_api
 
 extern "C" {

@@ -18,6 +18,11 @@ namespace jostle::c_api {
 /// Records "function: message" as this thread's last error and calls the error handler.
 void report(const char* function, const char* message) noexcept;
 
+/// Reports the exception being handled under the C function's name: "out of memory", its
+/// what(), or "unknown error". Called from a catch-all, out of line: one handler in each
+/// entry point, not one per kind of exception.
+void reportCurrentException(const char* function) noexcept;
+
 /// Runs `body` and returns what it returns; if it throws anything, reports it under the
 /// C function's name and returns `fallback` instead. Every C entry point runs in one, so
 /// no exception ever crosses into C.
@@ -25,12 +30,8 @@ template <class Result, class Body>
 Result guard(const char* function, Result fallback, Body&& body) noexcept {
     try {
         return body();
-    } catch (const std::bad_alloc&) {
-        report(function, "out of memory");
-    } catch (const std::exception& e) {
-        report(function, e.what());
     } catch (...) {
-        report(function, "unknown error");
+        reportCurrentException(function);
     }
     return fallback;
 }
@@ -39,10 +40,15 @@ Result guard(const char* function, Result fallback, Body&& body) noexcept {
 [[noreturn]] inline void misuse(const std::string& message) {
     throw Error(message);
 }
+/// The same for a fixed message, out of line (no string made at each place that checks).
+[[noreturn]] void misuse(const char* message);
+
+/// Throws "<name> is NULL" (out of line: every entry point checks its pointers).
+[[noreturn]] void nullArgument(const char* name);
 
 template <class T> T& required(T* pointer, const char* name) {
-    if (pointer == nullptr)
-        misuse(std::string(name) + " is NULL");
+    if (pointer == nullptr) [[unlikely]]
+        nullArgument(name);
     return *pointer;
 }
 

@@ -44,6 +44,20 @@ void describe(char (&out)[kMessageSize], const std::exception& error, bool fromJ
     copyInNotation(text, Notation::Lua, out, kMessageSize);
 }
 
+void describeCurrentException(char (&out)[kMessageSize]) noexcept {
+    try {
+        throw;
+    } catch (const jostle::Error& error) {
+        describe(out, error, true);
+    } catch (const std::bad_alloc&) {
+        copyMessage(out, "out of memory");
+    } catch (const std::exception& error) {
+        describe(out, error, false);
+    } catch (...) {
+        copyMessage(out, "unexpected C++ exception");
+    }
+}
+
 void describe(char (&out)[kMessageSize], const FieldError& problem) {
     const std::string text = problem.field + ": " + problem.problem;
     copyInNotation(text, Notation::Lua, out, kMessageSize);

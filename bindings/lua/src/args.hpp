@@ -37,6 +37,10 @@ inline constexpr std::size_t kMessageSize = 512;
 /// notation (src/notation.hpp: "character = true", not "BodyDef::character = true").
 void describe(char (&out)[kMessageSize], const std::exception& error, bool fromJostle);
 void copyMessage(char (&out)[kMessageSize], const char* text);
+/// Describes the exception being handled: a jostle::Error or another std::exception as
+/// describe() does, "out of memory", or "unexpected C++ exception". Called from a
+/// catch-all, out of line: one handler in each function, not one per kind of exception.
+void describeCurrentException(char (&out)[kMessageSize]) noexcept;
 /// Copies a definition's problem (checkBodyDef, ...) as "field: problem", in Lua's notation.
 void describe(char (&out)[kMessageSize], const FieldError& problem);
 
@@ -46,14 +50,8 @@ template <class Work> bool attempt(char (&message)[kMessageSize], Work&& work) n
     try {
         work();
         return true;
-    } catch (const jostle::Error& error) {
-        describe(message, error, true);
-    } catch (const std::bad_alloc&) {
-        copyMessage(message, "out of memory");
-    } catch (const std::exception& error) {
-        describe(message, error, false);
     } catch (...) {
-        copyMessage(message, "unexpected C++ exception");
+        describeCurrentException(message);
     }
     return false;
 }
