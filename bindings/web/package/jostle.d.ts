@@ -436,12 +436,19 @@ export class World {
   roundedMoveAndSlide(centre: VecLike, half: VecLike, radius: number, translation: VecLike,
                       filter?: QueryFilter): MoveAndSlideResult;
 
+  /** How many bytes snapshot() writes now: how long an `into` must be. */
+  snapshotSize(): number;
   /**
    * Everything that decides the world's future (docs/snapshots.md): a new array, or, given
    * `into` long enough, the front of it (`into.subarray(0, size)`: no new buffer a frame).
+   * Given an `into` too short, a new array: keep what it returns, not `into`.
    */
   snapshot(into?: Uint8Array): Uint8Array;
-  /** Makes the world what it was when the snapshot was taken. */
+  /**
+   * Makes the world what it was when the snapshot was taken: its bytes exactly, as
+   * snapshot() returned them. A body made again after it under a handle the game met
+   * before is the same object, with its new def's userData.
+   */
   restore(snapshot: Uint8Array): void;
   /** A hash of exactly what a snapshot holds, as 16 hexadecimal digits. */
   stateHash(): string;

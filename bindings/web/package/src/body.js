@@ -29,9 +29,9 @@ export class Body extends Handle {
     return v;
   }
 
-  setVector(fn, name, x, y) {
-    args.number(fn, "x", x);
-    args.number(fn, "y", y);
+  setVector(fn, name, x, y, names = ["x", "y"]) {
+    args.number(fn, names[0], x);
+    args.number(fn, names[1], y);
     this.world.rt.check(fn, this.call(fn, name, this.world.rt.vector(x, y)));
   }
 
@@ -42,7 +42,7 @@ export class Body extends Handle {
   }
 
   /// Removes the body from its world; this object is stale after.
-  destroy() { this.world.rt.check("destroy", this.call("destroy", "_jostle_body_destroy")); }
+  destroy() { this.world.rt.check("destroy", this.call("destroy", "_jostle_body_destroy"), "destroyBody"); }
 
   /// "static", "kinematic" or "dynamic".
   get type() {
@@ -57,8 +57,8 @@ export class Body extends Handle {
   }
 
   setPosition(x, y) { this.setVector("setPosition", "_jostle_body_set_position", x, y); }
-  setVelocity(vx, vy) { this.setVector("setVelocity", "_jostle_body_set_velocity", vx, vy); }
-  setHalfExtents(hw, hh) { this.setVector("setHalfExtents", "_jostle_body_set_half_extents", hw, hh); }
+  setVelocity(vx, vy) { this.setVector("setVelocity", "_jostle_body_set_velocity", vx, vy, ["vx", "vy"]); }
+  setHalfExtents(hw, hh) { this.setVector("setHalfExtents", "_jostle_body_set_half_extents", hw, hh, ["hw", "hh"]); }
   /// Sets the mass from a density (mass = density * 4 * hw * hh).
   setDensity(density) {
     args.number("setDensity", "density", density);
@@ -66,9 +66,9 @@ export class Body extends Handle {
   }
 
   /// Adds a force (mass * units / s²) for the next step.
-  applyForce(fx, fy) { this.setVector("applyForce", "_jostle_body_apply_force", fx, fy); }
+  applyForce(fx, fy) { this.setVector("applyForce", "_jostle_body_apply_force", fx, fy, ["fx", "fy"]); }
   /// Changes the velocity by impulse / mass at once.
-  applyImpulse(ix, iy) { this.setVector("applyImpulse", "_jostle_body_apply_impulse", ix, iy); }
+  applyImpulse(ix, iy) { this.setVector("applyImpulse", "_jostle_body_apply_impulse", ix, iy, ["ix", "iy"]); }
   /// Wakes the body (and what it touches) if it sleeps.
   wake() { this.world.rt.check("wake", this.call("wake", "_jostle_body_wake")); }
   /// Falls through one-way platforms for `seconds`.

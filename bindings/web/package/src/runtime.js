@@ -38,15 +38,17 @@ export class Runtime {
   /// ("jostle_body_set_velocity: a static body cannot move" becomes "setVelocity: a
   /// static body cannot move"), and clears it: a failed call is the last error's only
   /// source, so that a getter's zero is an answer unless an error stands (failed()).
-  check(fn, ok) {
+  /// `cppName`: the C++ function's name, where it is not the method's.
+  check(fn, ok, cppName = null) {
     if (ok) return;
     let message = this.m.UTF8ToString(this.m._jostle_web_last_error());
     this.m._jostle_clear_error();
     const cFunction = /^jostle_\w+: /.exec(message);
     if (cFunction !== null) message = message.slice(cFunction[0].length);
-    // A property's C++ setter names itself: "setFriction: ..." is friction's.
-    const setter = `set${fn[0].toUpperCase()}${fn.slice(1)}: `;
-    if (message.startsWith(setter)) message = message.slice(setter.length);
+    // A property's C++ setter names itself: "setFriction: ..." is friction's; so does a
+    // method's C++ function where the names differ ("destroyBody: ..." is destroy's).
+    for (const named of [`set${fn[0].toUpperCase()}${fn.slice(1)}: `, cppName && `${cppName}: `])
+      if (named && message.startsWith(named)) message = message.slice(named.length);
     throw new Error(message.startsWith(`${fn}: `) ? message : `${fn}: ${message}`);
   }
 

@@ -12,7 +12,7 @@ export class TileMap extends Handle {
   }
 
   /// Destroys the map and its bodies; what rests on them wakes and falls.
-  destroy() { this.world.rt.check("destroy", this.call("destroy", "_jostle_tile_map_destroy")); }
+  destroy() { this.world.rt.check("destroy", this.call("destroy", "_jostle_tile_map_destroy"), "destroyTileMap"); }
 
   get columns() { return this.world.rt.got("columns", this.call("columns", "_jostle_tile_map_columns")); }
   get rows() { return this.world.rt.got("rows", this.call("rows", "_jostle_tile_map_rows")); }

@@ -164,8 +164,10 @@ export class World {
     rt.check(fn, read !== 0);
     m._jostle_body_create(rt.out, world, read);
     rt.check(fn, m.HEAPU32[(rt.out >> 2) + 1] !== 0);
+    // The object may be one the game met before: the same handle made again after a
+    // restore (docs/rollback.md). Its userData is this def's.
     const body = this.bodyAt(rt.out);
-    if (userData !== undefined) body.userData = userData;
+    body.userData = userData;
     return body;
   }
 
@@ -354,6 +356,13 @@ export class World {
 
   // --- Snapshots (docs/snapshots.md) ----------------------------------------------------------
 
+  /// How many bytes snapshot() writes now.
+  snapshotSize() {
+    const fn = "snapshotSize", size = this.rt.m._jostle_world_snapshot_size(this.live(fn));
+    this.rt.check(fn, size !== 0);
+    return size;
+  }
+
   /// Everything that decides the world's future, as the bytes C and C++ write: a new array,
   /// or the front of `into` (a Uint8Array long enough: a rollback loop's own, no new buffer).
   snapshot(into) {
@@ -385,6 +394,24 @@ export class World {
     const world = this.live(fn), rt = this.rt, at = rt.bufferOf(bytes.length);
     rt.m.HEAPU8.set(bytes, at);
     rt.check(fn, rt.m._jostle_world_restore(world, at, bytes.length));
+    this.forgetReplacedHandles();
+  }
+
+  /// After a restore, forgets the object of each slot that now holds a body (or a map) of
+  /// another generation than the object's (its slot was reused after the snapshot), so that
+  /// the body the restore brought back is one object again; the userData rule of
+  /// docs/snapshots.md follows.
+  forgetReplacedHandles() {
+    const world = this.pointer, rt = this.rt, size = rt.layout.body_id.size;
+    const [at, count] = rt.many("restore", size, (out, capacity) => rt.m._jostle_world_bodies(world, out, capacity));
+    const words = rt.m.HEAPU32;
+    for (let i = 0; i < count; i++) {
+      const p = (at + i * size) >> 2, known = this.bodyOfSlot[words[p]];
+      if (known !== undefined && known.generation !== words[p + 1]) delete this.bodyOfSlot[words[p]];
+    }
+    this.tileMapOfSlot.forEach((map, slot) => {
+      if (!map.valid) delete this.tileMapOfSlot[slot];
+    });
   }
 
   /// A hash of exactly what a snapshot holds, as 16 hexadecimal digits.

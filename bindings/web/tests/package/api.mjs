@@ -147,8 +147,12 @@ await rejects("an unknown option", load({wasmBinary: bytes}), "load: no option \
           "createBody: unknown field \"bouncy\" (did you mean \"bounce\"?)");
   refuses("undefined in a definition", () => world.createBody({hw: 1, hh: undefined}), "TypeError",
           "createBody: hh: expected a value, got undefined (leave a field out for its default)");
+  refuses("a method's argument named as the method names it", () => body.setVelocity(NaN, 0), "TypeError",
+          "setVelocity: vx must be a finite number, got NaN");
   body.destroy();
   check(!body.valid, "a destroyed body is not valid");
+  refuses("a body destroyed twice", () => body.destroy(), "Error",
+          "destroy: stale BodyId (the body was destroyed)");
   refuses("a stale body", () => body.position, "Error", "position: stale BodyId (the body was destroyed)");
   refuses("a stale body's setter", () => { body.friction = 0.5; }, "Error", "friction: stale BodyId (the body was destroyed)");
   const other = jostle.createWorld().createBody({hw: 1, hh: 1});
@@ -311,6 +315,7 @@ await rejects("an unknown option", load({wasmBinary: bytes}), "load: no option \
   world.step(1 / 60);
 
   const saved = world.snapshot(), hash = world.stateHash();
+  check(world.snapshotSize() === saved.length, "snapshotSize() is the length of a snapshot");
   const room = new Uint8Array(saved.length + 7), kept = world.snapshot(room);
   check(kept.buffer === room.buffer && kept.length === saved.length && kept.every((b, i) => b === saved[i]),
         "snapshot(into) writes the same bytes into the front of `into`");
@@ -328,6 +333,26 @@ await rejects("an unknown option", load({wasmBinary: bytes}), "load: no option \
   refuses("a snapshot that is not one", () => world.restore(new Uint8Array(10)), "Error",
           "restore: not a jostle snapshot");
   check(world.stateHash() === hash, "a refused restore leaves the world as it was");
+
+  // A body made after a restore under the handle of one made after the snapshot is the same
+  // object (rollback makes the same handles again), with its own def's userData.
+  const bullet = world.createBody({x: 0, y: -80, hw: 1, hh: 1, userData: {kind: "bullet"}});
+  world.restore(saved);
+  const rocket = world.createBody({x: 50, y: 10, hw: 3, hh: 3});
+  check(rocket === bullet && rocket.userData === undefined,
+        `a body made again under a handle has its own def's userData (${JSON.stringify(rocket.userData)})`);
+  // A slot reused after the snapshot, then restored: the body back in it is one object
+  // again, with no userData (docs/snapshots.md: its slot did not hold it last).
+  ball.userData = "ball";
+  const before = world.snapshot();
+  ball.destroy();
+  const reuser = world.createBody({x: 0, y: -60, hw: 1, hh: 1});
+  check(reuser.index === ball.index, "the slot of a destroyed body is reused");
+  world.restore(before);
+  const inSlot = () => world.bodies().find((b) => b.index === ball.index);
+  const again = inSlot();
+  check(again === inSlot() && again.generation === ball.generation && again.userData === undefined,
+        "restored, a body whose slot was reused since is one object, without userData");
   world.destroy();
 }
 
