@@ -47,7 +47,7 @@ export interface BodyDef {
   /** Also swept against dynamic bodies (fast small bodies). */
   bullet?: boolean;
   /** A one-way platform's blocking normal: [0, -1] stops bodies from above in a y-down world. */
-  oneWay?: readonly [number, number];
+  oneWay?: VecLike;
   /** The filter categories it belongs to, default 1. */
   category?: number;
   /** The categories it collides with, default 0xFFFFFFFF. */
@@ -69,13 +69,20 @@ export interface BodyDef {
   /** Rounds the box: hw == hh == radius is a circle, hw == radius < hh a capsule. */
   radius?: number;
   /** A ramp: the corner the slope cuts away ([1, -1]...). */
-  slope?: readonly [number, number];
+  slope?: VecLike;
   /** With a slope: the sloped face alone, a one-sided line. */
   segment?: boolean;
   /** A conveyor's surface velocity, for friction. */
-  surfaceVelocity?: readonly [number, number];
+  surfaceVelocity?: VecLike;
   /** Yours: any value, kept on the Body. */
   userData?: unknown;
+}
+
+/** A body's definition as Body.def() gives it: its vectors as [x, y]. */
+export interface BodyDefNow extends BodyDef {
+  oneWay?: readonly [number, number];
+  slope?: readonly [number, number];
+  surfaceVelocity?: readonly [number, number];
 }
 
 /** A tile map as a scene file describes it (docs/tilemaps.md). */
@@ -92,7 +99,7 @@ export interface TileMapDef {
   category?: number;
   mask?: number;
   /** [0, -1]: jump-through platforms in a y-down world. */
-  oneWay?: readonly [number, number];
+  oneWay?: VecLike;
   /** Water, lava, a trigger zone drawn in tiles. */
   sensor?: boolean;
 }
@@ -127,7 +134,7 @@ export interface PhysicalOptions {
 /** A world as a scene file describes it (docs/scene-format.md). */
 export interface SceneDef {
   /** Default [0, 0]; scaled by each body's gravityScale. */
-  gravity?: readonly [number, number];
+  gravity?: VecLike;
   /** The largest speed of a dynamic body, > 0; none by default. */
   maxVelocity?: number;
   solver?: "classic" | "physical";
@@ -338,7 +345,7 @@ export class Body {
   /** Moves the body by (dx, dy) as bump.lua's world:move does; filter answers each body in the way. */
   move(dx: number, dy: number, filter?: ((other: Body) => Response) | null): MoveResult;
   /** Its definition as a scene file's body object, every setting as it is now. */
-  def(): BodyDef;
+  def(): BodyDefNow;
   /** Removes it from its world. */
   destroy(): void;
 }

@@ -79,6 +79,7 @@ export function floats(fn, name, value) {
 /// every value is checked first, and a bad one is named by its place as the loader names
 /// places ("radius", "bodies[3].hw", "gravity[1]"): "createBody: radius: expected a
 /// finite number, got NaN". Leave a field out for its default: undefined is refused.
+/// Vectors may be {x, y} as well as [x, y].
 export function json(fn, value) {
   const problem = jsonProblem(value, []);
   if (problem !== null) {
@@ -88,7 +89,17 @@ export function json(fn, value) {
              : (place === "" ? "" : ".") + (/^[A-Za-z_][A-Za-z0-9_]*$/.test(key) ? key : JSON.stringify(key));
     throw new TypeError(`${fn}: ${place === "" ? "" : place + ": "}${problem.what}`);
   }
-  return JSON.stringify(value);
+  return JSON.stringify(value, vectorsAsArrays);
+}
+
+/// A vector given as jostle gives them, {x, y} (numbers, no other key), written as the
+/// scene loader reads vectors, [x, y]: a definition takes both.
+function vectorsAsArrays(key, value) {
+  if (value === null || typeof value !== "object" || Array.isArray(value) ||
+      typeof value.x !== "number" || typeof value.y !== "number")
+    return value;
+  const keys = Object.keys(value);
+  return keys.length === 2 ? [value.x, value.y] : value;
 }
 
 /// What JSON.stringify would not write as it is, in `value`: {place: the keys and

@@ -141,6 +141,15 @@ await rejects("an unknown option", load({wasmBinary: bytes}), "load: no option \
           "mask: mask must be an integer in [0, 4294967295], got 4294967296");
   refuses("a body type that is not one", () => { body.type = "ghost"; }, "TypeError",
           "type: must be \"static\", \"kinematic\" or \"dynamic\", got \"ghost\"");
+  {
+    const given = jostle.createWorld({gravity: {x: 0, y: 500}});
+    const ledge = given.createBody({type: "static", hw: 4, hh: 1, oneWay: {x: 0, y: -1}});
+    check(given.gravity.y === 500 && ledge.oneWay.y === -1 && ledge.oneWay.x === 0,
+          "a definition's vectors may be {x, y}, as jostle gives them, as well as [x, y]");
+    refuses("a vector of neither kind", () => given.createBody({hw: 1, hh: 1, surfaceVelocity: "east"}), "Error",
+            "createBody: surfaceVelocity: expected an array of 2 numbers, got string");
+    given.destroy();
+  }
   refuses("a definition's mistake", () => world.createBody({hw: 1, hh: 1, bounce: 3}), "Error",
           "createBody: bounce: must be in [0, 1]");
   refuses("an unknown field", () => world.createBody({hw: 1, hh: 1, bouncy: 1}), "Error",
