@@ -182,6 +182,58 @@ TEST(FixedStep, UpdateStepsTheWorld) {
     EXPECT_EQ(world.position(body).x, 2.0f);
 }
 
+TEST(FixedStep, UpdateHandsTheGameEachStepsEventsNotOnlyTheLastOnes) {
+    // Three boxes falling onto a floor from heights they reach in different steps of one
+    // frame: read once after update(), the world's events hold the last step's begins
+    // alone; read in afterStep, every landing.
+    auto landings = [](bool eachStep) {
+        World world(WorldDef{.gravity = {0, 1000}});
+        world.createBody({.type = BodyType::Static, .y = 10, .hw = 100, .hh = 10});
+        // Fallen g dt² n(n + 1) / 2 after n steps (semi-implicit Euler): 0.28 after one,
+        // 0.83 and 1.67 after two and three, 4.17 and 5.83 after five and six. Gaps of 0.1,
+        // 1 and 4.5 close in the first, third and sixth steps of the eight.
+        for (float gap : {0.1f, 1.0f, 4.5f})
+            world.createBody({.x = 10.0f * gap, .y = -1.0f - gap, .hw = 1, .hh = 1});
+        FixedStep clock(1.0f / 60.0f, 8);
+        std::size_t begins = 0;
+        if (eachStep)
+            clock.update(world, 8.0f / 60.0f, [&] { begins += world.contactBegins().size(); });
+        else {
+            clock.update(world, 8.0f / 60.0f);
+            begins = world.contactBegins().size();
+        }
+        return begins;
+    };
+    EXPECT_EQ(landings(true), 3u);
+    EXPECT_LT(landings(false), 3u);
+}
+
+TEST(FixedStep, AfterStepIsCalledOncePerStepTaken) {
+    World world;
+    FixedStep clock(0.25f, 3);
+    int calls = 0;
+    EXPECT_EQ(clock.update(world, 0.6f, [&] { ++calls; }), 2);
+    EXPECT_EQ(calls, 2);
+    EXPECT_EQ(clock.update(world, 2.0f, [&] { ++calls; }), 3); // the cap
+    EXPECT_EQ(calls, 5);
+}
+
+TEST(FixedStep, ResetForgetsWhereBodiesWereSoARestoredWorldIsDrawnWhereItIs) {
+    // A box at 4 units/s, steps of 0.25 s: stepped from 1 to 2, alpha 0.5, then restored to
+    // a snapshot of x = 0, it is drawn between 1 and 0 (0.5) until reset() forgets the step.
+    World world(WorldDef{.gravity = {0, 0}});
+    const BodyId box = world.createBody({.hw = 1, .hh = 1, .vx = 4});
+    const std::vector<std::byte> start = world.snapshot();
+    FixedStep clock(0.25f);
+    clock.update(world, 0.25f);
+    clock.update(world, 0.375f);
+    ASSERT_EQ(world.position(box).x, 2.0f);
+    world.restore(start);
+    EXPECT_FLOAT_EQ(clock.drawPosition(world, box).x, 0.5f);
+    clock.reset();
+    EXPECT_EQ(clock.drawPosition(world, box), (Vec2{0, 0}));
+}
+
 TEST(FixedStep, ResetForgetsTheTimeLeftOver) {
     FixedStep clock(0.25f, 1);
     clock.advance(0.9f); // 3 steps due, 1 taken, 0.5 s dropped, 0.15 s left over

@@ -89,9 +89,22 @@ public:
     /// of steps. For games that draw the world as it is after the last step. If a step
     /// throws (a callback of yours did), the steps left are not taken and their time is
     /// lost. It also keeps where every body was before the last step, for drawPosition.
+    ///
+    /// A world's events (contactBegins() and the rest) are the last step's: a frame of
+    /// several steps that reads them once, after update(), misses the others'. Read them
+    /// in `afterStep`, which update(world, frameSeconds, afterStep) calls after each step.
     int update(World& world, float frameSeconds) {
+        return update(world, frameSeconds, [] {});
+    }
+    /// update(world, frameSeconds), calling afterStep() after each step: where a game reads
+    /// the step's events. It may change the world, as between any two steps; what it
+    /// throws stops the steps as a step's error does.
+    template <class AfterStep> int update(World& world, float frameSeconds, AfterStep&& afterStep) {
         const int steps = advance(frameSeconds);
-        takeSteps(world, steps, [&] { world.step(dt_); });
+        takeSteps(world, steps, [&] {
+            world.step(dt_);
+            afterStep();
+        });
         return steps;
     }
 
@@ -174,11 +187,15 @@ public:
         accumulated_ = nanoseconds;
     }
 
-    /// Forgets the time left over and the dropped time, as a new FixedStep would: for
-    /// after a pause or a level load, so the first frame does not catch up with them.
+    /// Forgets the time left over, the dropped time and where bodies were before the last
+    /// step, as a new FixedStep would: for after a pause, a level load or a restored
+    /// snapshot, so that the first frame neither catches up with the time nor draws a body
+    /// between where it was before and where it is now. (A rollback that steps again after
+    /// its restore needs none of it: update() and takeSteps() remember the positions anew.)
     void reset() {
         accumulated_ = 0;
         dropped_ = 0.0;
+        before_.clear();
     }
 
 private:

@@ -216,8 +216,6 @@ typedef struct jostle_physical_options {
     int max_contacts_per_body;
 } jostle_physical_options;
 
-/// Everything that describes a world (jostle::WorldDef). Start from
-/// jostle_default_world_def().
 /// Work jostle hands to a task system: run it for every item of [begin, end) on worker
 /// `worker` (in [0, workers), no two ranges at once on one worker). C++: jostle::TaskFn.
 typedef void (*jostle_task_fn)(uint32_t begin, uint32_t end, uint32_t worker, void* task_context);
@@ -240,6 +238,8 @@ typedef struct jostle_task_system {
     void* user_context; ///< passed to enqueue_task and finish_task as given
 } jostle_task_system;
 
+/// Everything that describes a world (jostle::WorldDef). Start from
+/// jostle_default_world_def().
 typedef struct jostle_world_def {
     jostle_vec2 gravity; ///< default {0, 0}; scaled by each body's gravity_scale
     /// The largest speed of a dynamic body, > 0; INFINITY (the default): no clamp.
@@ -660,7 +660,7 @@ typedef struct jostle_collision {
     /// How deep they overlap along the normal; negative for a pair that will meet within
     /// the step (-depth is the gap), 0 where the classic ccd sweep stopped a body.
     float depth;
-    float bounce;   ///< the pair's bounce; the callback may change it (clamped to [0, 1])
+    float bounce; ///< the pair's bounce; the callback may change it (clamped to [0, 1])
     /// The pair's friction; the callback may change it (clamped to [0, 1]). Unless it is
     /// lowered, a character keeps its firm footing on a slope it stands on.
     float friction;
@@ -1103,6 +1103,25 @@ int jostle_fixed_step_advance(jostle_fixed_step* clock, float frame_seconds);
 /// steps taken so far.
 int jostle_fixed_step_update(jostle_fixed_step* clock, jostle_world* world, float frame_seconds);
 
+/// What jostle_fixed_step_update_each calls after each step, with the world and the
+/// context it was given.
+typedef void (*jostle_after_step_fn)(jostle_world* world, void* context);
+
+/// jostle_fixed_step_update, calling after_step(world, context) after each step: where a
+/// game reads the step's events. A world's events are the last step's, so a frame of
+/// several steps that reads them once, after jostle_fixed_step_update, misses the others'.
+/// after_step may change the world, as between any two steps, but not destroy it. NULL
+/// after_step: as jostle_fixed_step_update.
+int jostle_fixed_step_update_each(jostle_fixed_step* clock, jostle_world* world,
+                                  float frame_seconds, jostle_after_step_fn after_step,
+                                  void* context);
+
+/// Keeps where every body of `world` is now, for jostle_fixed_step_draw_position:
+/// jostle_fixed_step_update calls it before the last step it takes; a game that steps the
+/// world by hand (jostle_fixed_step_advance, then jostle_world_step) calls it before the
+/// last step of a frame.
+bool jostle_fixed_step_remember_positions(jostle_fixed_step* clock, const jostle_world* world);
+
 /// How far the time left over reaches towards the next step, in [0, 1): draw bodies at
 /// previous + (current - previous) * alpha. 0 on misuse.
 float jostle_fixed_step_alpha(const jostle_fixed_step* clock);
@@ -1126,7 +1145,9 @@ double jostle_fixed_step_dropped_seconds(const jostle_fixed_step* clock);
 float jostle_fixed_step_dt(const jostle_fixed_step* clock);
 int jostle_fixed_step_max_steps_per_frame(const jostle_fixed_step* clock);
 
-/// Forgets the time left over and the dropped time (after a pause or a level load).
+/// Forgets the time left over, the dropped time and where bodies were before the last step,
+/// as a new clock would (after a pause, a level load or a restored snapshot: a restored
+/// world is then drawn where it is).
 bool jostle_fixed_step_reset(jostle_fixed_step* clock);
 
 /// The time left over, not yet stepped, in whole nanoseconds: all the clock carries from

@@ -31,22 +31,50 @@ int jostle_fixed_step_advance(jostle_fixed_step* clock, float frame_seconds) {
     return guard(__func__, 0, [&] { return clockOf(clock).clock.advance(frame_seconds); });
 }
 
-int jostle_fixed_step_update(jostle_fixed_step* clock, jostle_world* world, float frame_seconds) {
-    const char* function = __func__; // inside the lambdas, __func__ is theirs
+} // extern "C"
+
+namespace {
+
+/// jostle_fixed_step_update and _update_each, under the name of `function`.
+int update(const char* function, jostle_fixed_step* clock, jostle_world* world, float frameSeconds,
+           jostle_after_step_fn afterStep, void* context) {
     return guard(function, 0, [&] {
         FixedStep& c = clockOf(clock).clock;
         jostle_world& w = outsideStep(world); // checked before the clock counts the frame
-        const int steps = c.advance(frame_seconds);
+        const int steps = c.advance(frameSeconds);
         // A failing step (out of memory) is reported, and the steps taken stand.
         int taken = 0;
         guard(function, 0, [&] {
             c.takeSteps(w.world, steps, [&] {
                 stepWorld(w, c.dt());
                 ++taken;
+                if (afterStep != nullptr)
+                    afterStep(world, context);
             });
             return 0;
         });
         return taken;
+    });
+}
+
+} // namespace
+
+extern "C" {
+
+int jostle_fixed_step_update(jostle_fixed_step* clock, jostle_world* world, float frame_seconds) {
+    return update(__func__, clock, world, frame_seconds, nullptr, nullptr);
+}
+
+int jostle_fixed_step_update_each(jostle_fixed_step* clock, jostle_world* world,
+                                  float frame_seconds, jostle_after_step_fn after_step,
+                                  void* context) {
+    return update(__func__, clock, world, frame_seconds, after_step, context);
+}
+
+bool jostle_fixed_step_remember_positions(jostle_fixed_step* clock, const jostle_world* world) {
+    return guard(__func__, false, [&] {
+        clockOf(clock).clock.rememberPositions(worldOf(world).world);
+        return true;
     });
 }
 

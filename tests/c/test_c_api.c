@@ -1708,6 +1708,42 @@ static void test_fixed_step(void) {
     CHECK_NO_ERROR();
 }
 
+/// Counts the contacts that began in each step jostle_fixed_step_update_each takes.
+static void count_begins(jostle_world* world, void* context) {
+    int count = 0;
+    jostle_world_contact_begins(world, &count);
+    *(int*)context += count;
+}
+
+/// Three boxes landing on a floor in the first, third and sixth of one frame's eight steps
+/// (fallen g dt^2 n (n + 1) / 2 after n steps: 0.28, then 0.83 and 1.67 after two and three,
+/// 4.17 and 5.83 after five and six; gaps of 0.1, 1 and 4.5): each step's begins reach the
+/// game through jostle_fixed_step_update_each, only the last step's after an update.
+static void test_fixed_step_events_of_each_step(void) {
+    int seen[2] = {0, 0};
+    for (int each = 0; each < 2; ++each) {
+        jostle_world* world = make_world(1000);
+        add_box(world, JOSTLE_BODY_STATIC, 0, 10, 100, 10);
+        const float gaps[] = {0.1f, 1.0f, 4.5f};
+        for (int i = 0; i < 3; ++i)
+            add_box(world, JOSTLE_BODY_DYNAMIC, 10 * gaps[i], -1 - gaps[i], 1, 1);
+        jostle_fixed_step* clock = jostle_fixed_step_create(1.0f / 60.0f, 8);
+        if (each)
+            CHECK(jostle_fixed_step_update_each(clock, world, 8.0f / 60.0f, count_begins,
+                                                &seen[each]) == 8,
+                  "eight steps");
+        else {
+            CHECK(jostle_fixed_step_update(clock, world, 8.0f / 60.0f) == 8, "eight steps");
+            count_begins(world, &seen[each]);
+        }
+        jostle_fixed_step_destroy(clock);
+        CHECK(jostle_world_destroy(world), "destroy");
+    }
+    CHECK(seen[1] == 3, "every landing, read after each step");
+    CHECK(seen[0] < 3, "the last step's landings alone, read after the frame");
+    CHECK_NO_ERROR();
+}
+
 /// Steps of 0.25 s; a box moving at 4 units/s covers 1 unit a step, so its positions after
 /// each step are whole numbers and where it is drawn between them is alpha.
 static void test_draw_positions(void) {
@@ -1729,6 +1765,17 @@ static void test_draw_positions(void) {
     CHECK(jostle_fixed_step_update(clock, world, 0.125f) == 0, "no step: alpha 0.5");
     CHECK_NEAR(jostle_fixed_step_draw_position(clock, world, box).x, 3.5, 1e-6);
 
+    // Stepped by hand: remembered before the step, drawn between 4 and 5 by alpha 0.5.
+    CHECK(jostle_fixed_step_advance(clock, 0.25f) == 1, "one step due");
+    CHECK(jostle_fixed_step_remember_positions(clock, world), "remembered");
+    CHECK(jostle_world_step(world, 0.25f), "stepped by hand");
+    CHECK_NEAR(jostle_fixed_step_draw_position(clock, world, box).x, 4.5, 1e-6);
+    // Reset: the time and where bodies were forgotten: drawn where it is.
+    CHECK(jostle_fixed_step_reset(clock), "reset");
+    CHECK(jostle_fixed_step_draw_position(clock, world, box).x == 5, "drawn where it is");
+    CHECK(!jostle_fixed_step_remember_positions(clock, NULL), "no world");
+    CHECK_ERROR("jostle_fixed_step_remember_positions", "world is NULL");
+
     // A body made since the last step is drawn where it is; all at once, in list order.
     def.x = 7;
     jostle_body_id late = jostle_body_create(world, &def);
@@ -1736,7 +1783,7 @@ static void test_draw_positions(void) {
     CHECK(p.x == 7 && p.y == 0, "where it is");
     jostle_vec2 all[3] = {{-1, -1}, {-1, -1}, {-1, -1}};
     CHECK(jostle_fixed_step_read_draw_positions(clock, world, all, 3) == 2, "two bodies");
-    CHECK_NEAR(all[0].x, 3.5, 1e-6);
+    CHECK(all[0].x == 5, "the box where it is, since the reset");
     CHECK(all[1].x == 7 && all[1].y == 0 && all[2].x == -1, "the new one, nothing beyond");
     CHECK(jostle_fixed_step_read_draw_positions(clock, world, all, 1) == 2, "the full count");
     CHECK(jostle_fixed_step_read_draw_positions(clock, world, NULL, 0) == 2, "the count alone");
@@ -2444,6 +2491,7 @@ int main(void) {
     test_pre_solve();
     test_fixed_step();
     test_draw_positions();
+    test_fixed_step_events_of_each_step();
     test_misuse();
     test_messages();
     test_a_handle_of_another_world();

@@ -34,9 +34,10 @@ int clockAdvance(lua_State* L) {
     return 1;
 }
 
-/// advance(frameSeconds), then world:step(dt) that many times; returns the number of
-/// steps. An error in a step (a pre-solve callback's) is raised at once; the steps left
-/// are not taken and their time is lost, as in C++.
+/// advance(frameSeconds), then world:step(dt) that many times, calling afterStep() (if
+/// given) after each: where a game reads the step's events. Returns the number of steps.
+/// An error in a step (a pre-solve callback's) or in afterStep is raised at once; the steps
+/// left are not taken and their time is lost, as in C++.
 int clockUpdate(lua_State* L) {
     const char* where = "FixedStep:update";
     FixedStep& clock = checkClock(L, where);
@@ -44,10 +45,18 @@ int clockUpdate(lua_State* L) {
     const float seconds = checkNumber(L, 3, where, "frameSeconds");
     if (!(seconds >= 0.0f))
         raise(L, where, "frameSeconds: must be >= 0");
+    const bool afterStep = !lua_isnoneornil(L, 4);
+    if (afterStep && !lua_isfunction(L, 4))
+        raise(L, where, "afterStep: expected a function, got %s", typeName(L, 4));
     int steps = 0;
     guard(L, where, [&] { steps = clock.advance(seconds); });
-    clock.takeSteps(checkWorld(L, 2, where).world, steps,
-                    [&] { stepWorld(L, 2, clock.dt(), where); });
+    clock.takeSteps(checkWorld(L, 2, where).world, steps, [&] {
+        stepWorld(L, 2, clock.dt(), where);
+        if (afterStep) {
+            lua_pushvalue(L, 4);
+            lua_call(L, 0, 0);
+        }
+    });
     pushWhole(L, steps);
     return 1;
 }

@@ -359,9 +359,11 @@ constexpr luaL_Reg kWorldMethods[] = {
 
 WorldHandle& checkWorldHandle(lua_State* L, int index, const char* where) {
     auto* handle = static_cast<WorldHandle*>(luaL_testudata(L, index, kWorldType));
-    if (!handle)
+    if (!handle && index == 1)
         raise(L, where, "expected a World as self (call it with a colon: world:method()), got %s",
               typeName(L, index));
+    if (!handle)
+        raise(L, where, "world: expected a World, got %s", typeName(L, index));
     if (!handle->data)
         raise(L, where, "the world was destroyed");
     return *handle;

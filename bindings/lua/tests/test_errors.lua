@@ -260,7 +260,7 @@ test("fixed step arguments", function()
   local clock = jostle.newFixedStep()
   t.raises({"FixedStep:advance", "frameSeconds: must be >= 0"}, clock.advance, clock, -1)
   t.raises({"FixedStep:advance", "frameSeconds: must be a finite number"}, clock.advance, clock, 0 / 0)
-  t.raises({"FixedStep:update", "expected a World as self", "got number"}, clock.update, clock, 1, 1)
+  t.raises({"FixedStep:update", "world: expected a World, got number"}, clock.update, clock, 1, 1)
   t.raises({"FixedStep:getAlpha", "expected a FixedStep as self"}, clock.getAlpha)
 end)
 

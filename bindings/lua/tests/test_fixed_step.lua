@@ -81,4 +81,44 @@ test("the pending time, saved and put back, gives the same steps to come", funct
            copy.setPendingNanoseconds, copy, 250000000)
 end)
 
+test("update's afterStep hands the game each step's events, not only the last step's", function()
+  -- Boxes landing in the first, third and sixth of a frame's eight steps (fallen
+  -- g dt^2 n (n + 1) / 2 after n steps: gaps of 0.1, 1 and 4.5 close in steps 1, 3 and 6).
+  local function landings(eachStep)
+    local world = jostle.newWorld({gravity = {0, 1000}})
+    world:newBody({type = "static", x = 0, y = 10, hw = 100, hh = 10})
+    for _, gap in ipairs({0.1, 1, 4.5}) do
+      world:newBody({x = 10 * gap, y = -1 - gap, hw = 1, hh = 1})
+    end
+    local clock, begins = jostle.newFixedStep(1 / 60, 8), 0
+    if eachStep then
+      t.equal(clock:update(world, 8 / 60, function() begins = begins + #world:getContactBegins() end),
+              8, "eight steps")
+    else
+      clock:update(world, 8 / 60)
+      begins = #world:getContactBegins()
+    end
+    return begins
+  end
+  t.equal(landings(true), 3, "every landing, read after each step")
+  t.truthy(landings(false) < 3, "the last step's landings alone, read after the frame")
+  local clock, world = jostle.newFixedStep(1 / 60), jostle.newWorld()
+  t.raises({"FixedStep:update", "afterStep: expected a function, got number"},
+           clock.update, clock, world, 1 / 60, 5)
+  t.raises({"afterStep failed"}, clock.update, clock, world, 1 / 60, function() error("afterStep failed") end)
+end)
+
+test("reset forgets where bodies were: a restored world is drawn where it is", function()
+  local world = jostle.newWorld({gravity = {0, 0}})
+  local box = world:newBody({hw = 1, hh = 1, vx = 4})
+  local start = world:snapshot()
+  local clock = jostle.newFixedStep(0.25)
+  clock:update(world, 0.25)
+  clock:update(world, 0.375) -- from 1 to 2, alpha 0.5
+  world:restore(start)
+  t.near((clock:getDrawPosition(world, box)), 0.5, 1e-6, "between 1 (before the step) and 0")
+  clock:reset()
+  t.equal((clock:getDrawPosition(world, box)), 0, "drawn where it is")
+end)
+
 return t.run(tests)

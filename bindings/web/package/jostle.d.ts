@@ -473,13 +473,21 @@ export class FixedStep {
   readonly droppedSeconds: number;
   /** Adds a frame's time and returns how many steps of dt to take now. */
   advance(frameSeconds: number): number;
-  /** advance, then world.step(dt) that many times; returns the steps taken. */
-  update(world: World, frameSeconds: number): number;
+  /**
+   * advance, then world.step(dt) that many times, calling afterStep() after each (where a
+   * game reads the step's events: a world's are the last step's); returns the steps taken.
+   */
+  update(world: World, frameSeconds: number, afterStep?: (() => void) | null): number;
+  /**
+   * Keeps where every body is now, for drawPosition: update does it before its last step;
+   * a game stepping by hand (advance, then world.step) calls it before a frame's last step.
+   */
+  rememberPositions(world: World): void;
   /** Where to draw the body now, between its last two steps by alpha. */
   drawPosition(body: Body): Vec2;
   /** drawPosition of every body, as world.readPositions. */
   readDrawPositions(world: World, out: Float32Array): number;
-  /** Forgets the time left over. */
+  /** Forgets the time left over and where bodies were (after a pause, a load, a restore). */
   reset(): void;
   destroy(): void;
 }

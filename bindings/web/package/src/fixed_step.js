@@ -25,13 +25,34 @@ export class FixedStep {
     return this.rt.got(fn, steps);
   }
 
-  /// advance, then world.step(dt) that many times; returns the steps taken.
-  update(world, frameSeconds) {
+  /// advance, then world.step(dt) that many times, calling afterStep() (if given) after
+  /// each: where a game reads the step's events (a world's events are the last step's).
+  /// Returns the steps taken.
+  update(world, frameSeconds, afterStep) {
     const fn = "update";
     args.number(fn, "frameSeconds", frameSeconds);
-    const steps = this.rt.m._jostle_fixed_step_update(this.live(fn), world.live(fn), frameSeconds);
-    world.jostle.rethrow();
-    return this.rt.got(fn, steps);
+    if (afterStep === undefined || afterStep === null) {
+      const steps = this.rt.m._jostle_fixed_step_update(this.live(fn), world.live(fn), frameSeconds);
+      world.jostle.rethrow();
+      return this.rt.got(fn, steps);
+    }
+    args.func(fn, "afterStep", afterStep);
+    world.live(fn); // checked before the clock counts the frame
+    const steps = this.rt.got(fn, this.rt.m._jostle_fixed_step_advance(this.live(fn), frameSeconds));
+    for (let i = 0; i < steps; i++) {
+      if (i === steps - 1) this.rememberPositions(world);
+      world.step(this.dt);
+      afterStep();
+    }
+    return steps;
+  }
+
+  /// Keeps where every body of `world` is now, for drawPosition: update calls it before the
+  /// last step it takes; a game that steps by hand (advance, then world.step) calls it
+  /// before the last step of a frame.
+  rememberPositions(world) {
+    const fn = "rememberPositions";
+    this.rt.check(fn, this.rt.m._jostle_fixed_step_remember_positions(this.live(fn), world.live(fn)));
   }
 
   /// How far the time left over reaches towards the next step, in [0, 1).
@@ -61,7 +82,8 @@ export class FixedStep {
     return count;
   }
 
-  /// Forgets the time left over (after a pause or a level load).
+  /// Forgets the time left over and where bodies were before the last step (after a
+  /// pause, a level load or a restored snapshot).
   reset() { this.rt.check("reset", this.rt.m._jostle_fixed_step_reset(this.live("reset"))); }
 
   destroy() {

@@ -299,6 +299,46 @@ await rejects("an unknown option", load({wasmBinary: bytes}), "load: no option \
   const drawn = new Float32Array(2);
   check(clock.readDrawPositions(world, drawn) === 1 && near(drawn[0], 1.4, 1e-3), "readDrawPositions");
   clock.destroy();
+  // Each step's events through afterStep: boxes landing in the first, third and sixth of a
+  // frame's eight steps (fallen g dt² n(n + 1) / 2 after n steps: gaps of 0.1, 1 and 4.5).
+  const landings = (eachStep) => {
+    const w = jostle.createWorld({gravity: [0, 1000]});
+    w.createBody({type: "static", y: 10, hw: 100, hh: 10});
+    for (const gap of [0.1, 1, 4.5]) w.createBody({x: 10 * gap, y: -1 - gap, hw: 1, hh: 1});
+    const c = jostle.createFixedStep(1 / 60, 8);
+    let begins = 0;
+    if (eachStep) check(c.update(w, 8 / 60, () => { begins += w.contactBegins().length; }) === 8, "eight steps");
+    else {
+      c.update(w, 8 / 60);
+      begins = w.contactBegins().length;
+    }
+    c.destroy();
+    w.destroy();
+    return begins;
+  };
+  check(landings(true) === 3, "update's afterStep sees every step's events");
+  check(landings(false) < 3, "read after the frame, the last step's alone");
+  // Reset forgets where bodies were: a restored world is drawn where it is.
+  {
+    const w = jostle.createWorld({gravity: [0, 0]});
+    const box = w.createBody({hw: 1, hh: 1, vx: 4});
+    const start = w.snapshot(), c = jostle.createFixedStep(0.25);
+    c.update(w, 0.25);
+    c.update(w, 0.375); // from 1 to 2, alpha 0.5
+    w.restore(start);
+    check(near(c.drawPosition(box).x, 0.5, 1e-6), "between 1 (before the step) and 0");
+    c.reset();
+    check(c.drawPosition(box).x === 0, "drawn where it is after reset()");
+    c.advance(0.25);
+    c.rememberPositions(w);
+    w.step(0.25);
+    c.advance(0.125);
+    check(near(c.drawPosition(box).x, 0.5, 1e-6), "stepped by hand: between 0 and 1 by alpha 0.5");
+    refuses("an afterStep that is not a function", () => c.update(w, 1, 5), "TypeError",
+            "update: afterStep must be a function, got 5");
+    c.destroy();
+    w.destroy();
+  }
   world.destroy();
 }
 {
