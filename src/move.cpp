@@ -72,7 +72,9 @@ MoveOutcome walk(WorldState& w, BodyId id, Vec2 delta, const MoveFilter& filter)
     std::vector<Vec2> against, slides, bounces;
     for (int stops = 0; stops < kMaxStops && (left.x != 0.0f || left.y != 0.0f); ++stops) {
         firstStop(w, candidates, out.centre, half, radius, left, meets, stop);
-        if (stop.met.empty()) {
+        // A move that ends touching a body has not run into it (bump.lua's rule): the next
+        // move that goes on into it meets it, once.
+        if (stop.met.empty() || stop.time >= 1.0f) {
             out.centre += left;
             break;
         }

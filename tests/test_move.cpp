@@ -180,6 +180,32 @@ TEST_F(MoveTest, SensorsAreCrossedAndFiltersAreTheBodys) {
     EXPECT_EQ(out.collisions[0].response, Response::Cross);
 }
 
+TEST_F(MoveTest, AMoveThatEndsTouchingASensorCrossesItOnceInTheMoveThatEntersIt) {
+    // bump.lua meets a body only before the end of a move. The item's right side (1)
+    // reaches the coin's left (3) at the very end of a move of 2: no crossing yet; the next
+    // move enters it (one cross, at its start); the one after starts inside it (none).
+    const BodyId coin = world.createBody(
+        {.type = BodyType::Static, .x = 3.5f, .y = 0.5f, .hw = 0.5f, .hh = 0.5f, .sensor = true});
+    EXPECT_TRUE(move(world, item, {2, 0}).collisions.empty());
+    EXPECT_EQ(world.position(item), (Vec2{2.5f, 0.5f}));
+    const MoveOutcome enters = move(world, item, {0.5f, 0});
+    ASSERT_EQ(enters.collisions.size(), 1u);
+    EXPECT_EQ(enters.collisions[0].other, coin);
+    EXPECT_EQ(enters.collisions[0].time, 0.0f);
+    EXPECT_TRUE(move(world, item, {0.25f, 0}).collisions.empty());
+}
+
+TEST_F(MoveTest, AMoveThatEndsTouchingAWallStopsThereAndMeetsItInTheNextMove) {
+    const BodyId wall = world.createBody(rect(3, -5, 1, 10));
+    EXPECT_TRUE(move(world, item, {2, 0}).collisions.empty());
+    EXPECT_EQ(world.position(item), (Vec2{2.5f, 0.5f}));
+    const MoveOutcome pushes = move(world, item, {1, 1});
+    ASSERT_EQ(pushes.collisions.size(), 1u);
+    EXPECT_EQ(pushes.collisions[0].other, wall);
+    EXPECT_EQ(pushes.collisions[0].time, 0.0f);
+    EXPECT_EQ(pushes.centre, (Vec2{2.5f, 1.5f})); // slid along it
+}
+
 TEST_F(MoveTest, AOneWayPlatformStopsOnlyFromItsBlockingSide) {
     world.createBody(
         {.type = BodyType::Static, .x = 0.5f, .y = -5, .hw = 5, .hh = 0.5f, .oneWay = {0, -1}});

@@ -870,10 +870,11 @@ typedef struct jostle_move_result {
 /// (NULL: JOSTLE_RESPONSE_SLIDE for solid bodies, JOSTLE_RESPONSE_CROSS for sensors).
 /// The rules are jostle_box_cast's: touching is not running into, a body it is already
 /// inside does not stop it, a one-way platform stops it only from its blocking side, and
-/// nothing is tunnelled through. Bodies the moved body's category and mask leave out are
-/// never met. The body is put where the move ends (as by jostle_body_set_position: it
-/// wakes what it leaves and what it reaches); its velocity is left alone. After 32 stops
-/// the body stays where the last one left it.
+/// nothing is tunnelled through; and, as in bump.lua, a body reached just as the move
+/// ends is not met (the next move into it meets it, once). Bodies the moved body's category and
+/// mask leave out are never met. The body is put where the move ends (as by
+/// jostle_body_set_position: it wakes what it leaves and what it reaches); its velocity is left
+/// alone. After 32 stops the body stays where the last one left it.
 ///
 /// Any body may be moved; a kinematic body is the usual choice for a character moved by
 /// hand (docs/characters.md). Writes what happened to *result, which may be NULL (the

@@ -276,7 +276,9 @@ struct MoveOutcome {
 /// Moves body `id` by `delta`, the way bump.lua's world:move does, in one call: its box
 /// goes from where the body is towards where it would be, and each body it runs into
 /// (the rules of boxCast: touching is not running into, a body it is already inside does
-/// not stop it, a one-way platform only from its blocking side) answers by `filter`:
+/// not stop it, a one-way platform only from its blocking side; and, as in bump.lua, a
+/// body reached just as the move ends is not met: the next move into it meets it) answers
+/// by `filter`:
 /// Slide (the default for solid bodies), Touch, Cross (the default for sensors), Bounce
 /// or Ignore. Bodies its category and mask leave out, and the body itself, are never
 /// met. The body is put where the move ends (World::setPosition: it wakes what it
