@@ -64,6 +64,10 @@ int runPreSolve(lua_State* L) {
     lua_call(L, 1, 1);
     // Only false ignores the pair: a callback that returns nothing keeps it.
     const bool keep = !(lua_type(L, -1) == LUA_TBOOLEAN && !lua_toboolean(L, -1));
+    // A field the callback set that is none of c's (c.frcition = 0) must not pass silently.
+    static const char* const kFields[] = {"a",     "b",      "nx",       "ny",
+                                          "depth", "bounce", "friction", nullptr};
+    Fields(L, table, "World:step", "pre-solve: c.").allowOnly(kFields);
     const float bounce = readBack(L, table, "bounce");
     const float friction = readBack(L, table, "friction");
     collision->bounce = bounce;

@@ -212,6 +212,8 @@ for _, solver in ipairs({"classic", "physical"}) do
     t.raises({"pre-solve: c.friction: expected a number, got string"}, world.step, world, dt)
     world:setPreSolve(function(c) c.bounce = 2 end)
     t.raises({"pre-solve: c.bounce: must be in [0, 1]"}, world.step, world, dt)
+    world:setPreSolve(function(c) c.frcition = 0 end)
+    t.raises({"pre-solve: c: unknown field \"frcition\" (did you mean \"friction\"?)"}, world.step, world, dt)
     -- The world steps again, and is not "inside a callback" any more.
     world:setPreSolve(nil)
     run(world, 30)
