@@ -181,6 +181,7 @@ export class Jostle {
                        friction: rt.float(at + L.friction)};
     try {
       const respond = world.preSolve(collision) !== false;
+      checkCollision(collision);
       const floats = rt.m.HEAPF32;
       floats[(at + L.bounce) >> 2] = collision.bounce;
       floats[(at + L.friction) >> 2] = collision.friction;
@@ -204,5 +205,20 @@ export class Jostle {
       this.thrown = error;
       return -1; // not a response: the C API refuses the move, and nothing moves
     }
+  }
+}
+
+const kCollisionFields = ["a", "b", "normal", "depth", "bounce", "friction"];
+
+/// What the pre-solve callback left in its collision, checked as Lua checks it: no field
+/// but its own (a typo must not pass silently), bounce and friction numbers in [0, 1].
+function checkCollision(collision) {
+  for (const key in collision)
+    if (!kCollisionFields.includes(key))
+      throw new TypeError(`step: the pre-solve callback's collision has no field "${key}" (${kCollisionFields.join(", ")})`);
+  for (const key of ["bounce", "friction"]) {
+    const value = collision[key];
+    if (typeof value !== "number" || !(value >= 0 && value <= 1))
+      throw new TypeError(`step: the pre-solve callback's collision.${key} must be a number in [0, 1], got ${args.describe(value)}`);
   }
 }

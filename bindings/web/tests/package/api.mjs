@@ -358,6 +358,12 @@ await rejects("an unknown option", load({wasmBinary: bytes}), "load: no option \
   }
   check(ghost.position.y > 110, `a pair the callback refuses passes through: the ghost fell through (${ghost.position.y})`);
   check(highest < 40, `a bounce set to 1 sends the ball back up (to y = ${highest.toFixed(1)})`);
+  world.setPreSolve((c) => { c.frcition = 0; });
+  refuses("a field the collision does not have", () => { for (let i = 0; i < 120; i++) world.step(1 / 60); }, "TypeError",
+          "step: the pre-solve callback's collision has no field \"frcition\" (a, b, normal, depth, bounce, friction)");
+  world.setPreSolve((c) => { c.friction = "high"; });
+  refuses("a friction that is no number", () => { for (let i = 0; i < 120; i++) world.step(1 / 60); }, "TypeError",
+          "step: the pre-solve callback's collision.friction must be a number in [0, 1], got \"high\"");
   world.setPreSolve(() => { throw new Error("callback failed"); });
   refuses("a pre-solve's error", () => { for (let i = 0; i < 120; i++) world.step(1 / 60); }, "Error", "callback failed");
   world.setPreSolve(null);
