@@ -85,6 +85,14 @@ inline jostle_world& outsideStep(jostle_world* world) {
         misuse("called from a callback during jostle_world_step");
     return w;
 }
+/// For the functions that read the world as a whole (snapshots, the state hash), which a
+/// callback may not call either: the world is half stepped.
+inline const jostle_world& outsideStep(const jostle_world* world) {
+    const jostle_world& w = worldOf(world);
+    if (w.stepping)
+        misuse("called from a callback during jostle_world_step");
+    return w;
+}
 
 // --- Worlds (world.cpp) and events (events.cpp) ------------------------------------------
 

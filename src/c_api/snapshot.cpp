@@ -10,14 +10,14 @@ using namespace jostle;
 using namespace jostle::c_api;
 
 size_t jostle_world_snapshot_size(const jostle_world* world) {
-    return guard(__func__, size_t{0}, [&] { return worldOf(world).world.snapshotSize(); });
+    return guard(__func__, size_t{0}, [&] { return outsideStep(world).world.snapshotSize(); });
 }
 
 size_t jostle_world_snapshot(const jostle_world* world, void* out, size_t capacity) {
     return guard(__func__, size_t{0}, [&] {
         if (out == nullptr && capacity > 0)
             misuse("out is NULL");
-        return worldOf(world).world.snapshot(std::span(static_cast<std::byte*>(out), capacity));
+        return outsideStep(world).world.snapshot(std::span(static_cast<std::byte*>(out), capacity));
     });
 }
 
@@ -33,7 +33,7 @@ bool jostle_world_restore(jostle_world* world, const void* snapshot, size_t size
 }
 
 uint64_t jostle_world_state_hash(const jostle_world* world) {
-    return guard(__func__, std::uint64_t{0}, [&] { return worldOf(world).world.stateHash(); });
+    return guard(__func__, std::uint64_t{0}, [&] { return outsideStep(world).world.stateHash(); });
 }
 
 } // extern "C"

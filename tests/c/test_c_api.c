@@ -1521,6 +1521,10 @@ static bool pre_solve(jostle_collision* c, void* context) {
             ++s->refused;
         if (!jostle_world_destroy(s->world))
             ++s->refused;
+        if (jostle_world_state_hash(s->world) == 0 &&
+            strstr(jostle_last_error(), "jostle_world_state_hash: called from a callback during "
+                                        "jostle_world_step"))
+            ++s->refused;
         jostle_clear_error();
         // Allowed: reading, querying, creating.
         jostle_body_id found[2];
@@ -1615,7 +1619,7 @@ static void test_pre_solve(void) {
     world = landing_scene(&s, &box);
     s.misbehave = true;
     run(world, 90);
-    CHECK(s.refused == 4, "step, set_gravity, set_pre_solve and destroy refused");
+    CHECK(s.refused == 5, "step, set_gravity, set_pre_solve, destroy and state_hash refused");
     CHECK(jostle_body_is_valid(world, s.created), "created from the callback");
     CHECK(jostle_world_get_gravity(world).y == kG, "gravity unchanged");
     CHECK(jostle_world_step(world, kDt), "stepping again after the callback");

@@ -26,7 +26,6 @@
 // README.md says how; none is now). JOSTLE_FUZZ_VERBOSE and JOSTLE_FUZZ_MODE are
 // described where they are read.
 #include "invariants.hpp"
-#include "open_questions.hpp"
 
 #include "jostle/query.hpp"
 #include "jostle/tilemap.hpp"
@@ -1734,13 +1733,9 @@ private:
             if (inRange(world_.position(c.b) + Vec2{0, -1}))
                 world_.setPosition(c.b, world_.position(c.b) + Vec2{0, -1});
             world_.setVelocity(c.a, world_.type(c.a) == BodyType::Static ? Vec2{} : Vec2{0, -50});
-            // Halved, but not below the smallest size (math.hpp). OPEN QUESTION
-            // tiny-bodies-overflow: bodies piled at the world's corner, some of them halved
-            // within a step down to 2e-9 (masses from 16 to 1e-17), overflow the velocity
-            // solver's impulses: positions become NaN. Until decided, halving stops at 1e-6.
-            const float smallest = check::checkOpen("tiny-bodies-overflow") ? kMinMagnitude : 1e-6f;
+            // Halved, but not below the smallest size (math.hpp).
             if (const Vec2 h = world_.halfExtents(c.b) * 0.5f;
-                h.x >= smallest && h.y >= smallest &&
+                h.x >= kMinMagnitude && h.y >= kMinMagnitude &&
                 std::min(h.x, h.y) >= world_.bodyDef(c.b).radius)
                 world_.setHalfExtents(c.b, h);
             return true;
