@@ -39,6 +39,7 @@ export class FixedStep {
     args.func(fn, "afterStep", afterStep);
     world.live(fn); // checked before the clock counts the frame
     const steps = this.rt.got(fn, this.rt.m._jostle_fixed_step_advance(this.live(fn), frameSeconds));
+    // FixedStep::takeSteps' loop, here so that what afterStep throws stops it at once.
     for (let i = 0; i < steps; i++) {
       if (i === steps - 1) this.rememberPositions(world);
       world.step(this.dt);
