@@ -13,8 +13,10 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <exception>
 #include <optional>
 #include <string>
+#include <utility>
 
 namespace jostle {
 
@@ -186,9 +188,10 @@ void World::step(float dt) {
         else
             stepPhysical(w, dt);
     } catch (...) {
-        // A callback's exception ends the step where it got to: bodies already moved
-        // still stop at the edge of the world.
+        // An exception the step did not expect (out of memory) ends it where it got to:
+        // bodies already moved still stop at the edge of the world.
         keepInsideTheWorld(w);
+        w.preSolveThrew = nullptr;
         throw;
     }
     keepInsideTheWorld(w);
@@ -196,6 +199,8 @@ void World::step(float dt) {
     w.tasks->endStep(w.profile.step);
     if (std::optional<std::string> broken = w.tasks->takeBrokenContract())
         fail("step", *broken);
+    if (w.preSolveThrew) // the step is whole: what the callback threw comes out now
+        std::rethrow_exception(std::exchange(w.preSolveThrew, nullptr));
 }
 
 Vec2 World::gravity() const {

@@ -9,4 +9,17 @@ WorldState::WorldState() : physical(std::make_unique<PhysicalScratch>()) {}
 
 WorldState::~WorldState() = default;
 
+bool WorldState::askPreSolve(Collision& c) {
+    if (preSolveThrew)
+        return true;
+    const Collision given = c;
+    try {
+        return preSolve(c);
+    } catch (...) {
+        preSolveThrew = std::current_exception();
+        c = given;
+        return true;
+    }
+}
+
 } // namespace jostle

@@ -20,6 +20,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <exception>
 #include <memory>
 #include <span>
 #include <utility>
@@ -37,6 +38,12 @@ struct WorldState {
 
     WorldDef def;
     PreSolveFn preSolve;
+    /// Asks the pre-solve callback about `c`. What it throws is kept, and the step goes on
+    /// as if it had answered true, `c` as it was given, from then on: step() throws it once
+    /// the step is whole, so that a world is never left half stepped.
+    bool askPreSolve(Collision& c);
+    /// What the pre-solve callback threw during this step, if anything.
+    std::exception_ptr preSolveThrew;
 
     /// This world's serial number, unique in the process (handles.hpp): every BodyId and
     /// TileMapId it gives carries it. Handles are the only thing it touches: nothing in

@@ -373,6 +373,28 @@ TEST_P(DuringStep, AnExceptionFromACallbackLeavesTheWorldUsable) {
     EXPECT_EQ(again.index, s.box.index); // the destroyed slot was released
 }
 
+// A game that caught a pre-solve's exception and went on found the box with its velocity
+// stepped and its position not (a newcomer's C++ game): the step was left half done.
+TEST_P(DuringStep, AStepWhoseCallbackThrowsFinishesAsIfItHadAnsweredTrueThenThrows) {
+    Scene thrown(GetParam()), answered(GetParam());
+    int calls = 0;
+    thrown.world.setPreSolve([&](Collision& c) -> bool {
+        c.bounce = 1; // changed, then thrown: not kept
+        if (++calls == 1)
+            throw std::runtime_error("game error");
+        return false; // never asked again in the step
+    });
+    answered.world.setPreSolve([](Collision&) { return true; });
+    EXPECT_THROW(thrown.world.step(1.0f / 60), std::runtime_error);
+    answered.world.step(1.0f / 60);
+    EXPECT_EQ(calls, 1);
+    EXPECT_EQ(thrown.world.position(thrown.box), answered.world.position(answered.box));
+    EXPECT_EQ(thrown.world.velocity(thrown.box), answered.world.velocity(answered.box));
+    EXPECT_EQ(thrown.world.stateHash(), answered.world.stateHash());
+    thrown.world.step(1.0f / 60); // the callback is asked again in the next step
+    EXPECT_EQ(calls, 2);
+}
+
 INSTANTIATE_TEST_SUITE_P(EitherModel, DuringStep,
                          ::testing::Values(Solver::Classic, Solver::Physical));
 

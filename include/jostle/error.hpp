@@ -6,6 +6,8 @@
 // dt <= 0, a world setting changed from a callback during step()) throws
 // jostle::Error, whose what() names the argument and the rule it breaks, e.g.
 // "createBody: BodyDef.hw: must be > 0". The world is left as it was before the call.
+// (What a callback of yours throws during step() comes out of it once the step is whole:
+// world.hpp, World::step.)
 #pragma once
 
 #include "jostle/visibility.h"

@@ -138,7 +138,7 @@ struct Collision {
     /// meet within the step (the physical model's speculative contacts: -depth is the
     /// gap); 0 where the classic ccd option's sweep stopped a body against another.
     float depth;
-    float bounce;   ///< max of the pair's bounce
+    float bounce; ///< max of the pair's bounce
     /// The pair's friction as the world mixes it (min, or geometric mean), in [0, 1]. A
     /// value set here is clamped to [0, 1]; unless lowered, a character keeps its firm
     /// footing on a slope it stands on (it walks there as on level ground).
@@ -495,7 +495,9 @@ public:
     /// stops the program with a message (a destructor cannot throw). In the physical
     /// model the solver takes a body's mass when the step first meets it (in its first
     /// pair): a mass or type a callback changes for a body met already counts from the
-    /// next step.
+    /// next step. What the callback throws comes out of step() once the step is whole: the
+    /// step goes on as if the callback had answered true from then on (it is not asked
+    /// again in that step, and what it changed of the Collision it threw from is not kept).
     void step(float dt);
 
     Vec2 gravity() const;

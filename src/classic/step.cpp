@@ -340,7 +340,7 @@ private:
                                   frictionAgainst(w_.slots[ib], -normal, down));
         if (w_.preSolve) {
             Collision c{w_.idOf(ia), w_.idOf(ib), {nx, ny}, depth, bounce, friction};
-            const bool keep = w_.preSolve(c);
+            const bool keep = w_.askPreSolve(c);
             // The callback may have destroyed either body or created others (which may
             // have moved the slots in memory: nothing is held across this call).
             if (!w_.isLive(ia))

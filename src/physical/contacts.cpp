@@ -221,7 +221,7 @@ void buildWithCallback(StepContext& step) {
                                               : c.friction;
         Collision info{w.idOf(pair.a), w.idOf(pair.b), outcome.normal,
                        -outcome.gap,   outcome.bounce, mixed};
-        const bool keep = w.preSolve(info);
+        const bool keep = w.askPreSolve(info);
         if (!keep)
             vetoed.push_back(pairKey(pair.a, pair.b));
         if (!keep || !w.isLive(pair.a) || !w.isLive(pair.b))

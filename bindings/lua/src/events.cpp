@@ -8,8 +8,9 @@
 // - The trampoline calls runPreSolve with lua_pcall: every Lua error, the callback's own
 //   or one while building its argument, stops there, never unwinding through the core.
 // - If it failed, the trampoline leaves the error value on the stack and throws
-//   CallbackFailed through the core (which ends its step cleanly on an exception);
-//   world:step catches it and, once out of every C++ scope, raises the error value as is.
+//   CallbackFailed to the core (which finishes its step as if the callback had answered
+//   true, then throws it again); world:step catches it and, once out of every C++ scope,
+//   raises the error value as is.
 #include "binding.hpp"
 
 #include <cmath>
