@@ -112,6 +112,7 @@ std::size_t World::snapshot(std::span<std::byte> out) const {
 }
 
 std::vector<std::byte> World::snapshot() const {
+    requireBetweenSteps(*state_, "snapshot"); // named as the call the game made
     std::vector<std::byte> bytes(snapshotSize());
     snapshot(bytes);
     return bytes;

@@ -13,6 +13,7 @@
 
 #include <bit>
 #include <cstring>
+#include <functional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -640,3 +641,31 @@ TEST(Snapshots, ARunOfBodiesWithTheSameSettingsSavesThemOnce) {
 }
 
 } // namespace
+
+TEST(Snapshots, EachCallIsRefusedFromACallbackUnderItsOwnName) {
+    // The vector form of snapshot() asked snapshotSize() first, whose name the refusal bore.
+    auto [world, impulse] = boxRestingOnAFloor(5);
+    std::vector<std::string> refusals;
+    world.setPreSolve([&](Collision&) {
+        const std::function<void()> calls[] = {
+            [&] { (void)world.snapshot(); },
+            [&] { (void)world.snapshotSize(); },
+            [&] { (void)world.stateHash(); },
+            [&] { world.restore(world.snapshot()); },
+        };
+        for (const auto& call : calls) {
+            try {
+                call();
+            } catch (const Error& e) {
+                refusals.emplace_back(e.what());
+            }
+        }
+        return true;
+    });
+    world.step(kDt);
+    ASSERT_GE(refusals.size(), 4u);
+    EXPECT_EQ(refusals[0], "snapshot: called from a callback during step()");
+    EXPECT_EQ(refusals[1], "snapshotSize: called from a callback during step()");
+    EXPECT_EQ(refusals[2], "stateHash: called from a callback during step()");
+    EXPECT_EQ(refusals[3], "snapshot: called from a callback during step()");
+}

@@ -71,7 +71,7 @@ struct DebugDrawOptions {
     /// either axis (the default) draws everything.
     Vec2 viewMin{1.0f, 1.0f};
     Vec2 viewMax{0.0f, 0.0f};
-    DebugPalette palette;
+    DebugPalette palette{};
 };
 
 /// A game's renderer, as debugDraw calls it. Points are in world units. A fill whose

@@ -4,8 +4,8 @@
 //
 //     jostle::Level level = jostle::loadTiled("level.tmj");
 //     jostle::World world(level.scene.world);
+//     jostle::addTileMaps(world, level.scene);    // the level first, then its bodies
 //     std::vector<jostle::BodyId> bodies = jostle::addBodies(world, level.scene);
-//     jostle::addTileMaps(world, level.scene);
 //     const jostle::LevelObject* spawn = level.find("spawn");
 //     jostle::BodyId lift = bodies[level.find("lift")->body];
 //
@@ -34,10 +34,10 @@ using PropertyValue = std::variant<bool, double, std::string>;
 
 /// An object of a level, as the game looks it up by name: a spawn point, a door, an enemy.
 struct LevelObject {
-    std::string name;  ///< its name in the editor ("" if none)
-    std::string type;  ///< Tiled's class (its "type" before Tiled 1.9)
+    std::string name;  ///< its name in the editor ("" if none); an LDtk entity's identifier
+    std::string type;  ///< Tiled's class (its "type" before Tiled 1.9); an LDtk entity's identifier
     std::string layer; ///< the layer it is on
-    int id = 0;        ///< Tiled's object id
+    int id = 0;        ///< Tiled's object id; 0 for an LDtk entity (its iid is no number)
     float x = 0.0f;    ///< its centre; a point's position
     float y = 0.0f;
     float hw = 0.0f; ///< half its width and height (0 for a point)

@@ -63,7 +63,10 @@ Scene loadScene(const std::string& path);
 /// if it is > 0, else density). Read back in a scene's "bodies", it gives `def` again.
 std::string bodyToJson(const BodyDef& def);
 
-/// Creates the scene's bodies in `world`, in file order; returns their handles.
+/// Creates the scene's bodies in `world`, in file order; returns their handles. After
+/// addTileMaps, as every loader of jostle does (C's jostle_level_create_world, Lua,
+/// JavaScript, `jostle run`): the order makes the slots, so two programs that add a
+/// scene the same way make the same world, to the state hash.
 std::vector<BodyId> addBodies(World& world, const Scene& scene);
 
 /// Creates the scene's tile maps in `world`, in file order; returns their handles.

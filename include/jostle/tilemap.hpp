@@ -67,7 +67,7 @@ struct TileMapDef {
     /// Each ramp tile is its own static body (a ramp: BodyDef::slope), the two halves of a
     /// 2:1 ramp side by side one triangle. Where a ramp meets the floor or the next ramp,
     /// nothing catches: the faces the level covers do not push.
-    std::vector<std::string> rows;
+    std::vector<std::string> rows{};
 
     // Every box of the map is a static body with these settings (body.hpp explains
     // each). They are fixed when the map is created.

@@ -112,15 +112,15 @@ struct WorldDef {
     /// Infinity (the default) means no clamp.
     float maxVelocity = std::numeric_limits<float>::infinity();
     Solver solver = Solver::Physical;
-    ClassicOptions classic;
-    PhysicalOptions physical;
+    ClassicOptions classic{};
+    PhysicalOptions physical{};
     /// Bodies at rest for a while, and every body they touch, fall asleep together and
     /// cost next to nothing (they are left out of the solver and the pair search) until
     /// something wakes them (physical model only; docs/sleeping.md).
     bool sleeping = true;
     /// Threads to step on (jostle/tasks.hpp): by default the calling thread alone. The
     /// results are the same, bit for bit, with any number.
-    TaskSystem tasks;
+    TaskSystem tasks{};
 };
 
 /// The first problem with `def`, or nothing if it is acceptable.

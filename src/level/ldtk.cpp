@@ -150,6 +150,7 @@ public:
                 const std::string& layerPlace, Level& level) {
         LevelObject out;
         out.name = text(entity, "__identifier", layerPlace);
+        out.type = out.name; // an entity's identifier is its kind, as Tiled's class is
         out.layer = layerName;
         const std::string place = layerPlace + ": entity " + level::quoted(out.name);
         out.properties = fields(entity, place);

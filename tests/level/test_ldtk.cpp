@@ -64,6 +64,8 @@ TEST(Ldtk, TheLevelIsReadAsDrawnWithTheGamesKinds) {
     EXPECT_EQ(player->hw, 6.0f);
     EXPECT_EQ(player->body, -1);
     EXPECT_EQ(player->layer, "Entities");
+    EXPECT_EQ(player->type, "Player"); // its identifier is its kind, as Tiled's class is
+    EXPECT_EQ(player->id, 0);
     // The crate and the coin: bodies, as their fields say.
     ASSERT_EQ(level.scene.bodies.size(), 2u);
     const BodyDef& crate =
