@@ -56,7 +56,7 @@ int jostle_level_object_count(const jostle_level* level);
 /* An object of a level (jostle::LevelObject). Its strings belong to the level. */
 typedef struct jostle_level_object {
     const char* name;   /* its name in the editor ("" if none) */
-    const char* type;   /* Tiled's class */
+    const char* type;   /* Tiled's class; an LDtk entity's identifier */
     const char* layer;  /* the layer it is on */
     int id;             /* Tiled's object id */
     jostle_vec2 centre; /* a point's position */

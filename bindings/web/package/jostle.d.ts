@@ -496,7 +496,7 @@ export class FixedStep {
 export interface LevelObject {
   /** Its name in the editor ("" if none); an LDtk entity's identifier. */
   name: string;
-  /** Tiled's class. */
+  /** Tiled's class; an LDtk entity's identifier. */
   type: string;
   /** The layer it is on. */
   layer: string;
