@@ -49,6 +49,17 @@ struct LevelObject {
     /// How many bodies were made from it, from `body` on: 1, or a polygon's or polyline's
     /// sides (one one-sided segment each), or 0.
     int bodyCount = 0;
+
+    /// The custom property of that name as a number, a flag or text. Throws SceneError
+    /// naming the object and the property when it has none, or one of another kind:
+    /// `object "lift": property "top": expected a number, got text`.
+    double number(const std::string& property) const;
+    bool flag(const std::string& property) const;
+    const std::string& text(const std::string& property) const;
+    /// The same, `otherwise` when it has no property of that name.
+    double number(const std::string& property, double otherwise) const;
+    bool flag(const std::string& property, bool otherwise) const;
+    std::string text(const std::string& property, const std::string& otherwise) const;
 };
 
 /// A level read from an editor's file: the scene to build, and the objects by name.

@@ -1,10 +1,13 @@
 // Loading a level: the file and the tilesets beside it read, the format told by the text,
 // and the objects found by name.
+#include "level_rules.hpp"
 #include "tiled_level.hpp"
 
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <type_traits>
+#include <variant>
 
 namespace jostle {
 
@@ -21,6 +24,60 @@ std::vector<const LevelObject*> Level::all(std::string_view name) const {
         if (object.name == name)
             found.push_back(&object);
     return found;
+}
+
+namespace {
+
+/// The kind of value a property holds, as messages name it.
+const char* kindOf(const PropertyValue& value) {
+    static constexpr const char* kKinds[] = {"a flag", "a number", "text"};
+    return kKinds[value.index()];
+}
+
+/// Object `object`'s property `name` as a T, or null if it has none; throws SceneError for
+/// one of another kind.
+template <class T> const T* propertyOf(const LevelObject& object, const std::string& name) {
+    const auto found = object.properties.find(name);
+    if (found == object.properties.end())
+        return nullptr;
+    if (const T* value = std::get_if<T>(&found->second))
+        return value;
+    static constexpr const char* kWanted = std::is_same_v<T, double> ? "a number"
+                                           : std::is_same_v<T, bool> ? "a flag"
+                                                                     : "text";
+    throw SceneError("object " + level::quoted(object.name) + ": property " + level::quoted(name) +
+                     ": expected " + kWanted + ", got " + kindOf(found->second));
+}
+
+template <class T> const T& requiredProperty(const LevelObject& object, const std::string& name) {
+    if (const T* value = propertyOf<T>(object, name))
+        return *value;
+    throw SceneError("object " + level::quoted(object.name) + ": no property " +
+                     level::quoted(name));
+}
+
+} // namespace
+
+double LevelObject::number(const std::string& property) const {
+    return requiredProperty<double>(*this, property);
+}
+bool LevelObject::flag(const std::string& property) const {
+    return requiredProperty<bool>(*this, property);
+}
+const std::string& LevelObject::text(const std::string& property) const {
+    return requiredProperty<std::string>(*this, property);
+}
+double LevelObject::number(const std::string& property, double otherwise) const {
+    const double* value = propertyOf<double>(*this, property);
+    return value ? *value : otherwise;
+}
+bool LevelObject::flag(const std::string& property, bool otherwise) const {
+    const bool* value = propertyOf<bool>(*this, property);
+    return value ? *value : otherwise;
+}
+std::string LevelObject::text(const std::string& property, const std::string& otherwise) const {
+    const std::string* value = propertyOf<std::string>(*this, property);
+    return value ? *value : otherwise;
 }
 
 namespace {

@@ -80,6 +80,14 @@ TEST(Ldtk, TheLevelIsReadAsDrawnWithTheGamesKinds) {
     EXPECT_EQ(coinBody.x, 116.0f);
     EXPECT_EQ(coinBody.y, 44.0f);
     EXPECT_EQ(std::get<double>(coin->properties.at("value")), 5.0);
+    // Read by kind, a missing or mistaken one named with its object.
+    EXPECT_EQ(coin->number("value"), 5.0);
+    EXPECT_EQ(coin->number("speed", 2.0), 2.0);
+    EXPECT_TRUE(coin->flag("sensor", false));
+    EXPECT_EQ(errorOf([&] { (void)coin->flag("value"); }),
+              "object \"Coin\": property \"value\": expected a flag, got a number");
+    EXPECT_EQ(errorOf([&] { (void)coin->text("speed"); }),
+              "object \"Coin\": no property \"speed\"");
 }
 
 TEST(Ldtk, ALevelSavedApartIsReadFromItsFile) {
