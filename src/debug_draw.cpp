@@ -215,7 +215,8 @@ public:
                     if (touched)
                         drawFace(draw_, centre, half, nearestAxis(side), palette_.touching);
             }
-            if (options_.velocities && world_.isAwake(body))
+            if (options_.velocities && world_.isAwake(body) &&
+                world_.velocity(body) != Vec2{}) // a body at rest has no arrow
                 draw_.line(centre, centre + world_.velocity(body) * kVelocitySeconds,
                            palette_.velocity);
         }

@@ -247,6 +247,17 @@ TEST(DebugDraw, VelocityIsATenthOfASecondOfMotion) {
     EXPECT_EQ(lines[0].fill, kPalette.velocity);
 }
 
+// A newcomer's count of lines found one for each crate at rest, from its centre to itself.
+TEST(DebugDraw, ABodyAtRestHasNoVelocityLine) {
+    World world(WorldDef{.gravity = {0, 0}, .sleeping = false});
+    world.createBody({.x = 0, .y = 0, .hw = 0.5f, .hh = 0.5f});
+    world.createBody({.x = 5, .y = 0, .hw = 0.5f, .hh = 0.5f, .vx = 1});
+    world.step(kDt);
+    Recorder draw;
+    world.debugDraw(draw, {.shapes = false, .velocities = true});
+    EXPECT_EQ(draw.of(Recorder::Call::Line).size(), 1u); // the moving one's alone
+}
+
 // Touched sides are relative to gravity: with gravity pointing to +x, the floor is the
 // box's +x face.
 TEST(DebugDraw, TheTouchedFloorIsTheFaceGravityPullsTowards) {
