@@ -99,6 +99,12 @@ bool World::isValid(TileMapId id) const {
     return isCurrent(state.tileMaps.maps, state.serial, id);
 }
 
+TileMapId World::adopt(TileMapId id) const {
+    const WorldState& state = WorldAccess::state(*this);
+    const TileMapId here{id.index, id.generation, state.serial};
+    return isCurrent(state.tileMaps.maps, state.serial, here) ? here : TileMapId{};
+}
+
 // --- Tiles -------------------------------------------------------------------------------
 
 namespace {

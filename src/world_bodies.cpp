@@ -18,6 +18,12 @@ bool World::isValid(BodyId id) const {
     return state_->isCurrent(id);
 }
 
+BodyId World::adopt(BodyId id) const {
+    const WorldState& w = *state_;
+    return !id.isNull() && w.isCurrent(SlotRef{id.index, id.generation}) ? w.idOf(id.index)
+                                                                         : BodyId{};
+}
+
 BodyId World::createBody(const BodyDef& def) {
     requireChangeable(*state_, "createBody");
     if (auto problem = checkBodyDef(def))

@@ -669,3 +669,30 @@ TEST(Snapshots, EachCallIsRefusedFromACallbackUnderItsOwnName) {
     EXPECT_EQ(refusals[2], "stateHash: called from a callback during step()");
     EXPECT_EQ(refusals[3], "snapshot: called from a callback during step()");
 }
+
+TEST(Snapshots, AWorldRestoredFromAnotherAdoptsItsHandles) {
+    // A saved game loaded by a new run: the game's handles are of the world that saved it
+    // (refused as "BodyId of another world"); adopted, they name the same bodies here.
+    World saved(WorldDef{.gravity = {0, 10}});
+    const TileMapId map = createTileMap(saved, {.tile = 1, .rows = {"####"}});
+    const BodyId crate = saved.createBody({.x = 2, .y = -5, .hw = 0.5f, .hh = 0.5f});
+    const BodyId gone = saved.createBody({.x = 3, .y = -5, .hw = 0.5f, .hh = 0.5f});
+    const std::vector<std::byte> bytes = saved.snapshot();
+    saved.destroyBody(gone);
+
+    World loaded;
+    loaded.restore(bytes);
+    EXPECT_FALSE(loaded.isValid(crate));
+    const BodyId adopted = loaded.adopt(crate);
+    ASSERT_TRUE(loaded.isValid(adopted));
+    EXPECT_EQ(loaded.position(adopted), saved.position(crate));
+    EXPECT_EQ(adopted.index, crate.index);
+    EXPECT_EQ(adopted.generation, crate.generation);
+    EXPECT_TRUE(loaded.isValid(loaded.adopt(BodyId{crate.index, crate.generation}))); // as numbers
+    EXPECT_TRUE(loaded.isValid(loaded.adopt(gone))); // alive in the snapshot
+    EXPECT_TRUE(loaded.adopt(BodyId{crate.index, crate.generation + 1}).isNull()); // none such
+    EXPECT_TRUE(loaded.adopt(BodyId{}).isNull());
+    EXPECT_TRUE(loaded.isValid(loaded.adopt(map)));
+    EXPECT_TRUE(loaded.adopt(TileMapId{map.index, map.generation + 1}).isNull());
+    EXPECT_EQ(saved.adopt(crate), crate); // a world's own handle is its own
+}

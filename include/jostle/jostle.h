@@ -395,6 +395,12 @@ bool jostle_body_destroy(jostle_world* world, jostle_body_id body);
 /// ordinary false, not misuse; only a NULL world is.
 bool jostle_body_is_valid(const jostle_world* world, jostle_body_id body);
 
+/// This world's handle of the body `body` names in another world: the body of the same
+/// slot and generation here, or the null handle if none is alive (an ordinary answer). For
+/// handles kept across a snapshot restored into another world (a saved game loaded by a
+/// new run: a handle saved as its index and generation is adopted too).
+jostle_body_id jostle_world_adopt_body(const jostle_world* world, jostle_body_id body);
+
 /// The body as a definition: its current position, velocity and settings, ready to be
 /// changed and given to jostle_body_create (a copy of the body).
 jostle_body_def jostle_body_get_def(const jostle_world* world, jostle_body_id body);
@@ -935,6 +941,9 @@ bool jostle_tile_map_destroy(jostle_world* world, jostle_tile_map_id map);
 /// True if `map` names a live tile map of this world; stale, foreign or null is an
 /// ordinary false.
 bool jostle_tile_map_is_valid(const jostle_world* world, jostle_tile_map_id map);
+
+/// jostle_world_adopt_body for a tile map.
+jostle_tile_map_id jostle_world_adopt_tile_map(const jostle_world* world, jostle_tile_map_id map);
 
 /// Makes the tile at (column, row) solid or empty; the tile must be inside the map.
 /// Only the few boxes around the tile are rebuilt. A ramp there is replaced.

@@ -297,6 +297,16 @@ public:
     /// destroyed.
     bool isValid(TileMapId id) const;
 
+    /// This world's handle of the body `id` names in another world: the body of the same
+    /// slot and generation here, or the null handle if there is none alive. For handles
+    /// kept across a snapshot restored into another world (a saved game loaded by a new
+    /// run, a peer's state; docs/snapshots.md): a body keeps its slot and generation. The
+    /// world `id` came from does not matter (a BodyId{index, generation} saved as numbers
+    /// is adopted too).
+    BodyId adopt(BodyId id) const;
+    /// The same for a tile map.
+    TileMapId adopt(TileMapId id) const;
+
     /// The live bodies, in creation order. Invalidated by createBody and destroyBody.
     /// destroyBody leaves a gap in the list, which the next call of this function (or
     /// of step(), or a query) closes, in time proportional to the number of bodies; so

@@ -55,6 +55,11 @@ bool jostle_body_is_valid(const jostle_world* world, jostle_body_id body) {
     return get<bool>(__func__, world, [&](const World& w) { return w.isValid(toCpp(body)); });
 }
 
+jostle_body_id jostle_world_adopt_body(const jostle_world* world, jostle_body_id body) {
+    return get<jostle_body_id>(__func__, world,
+                               [&](const World& w) { return toC(w.adopt(toCpp(body))); });
+}
+
 jostle_body_def jostle_body_get_def(const jostle_world* world, jostle_body_id body) {
     return get<jostle_body_def>(__func__, world,
                                 [&](const World& w) { return toC(w.bodyDef(toCpp(body))); });

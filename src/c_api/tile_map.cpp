@@ -32,6 +32,11 @@ bool jostle_tile_map_is_valid(const jostle_world* world, jostle_tile_map_id map)
     return guard(__func__, false, [&] { return worldOf(world).world.isValid(toCpp(map)); });
 }
 
+jostle_tile_map_id jostle_world_adopt_tile_map(const jostle_world* world, jostle_tile_map_id map) {
+    return guard(__func__, jostle_tile_map_id{},
+                 [&] { return toC(worldOf(world).world.adopt(toCpp(map))); });
+}
+
 bool jostle_tile_map_set_tile(jostle_world* world, jostle_tile_map_id map, int column, int row,
                               bool solid) {
     return guard(__func__, false, [&] {

@@ -2346,6 +2346,20 @@ static void test_snapshots(void) {
     CHECK(!jostle_world_restore(world, small, 0), "no bytes");
     CHECK_ERROR("jostle_world_restore", "not a jostle snapshot");
     CHECK(jostle_world_state_hash(world) == first_hash, "refused, the world unchanged");
+
+    /* Restored into another world (a saved game loaded anew): the handles are adopted. */
+    jostle_world* loaded = make_world(800);
+    CHECK(jostle_world_restore(loaded, saved, size), "restored into another world");
+    CHECK(!jostle_body_is_valid(loaded, box), "the first world's handle is not this one's");
+    const jostle_body_id adopted = jostle_world_adopt_body(loaded, box);
+    CHECK(jostle_body_is_valid(loaded, adopted) && adopted.index == box.index &&
+              adopted.generation == box.generation,
+          "adopted: the same slot and generation");
+    jostle_body_id unknown = box;
+    unknown.generation += 1;
+    CHECK(jostle_body_id_is_null(jostle_world_adopt_body(loaded, unknown)), "none such");
+    CHECK_NO_ERROR();
+    CHECK(jostle_world_destroy(loaded), "destroy");
     free(saved);
     CHECK(jostle_world_destroy(world), "destroy");
 

@@ -120,6 +120,26 @@ int worldGetBodies(lua_State* L) {
     return 1;
 }
 
+/// world:adopt(other): this world's Body (or TileMap) of the same slot and generation as
+/// `other`, a Body or TileMap of another world whose snapshot this one restored; nil if
+/// none is alive here.
+int worldAdopt(lua_State* L) {
+    const char* where = "World:adopt";
+    WorldHandle& handle = checkWorldHandle(L, 1, where);
+    const World& world = handle.data->world;
+    pushUserValue(L, 1);
+    const int env = lua_gettop(L);
+    if (const auto* body = static_cast<BodyHandle*>(luaL_testudata(L, 2, kBodyType))) {
+        pushBody(L, env, &handle, world.adopt(body->id));
+        return 1;
+    }
+    if (const auto* map = static_cast<TileMapHandle*>(luaL_testudata(L, 2, kTileMapType))) {
+        pushTileMap(L, env, &handle, world.adopt(map->id));
+        return 1;
+    }
+    raise(L, where, "other: expected a Body or a TileMap, got %s", typeName(L, 2));
+}
+
 /// {x1, y1, x2, y2, ...}: the positions (or velocities) of the bodies, in the order of
 /// world:getBodies(), into the table given or a new one.
 int worldGetPositions(lua_State* L) {
@@ -329,6 +349,7 @@ int worldToString(lua_State* L) {
 constexpr luaL_Reg kWorldMethods[] = {
     {"step", worldStep},
     {"getBodies", worldGetBodies},
+    {"adopt", worldAdopt},
     {"getBodyCount", worldGetBodyCount},
     {"getPositions", worldGetPositions},
     {"getVelocities", worldGetVelocities},

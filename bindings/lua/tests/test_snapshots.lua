@@ -59,4 +59,22 @@ test("what is not a snapshot is refused, and the world stays as it was", functio
   t.equal(world:stateHash(), hash, "unchanged")
 end)
 
+test("a world restored from another's snapshot adopts its bodies", function()
+  local world, boxes = pile()
+  local saved = world:snapshot()
+  local loaded = jostle.newWorld()
+  loaded:restore(saved)
+  local adopted = loaded:adopt(boxes[3])
+  t.truthy(adopted ~= nil and adopted:getWorld() == loaded, "this world's body")
+  local x, y = adopted:getPosition()
+  local x0, y0 = boxes[3]:getPosition()
+  t.equal(x, x0, "the same x")
+  t.equal(y, y0, "the same y")
+  t.equal(loaded:adopt(boxes[3]), adopted, "one userdata a body")
+  boxes[3]:destroy()
+  local reused = world:newBody({x = 0, y = 0, hw = 1, hh = 1}) -- its slot, a newer generation
+  t.equal(loaded:adopt(reused), nil, "no body of that generation there")
+  t.raises({"World:adopt", "other: expected a Body or a TileMap, got number"}, loaded.adopt, loaded, 5)
+end)
+
 return t.run(tests)

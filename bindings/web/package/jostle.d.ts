@@ -443,6 +443,12 @@ export class World {
   roundedMoveAndSlide(centre: VecLike, half: VecLike, radius: number, translation: VecLike,
                       filter?: QueryFilter): MoveAndSlideResult;
 
+  /**
+   * This world's body of the same slot and generation as `other`, a Body of another world
+   * whose snapshot this one restored (a saved game, a peer's state); null if none is alive.
+   */
+  adopt(other: Body): Body | null;
+  adopt(other: TileMap): TileMap | null;
   /** How many bytes snapshot() writes now: how long an `into` must be. */
   snapshotSize(): number;
   /**

@@ -192,6 +192,22 @@ export class World {
     }
   }
 
+  /// This world's Body (or TileMap) of the same slot and generation as `other`, a Body or
+  /// TileMap of another world whose snapshot this one restored (a saved game, a peer's
+  /// state); null if none is alive here.
+  adopt(other) {
+    const fn = "adopt", world = this.live(fn), rt = this.rt;
+    if (other instanceof Body) {
+      rt.m._jostle_world_adopt_body(rt.out, world, rt.handle(other));
+      return this.bodyAt(rt.out);
+    }
+    if (other instanceof TileMap) {
+      rt.m._jostle_world_adopt_tile_map(rt.out, world, rt.handle(other));
+      return this.tileMapAt(rt.out);
+    }
+    throw new TypeError(`${fn}: other must be a Body or a TileMap, got ${args.describe(other)}`);
+  }
+
   /// The TileMap of the handle at `at` (null for the null handle), as bodyAt.
   tileMapAt(at) {
     return handleAt(this, at, this.tileMapOfSlot, TileMap);

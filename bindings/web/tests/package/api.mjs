@@ -389,6 +389,18 @@ await rejects("an unknown option", load({wasmBinary: bytes}), "load: no option \
           "restore: not a jostle snapshot");
   check(world.stateHash() === hash, "a refused restore leaves the world as it was");
 
+  // Restored into another world, the bodies are adopted by their slot and generation.
+  {
+    const other = jostle.createWorld();
+    other.restore(saved);
+    const adopted = other.adopt(ball);
+    check(adopted !== null && adopted.world === other && adopted.position.x === ball.position.x &&
+          adopted.position.y === ball.position.y, "adopt: the other world's body of the same slot");
+    check(other.adopt(later) === null, "adopt: none for a body the snapshot does not hold");
+    refuses("adopting what is no handle", () => other.adopt(5), "TypeError",
+            "adopt: other must be a Body or a TileMap, got 5");
+    other.destroy();
+  }
   // A body made after a restore under the handle of one made after the snapshot is the same
   // object (rollback makes the same handles again), with its own def's userData.
   const bullet = world.createBody({x: 0, y: -80, hw: 1, hh: 1, userData: {kind: "bullet"}});
