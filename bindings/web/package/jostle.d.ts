@@ -102,6 +102,8 @@ export interface TileMapDef {
   oneWay?: VecLike;
   /** Water, lava, a trigger zone drawn in tiles. */
   sensor?: boolean;
+  /** Yours: any value, kept on the TileMap. */
+  userData?: unknown;
 }
 
 /** The classic model's switches, all off by default. */
@@ -353,6 +355,8 @@ export class Body {
 /** A tile map: a handle, checked as a body's is. */
 export class TileMap {
   readonly world: World;
+  /** Yours: any value, kept on this object (createTileMap's def.userData). */
+  userData: unknown;
   readonly valid: boolean;
   readonly columns: number;
   readonly rows: number;

@@ -33,9 +33,13 @@ export function integer(fn, name, value, min = -0x80000000, max = 0x7fffffff) {
   return value;
 }
 
-/// Filter bits: an integer in [0, 2^32). Returns it.
+/// Filter bits (or a colour): 32 of them, as an integer in [0, 2^32) or as JavaScript's
+/// bitwise operators give them, signed (`~ENEMY` is -5 for ENEMY = 4). Returns them
+/// unsigned.
 export function bits(fn, name, value) {
-  return integer(fn, name, value, 0, 0xffffffff);
+  if (typeof value !== "number" || !Number.isInteger(value) || value < -0x80000000 || value > 0xffffffff)
+    throw new TypeError(`${fn}: ${name} must be 32 bits: an integer in [0, 4294967295], or a bitwise result, got ${describe(value)}`);
+  return value >>> 0;
 }
 
 export function boolean(fn, name, value) {
@@ -89,12 +93,17 @@ export function json(fn, value) {
              : (place === "" ? "" : ".") + (/^[A-Za-z_][A-Za-z0-9_]*$/.test(key) ? key : JSON.stringify(key));
     throw new TypeError(`${fn}: ${place === "" ? "" : place + ": "}${problem.what}`);
   }
-  return JSON.stringify(value, vectorsAsArrays);
+  return JSON.stringify(value, forTheLoader);
 }
 
-/// A vector given as jostle gives them, {x, y} (numbers, no other key), written as the
-/// scene loader reads vectors, [x, y]: a definition takes both.
-function vectorsAsArrays(key, value) {
+/// json()'s replacer: what a definition takes beyond what the scene loader reads, written
+/// as it reads it. A vector given as jostle gives them, {x, y} (numbers, no other key), is
+/// [x, y]; bit fields as JavaScript's bitwise operators give them (~ENEMY), unsigned, as
+/// bits() takes them.
+function forTheLoader(key, value) {
+  if ((key === "mask" || key === "category") && Number.isInteger(value) && value < 0 &&
+      value >= -0x80000000)
+    return value >>> 0;
   if (value === null || typeof value !== "object" || Array.isArray(value) ||
       typeof value.x !== "number" || typeof value.y !== "number")
     return value;

@@ -5,6 +5,12 @@ import * as args from "./args.js";
 import {Handle} from "./handle.js";
 
 export class TileMap extends Handle {
+  constructor(world, index, generation, serial) {
+    super(world, index, generation, serial);
+    /// Yours: any value, kept on this object (createTileMap's def.userData).
+    this.userData = undefined;
+  }
+
   /// True while the map exists.
   get valid() {
     const w = this.world;

@@ -172,17 +172,21 @@ export class World {
   }
 
   /// A tile map from a scene file's tile map object: {x, y, tile, rows: ["#..#", ...],
-  /// friction, bounce, category, mask, oneWay, sensor} (docs/tilemaps.md).
+  /// friction, bounce, category, mask, oneWay, sensor} (docs/tilemaps.md); userData is any
+  /// JavaScript value, kept on the TileMap (a body's: body.tileMap.userData).
   createTileMap(def) {
     const fn = "createTileMap";
-    const text = args.json(fn, {bodies: [], tilemaps: [args.object(fn, "def", def)]});
+    const {userData, ...fields} = args.object(fn, "def", def);
+    const text = args.json(fn, {bodies: [], tilemaps: [fields]});
     const world = this.live(fn), rt = this.rt, m = rt.m;
     try {
       const read = rt.withText(text, (p) => m._jostle_web_read_scene(p));
       rt.check(fn, read !== 0);
       m._jostle_tile_map_create(rt.out, world, m._jostle_web_scene_tile_map(0));
       rt.check(fn, m.HEAPU32[(rt.out >> 2) + 1] !== 0);
-      return this.tileMapAt(rt.out);
+      const map = this.tileMapAt(rt.out);
+      map.userData = userData;
+      return map;
     } catch (error) {
       // The loader names the map as a scene's first: the game gave one map alone.
       error.message = error.message.replace(/^createTileMap: tilemaps\[0\]\.?:? ?/, `${fn}: `);

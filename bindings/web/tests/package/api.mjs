@@ -138,7 +138,12 @@ await rejects("an unknown option", load({wasmBinary: bytes}), "load: no option \
   refuses("friction NaN", () => { body.friction = NaN; }, "TypeError", "friction: friction must be a finite number, got NaN");
   refuses("friction past [0, 1]", () => { body.friction = 2; }, "Error", "friction: friction must be in [0, 1]");
   refuses("a mask past 32 bits", () => { body.mask = 2 ** 32; }, "TypeError",
-          "mask: mask must be an integer in [0, 4294967295], got 4294967296");
+          "mask: mask must be 32 bits: an integer in [0, 4294967295], or a bitwise result, got 4294967296");
+  // JavaScript's bitwise operators give signed numbers: ~4 is -5, the bits 0xFFFFFFFB.
+  body.mask = ~4;
+  check(body.mask === 0xFFFFFFFB, `a mask from ~4 reads back unsigned (${body.mask})`);
+  check(world.createBody({hw: 1, hh: 1, mask: ~2, category: 1 << 31}).mask === 0xFFFFFFFD,
+        "a definition's bit fields from bitwise operators");
   refuses("a body type that is not one", () => { body.type = "ghost"; }, "TypeError",
           "type: must be \"static\", \"kinematic\" or \"dynamic\", got \"ghost\"");
   {
@@ -281,6 +286,10 @@ await rejects("an unknown option", load({wasmBinary: bytes}), "load: no option \
           "setTile: expected '#', '.' or a ramp, got 'x'");
   refuses("a map with a bad row", () => world.createTileMap({tile: 16, rows: ["#", "##"]}), "Error",
           "createTileMap: rows[1]: has 2 columns, rows[0] has 1");
+  const labelled = world.createTileMap({x: 100, tile: 16, rows: ["#"], userData: "spikes"});
+  check(labelled.userData === "spikes" && labelled.bodies()[0].tileMap.userData === "spikes",
+        "a tile map's userData, kept on it, reached from its bodies");
+  labelled.destroy();
   map.destroy();
   check(!map.valid && world.bodyCount === 0, "a destroyed map takes its bodies");
   world.destroy();
