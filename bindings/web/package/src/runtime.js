@@ -84,7 +84,8 @@ export class Runtime {
   }
 
   /// The address of a jostle_query_filter from the game's {mask, category,
-  /// includeSensors, ignore} (each optional), or 0 (NULL: the default filter).
+  /// includeSensors, ignore} (each optional: left out or undefined, its default), or 0
+  /// (NULL: the default filter).
   filter(fn, filter, world) {
     if (filter === undefined || filter === null) return 0;
     if (typeof filter !== "object" || Array.isArray(filter))
@@ -94,10 +95,9 @@ export class Runtime {
     const words = m.HEAPU32;
     for (const key of Object.keys(filter)) {
       const value = filter[key];
+      if (value === undefined) continue; // as if left out: its default, as debugDraw's options
       if (key === "mask" || key === "category") {
-        if (!Number.isInteger(value) || value < 0 || value > 0xffffffff)
-          throw new TypeError(`${fn}: filter.${key} must be an integer in [0, 4294967295], got ${value}`);
-        words[(at + L[key]) >> 2] = value;
+        words[(at + L[key]) >> 2] = args.bits(fn, `filter.${key}`, value);
       } else if (key === "includeSensors") {
         if (typeof value !== "boolean")
           throw new TypeError(`${fn}: filter.includeSensors must be true or false, got ${value}`);

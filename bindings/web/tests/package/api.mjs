@@ -256,6 +256,10 @@ await rejects("an unknown option", load({wasmBinary: bytes}), "load: no option \
         "moveAndSlide into the floor slides along it: (50, 85)");
   refuses("a filter with an unknown field", () => world.queryPoint([0, 0], {layers: 1}), "TypeError",
           "queryPoint: filter has no field \"layers\" (mask, category, includeSensors, ignore)");
+  check(world.rayCast([30, 0], [30, 200], {ignore: undefined, mask: ~0})?.body === floor,
+        "a filter's field undefined is its default, and a mask may be a bitwise result");
+  refuses("a filter's mask of no 32 bits", () => world.queryPoint([0, 0], {mask: 1.5}), "TypeError",
+          "queryPoint: filter.mask must be 32 bits: an integer in [0, 4294967295], or a bitwise result, got 1.5");
 
   const mover = world.createBody({type: "kinematic", x: -50, y: 0, hw: 5, hh: 5});
   let moved = mover.move(100, 0);
