@@ -157,7 +157,7 @@ export class Body extends Handle {
     const rt = this.world.rt;
     rt.m._jostle_tile_map_of(rt.out, this.world.live("tileMap"), rt.handle(this));
     if (rt.m.HEAPU32[(rt.out >> 2) + 1] === 0) {
-      rt.check("tileMap", !rt.failed());
+      rt.check("tileMap", !rt.failed(), "tileMapOf");
       return null;
     }
     return this.world.tileMapAt(rt.out);

@@ -9,7 +9,7 @@ export class FixedStep {
     args.integer(fn, "maxStepsPerFrame", maxStepsPerFrame);
     this.rt = rt;
     this.pointer = rt.m._jostle_fixed_step_create(dt, maxStepsPerFrame);
-    rt.check(fn, this.pointer !== 0);
+    rt.check(fn, this.pointer !== 0, "FixedStep");
   }
 
   live(fn) {
@@ -22,7 +22,7 @@ export class FixedStep {
     const fn = "advance";
     args.number(fn, "frameSeconds", frameSeconds);
     const steps = this.rt.m._jostle_fixed_step_advance(this.live(fn), frameSeconds);
-    return this.rt.got(fn, steps);
+    return this.rt.got(fn, steps, "FixedStep::advance");
   }
 
   /// advance, then world.step(dt) that many times, calling afterStep() (if given) after
@@ -34,11 +34,12 @@ export class FixedStep {
     if (afterStep === undefined || afterStep === null) {
       const steps = this.rt.m._jostle_fixed_step_update(this.live(fn), world.live(fn), frameSeconds);
       world.jostle.rethrow();
-      return this.rt.got(fn, steps);
+      return this.rt.got(fn, steps, "FixedStep::advance");
     }
     args.func(fn, "afterStep", afterStep);
     world.live(fn); // checked before the clock counts the frame
-    const steps = this.rt.got(fn, this.rt.m._jostle_fixed_step_advance(this.live(fn), frameSeconds));
+    const steps = this.rt.got(fn, this.rt.m._jostle_fixed_step_advance(this.live(fn), frameSeconds),
+                              "FixedStep::advance");
     // FixedStep::takeSteps' loop, here so that what afterStep throws stops it at once.
     for (let i = 0; i < steps; i++) {
       if (i === steps - 1) this.rememberPositions(world);

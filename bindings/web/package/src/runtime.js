@@ -58,8 +58,8 @@ export class Runtime {
   }
 
   /// `value` of a getter, or its error: a zero result is checked against the last error.
-  got(fn, value) {
-    if (!value) this.check(fn, !this.failed());
+  got(fn, value, cppName = null) {
+    if (!value) this.check(fn, !this.failed(), cppName);
     return value;
   }
 

@@ -169,6 +169,7 @@ await rejects("an unknown option", load({wasmBinary: bytes}), "load: no option \
           "destroy: stale BodyId (the body was destroyed)");
   refuses("a stale body", () => body.position, "Error", "position: stale BodyId (the body was destroyed)");
   refuses("a stale body's setter", () => { body.friction = 0.5; }, "Error", "friction: stale BodyId (the body was destroyed)");
+  refuses("a stale body's tile map", () => body.tileMap, "Error", "tileMap: stale BodyId (the body was destroyed)");
   const other = jostle.createWorld().createBody({hw: 1, hh: 1});
   refuses("a body of another world", () => world.createBody({hw: 1, hh: 1}).isTouching(other), "TypeError",
           "isTouching: other must be a Body of this world, got an object");
@@ -309,6 +310,10 @@ await rejects("an unknown option", load({wasmBinary: bytes}), "load: no option \
   // 0.04 s is 2 steps of 1/60 and 0.4 of a third.
   check(steps === 2 && near(clock.alpha, 0.4, 1e-3), `0.04 s: 2 steps and alpha 0.4 (${steps}, ${clock.alpha})`);
   check(near(clock.drawPosition(runner).x, 1 + 0.4, 1e-3), `drawn between x = 1 and 2 by alpha (${clock.drawPosition(runner).x})`);
+  refuses("a clock's bad dt, in the method's words", () => jostle.createFixedStep(0), "Error",
+          "createFixedStep: dt must be a number of seconds from 1e-6 to 3600");
+  refuses("a negative frame, in the method's words", () => clock.advance(-1), "Error",
+          "advance: frameSeconds must be a finite number >= 0");
   const drawn = new Float32Array(2);
   check(clock.readDrawPositions(world, drawn) === 1 && near(drawn[0], 1.4, 1e-3), "readDrawPositions");
   clock.destroy();
