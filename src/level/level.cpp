@@ -5,8 +5,8 @@
 
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <sstream>
-#include <type_traits>
 #include <variant>
 
 namespace jostle {
@@ -31,6 +31,7 @@ namespace {
 /// The kind of value a property holds, as messages name it.
 const char* kindOf(const PropertyValue& value) {
     static constexpr const char* kKinds[] = {"a flag", "a number", "text"};
+    static_assert(std::variant_size_v<PropertyValue> == std::size(kKinds));
     return kKinds[value.index()];
 }
 
@@ -42,11 +43,8 @@ template <class T> const T* propertyOf(const LevelObject& object, const std::str
         return nullptr;
     if (const T* value = std::get_if<T>(&found->second))
         return value;
-    static constexpr const char* kWanted = std::is_same_v<T, double> ? "a number"
-                                           : std::is_same_v<T, bool> ? "a flag"
-                                                                     : "text";
     throw SceneError("object " + level::quoted(object.name) + ": property " + level::quoted(name) +
-                     ": expected " + kWanted + ", got " + kindOf(found->second));
+                     ": expected " + kindOf(PropertyValue(T{})) + ", got " + kindOf(found->second));
 }
 
 template <class T> const T& requiredProperty(const LevelObject& object, const std::string& name) {
