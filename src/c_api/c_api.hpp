@@ -78,19 +78,24 @@ private:
     bool& flag_;
 };
 
+/// Refuses what a callback may not do during jostle_world_step: step, or change or read
+/// the world as a whole (it is half stepped).
+inline void requireOutsideStep(const jostle_world& w) {
+    if (w.stepping)
+        misuse("called from a callback during jostle_world_step");
+}
+
 /// For the functions that change the world as a whole, which a callback may not call.
 inline jostle_world& outsideStep(jostle_world* world) {
     jostle_world& w = worldOf(world);
-    if (w.stepping)
-        misuse("called from a callback during jostle_world_step");
+    requireOutsideStep(w);
     return w;
 }
 /// For the functions that read the world as a whole (snapshots, the state hash), which a
-/// callback may not call either: the world is half stepped.
+/// callback may not call either.
 inline const jostle_world& outsideStep(const jostle_world* world) {
     const jostle_world& w = worldOf(world);
-    if (w.stepping)
-        misuse("called from a callback during jostle_world_step");
+    requireOutsideStep(w);
     return w;
 }
 

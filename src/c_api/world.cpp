@@ -21,8 +21,7 @@ bool callPreSolve(jostle_world& w, Collision& collision) {
 namespace jostle::c_api {
 
 void stepWorld(jostle_world& w, float dt) {
-    if (w.stepping)
-        misuse("called from a callback during jostle_world_step");
+    requireOutsideStep(w);
     {
         const FlagScope scope(w.stepping);
         w.world.step(dt);
