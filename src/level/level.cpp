@@ -54,6 +54,12 @@ template <class T> const T& requiredProperty(const LevelObject& object, const st
                      level::quoted(name));
 }
 
+template <class T>
+T propertyOr(const LevelObject& object, const std::string& name, const T& otherwise) {
+    const T* value = propertyOf<T>(object, name);
+    return value ? *value : otherwise;
+}
+
 } // namespace
 
 double LevelObject::number(const std::string& property) const {
@@ -66,16 +72,13 @@ const std::string& LevelObject::text(const std::string& property) const {
     return requiredProperty<std::string>(*this, property);
 }
 double LevelObject::number(const std::string& property, double otherwise) const {
-    const double* value = propertyOf<double>(*this, property);
-    return value ? *value : otherwise;
+    return propertyOr(*this, property, otherwise);
 }
 bool LevelObject::flag(const std::string& property, bool otherwise) const {
-    const bool* value = propertyOf<bool>(*this, property);
-    return value ? *value : otherwise;
+    return propertyOr(*this, property, otherwise);
 }
 std::string LevelObject::text(const std::string& property, const std::string& otherwise) const {
-    const std::string* value = propertyOf<std::string>(*this, property);
-    return value ? *value : otherwise;
+    return propertyOr(*this, property, otherwise);
 }
 
 namespace {

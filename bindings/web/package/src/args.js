@@ -37,9 +37,14 @@ export function integer(fn, name, value, min = -0x80000000, max = 0x7fffffff) {
 /// bitwise operators give them, signed (`~ENEMY` is -5 for ENEMY = 4). Returns them
 /// unsigned.
 export function bits(fn, name, value) {
-  if (typeof value !== "number" || !Number.isInteger(value) || value < -0x80000000 || value > 0xffffffff)
+  if (!isBits(value))
     throw new TypeError(`${fn}: ${name} must be 32 bits: an integer in [0, 4294967295], or a bitwise result, got ${describe(value)}`);
   return value >>> 0;
+}
+
+/// Whether `value` is 32 bits as bits() takes them.
+function isBits(value) {
+  return Number.isInteger(value) && value >= -0x80000000 && value <= 0xffffffff;
 }
 
 export function boolean(fn, name, value) {
@@ -101,9 +106,7 @@ export function json(fn, value) {
 /// [x, y]; bit fields as JavaScript's bitwise operators give them (~ENEMY), unsigned, as
 /// bits() takes them.
 function forTheLoader(key, value) {
-  if ((key === "mask" || key === "category") && Number.isInteger(value) && value < 0 &&
-      value >= -0x80000000)
-    return value >>> 0;
+  if ((key === "mask" || key === "category") && isBits(value)) return value >>> 0;
   if (value === null || typeof value !== "object" || Array.isArray(value) ||
       typeof value.x !== "number" || typeof value.y !== "number")
     return value;
